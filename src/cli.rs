@@ -1,0 +1,224 @@
+//! The command line: clap derive types, one subcommand per chapter of the registry,
+//! and the dispatcher that maps results to exit codes (0 ok, 1 a claim failed, 2 bad input).
+
+use crate::chapters::{self, Context, CHAPTERS};
+use crate::error::{self, WorkbookError};
+use crate::render;
+use crate::report::ChapterReport;
+use clap::{Parser, Subcommand};
+use std::ffi::OsString;
+use std::io::Write;
+use std::path::PathBuf;
+
+/// Runnable, verified course material on vibration-driven locomotion: a leaning stick
+/// that walks on a vertically vibrating plate (dynamic jamming).
+///
+/// Each chapter re-derives one analysis of the source document, checks every claim
+/// against an independent computation, prints a verdict table and writes its figures.
+/// Verdicts: confirmed (the document holds), erratum (the document is wrong; the
+/// correction is stated), approximation (true in a stated limit), failed (a regression
+/// of the workbook itself).
+///
+/// Exit codes: 0 ran and no claim failed; 1 some claim failed; 2 bad input.
+#[derive(Parser, Debug)]
+#[command(name = "workbook", version, propagate_version = true)]
+pub struct Cli {
+    /// What to run.
+    #[command(subcommand)]
+    pub command: Command,
+
+    /// Short mode (fewer cycles, coarser sweeps; the same checks): what the tests run.
+    #[arg(long, global = true)]
+    pub quick: bool,
+
+    /// Print exactly one JSON object per chapter on stdout (`all`: one JSON array), nothing else.
+    #[arg(long, global = true)]
+    pub json: bool,
+
+    /// Root folder for figures; each chapter writes SVG and PNG into DIR/<chapter-id>/.
+    #[arg(long, global = true, value_name = "DIR", default_value = "figures")]
+    pub figures: PathBuf,
+
+    /// Do not write figures.
+    #[arg(long, global = true)]
+    pub no_figures: bool,
+
+    /// Gravitational acceleration g in m/s^2 [default: 9.81; the stick chapter's
+    /// `authors` scene uses 10 unless this flag is given].
+    #[arg(long = "g-mps2", global = true, value_name = "M_PER_S2")]
+    pub g_mps2: Option<f64>,
+}
+
+/// The subcommands: `list`, `all`, `render`, and one per chapter.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// List the chapters: id, document section, question.
+    List,
+    /// Run every chapter with the document's defaults and summarise the verdicts.
+    All,
+    /// Refresh the generated tables in chapters/*.md (with --check: fail if any is stale).
+    Render {
+        /// Do not write; exit 1 and name each stale table if the text is out of date.
+        #[arg(long)]
+        check: bool,
+        /// Folder of the course text.
+        #[arg(long, value_name = "DIR", default_value = "chapters")]
+        dir: PathBuf,
+    },
+    /// Ch. 1 (section 1): when is a motion locomotion and not dragging? Convex hull of the media velocities.
+    LocomotionDefinition(chapters::locomotion_definition::Args),
+    /// Ch. 2 (section 2): effective mass of a leaning stick and the sideways impulse J_l/J_v.
+    EffectiveMass(chapters::effective_mass::Args),
+    /// Ch. 3 (section 3.1.1): horizontal shaking turns Coulomb friction viscous (booktop).
+    HorizontalShaking(chapters::horizontal_shaking::Args),
+    /// Ch. 4 (section 3.1.2): vertical shaking and the law mu_eff = v_ave/v_z.
+    VerticalShaking(chapters::vertical_shaking::Args),
+    /// Ch. 5 (section 3.2): asymmetric shaking moves a block with Coulomb but not with linear friction.
+    AsymmetricShaking(chapters::asymmetric_shaking::Args),
+    /// Ch. 6 (sections 4, 5): the stick's hybrid state machine (flight, pivot, slide, collision).
+    StickStateMachine(chapters::stick_state_machine::Args),
+    /// Ch. 7 (all sections): speed versus accuracy of the numerical methods.
+    SpeedVsAccuracy(chapters::speed_vs_accuracy::Args),
+}
+
+impl Cli {
+    /// The shared context of the global flags, validated.
+    pub fn context(&self) -> error::Result<Context> {
+        if let Some(g) = self.g_mps2 {
+            error::positive("--g-mps2", g, "m/s^2")?;
+        }
+        Ok(Context {
+            quick: self.quick,
+            g_mps2: self.g_mps2,
+            figures_root: if self.no_figures { None } else { Some(self.figures.clone()) },
+        })
+    }
+}
+
+/// Parses `args` and runs; returns the process exit code. Output goes to the given
+/// writers (stdout, stderr) so that the whole CLI can be tested in-process.
+pub fn run_cli<I, T>(args: I, out: &mut dyn Write, err: &mut dyn Write) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
+        Ok(c) => c,
+        Err(e) => {
+            use clap::error::ErrorKind;
+            return match e.kind() {
+                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+                    let _ = write!(out, "{}", e.render());
+                    if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand { 2 } else { 0 }
+                }
+                _ => {
+                    // One line: clap's first line names the flag and the value.
+                    let text = e.render().to_string();
+                    let first = text.lines().find(|l| !l.trim().is_empty()).unwrap_or("error: bad arguments");
+                    let _ = writeln!(err, "{first} (see --help)");
+                    2
+                }
+            };
+        }
+    };
+    match dispatch(&cli, out) {
+        Ok(code) => code,
+        Err(e) => {
+            let _ = writeln!(err, "{e}");
+            e.exit_code()
+        }
+    }
+}
+
+fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
+    let ctx = cli.context()?;
+    let report = match &cli.command {
+        Command::List => {
+            if cli.json {
+                let list: Vec<serde_json::Value> = CHAPTERS
+                    .iter()
+                    .map(|c| serde_json::json!({"id": c.id, "section": c.section, "title": c.title, "question": c.question}))
+                    .collect();
+                writeln!(out, "{}", serde_json::Value::Array(list))?;
+            } else {
+                for c in CHAPTERS.iter() {
+                    writeln!(out, "{:<22} section {:<6} {}", c.id, c.section, c.question)?;
+                }
+            }
+            return Ok(0);
+        }
+        Command::All => return run_all(cli, &ctx, out),
+        Command::Render { check, dir } => return render::render(dir, *check, out),
+        Command::LocomotionDefinition(a) => chapters::locomotion_definition::run(a, &ctx)?,
+        Command::EffectiveMass(a) => chapters::effective_mass::run(a, &ctx)?,
+        Command::HorizontalShaking(a) => chapters::horizontal_shaking::run(a, &ctx)?,
+        Command::VerticalShaking(a) => chapters::vertical_shaking::run(a, &ctx)?,
+        Command::AsymmetricShaking(a) => chapters::asymmetric_shaking::run(a, &ctx)?,
+        Command::StickStateMachine(a) => chapters::stick_state_machine::run(a, &ctx)?,
+        Command::SpeedVsAccuracy(a) => chapters::speed_vs_accuracy::run(a, &ctx)?,
+    };
+    if cli.json {
+        writeln!(out, "{}", report.to_json())?;
+    } else {
+        write!(out, "{}", report.human())?;
+    }
+    Ok(i32::from(report.has_failures()))
+}
+
+fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> {
+    let mut reports: Vec<ChapterReport> = Vec::new();
+    for c in CHAPTERS.iter() {
+        let r = chapters::run_default(c.id, ctx)?;
+        if !cli.json {
+            writeln!(out, "{}", r.human())?;
+        }
+        reports.push(r);
+    }
+    if cli.json {
+        let arr: Vec<serde_json::Value> = reports.iter().map(ChapterReport::to_json).collect();
+        writeln!(out, "{}", serde_json::Value::Array(arr))?;
+    } else {
+        writeln!(out, "== summary of verdicts ==")?;
+        writeln!(out, "{:<22} {:>6} {:>9} {:>7} {:>13} {:>6}", "chapter", "claims", "confirmed", "erratum", "approximation", "failed")?;
+        for r in &reports {
+            use crate::report::Verdict::*;
+            writeln!(
+                out,
+                "{:<22} {:>6} {:>9} {:>7} {:>13} {:>6}{}",
+                r.chapter,
+                r.claims.len(),
+                r.count(Confirmed),
+                r.count(Erratum),
+                r.count(Approximation),
+                r.count(Failed),
+                if r.status.is_some() { "  (not built yet)" } else { "" }
+            )?;
+        }
+    }
+    Ok(i32::from(reports.iter().any(ChapterReport::has_failures)))
+}
+
+impl From<std::fmt::Error> for WorkbookError {
+    fn from(e: std::fmt::Error) -> Self {
+        WorkbookError::Io(e.to_string())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn clap_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn every_registered_chapter_is_a_subcommand() {
+        let cmd = Cli::command();
+        for c in CHAPTERS.iter() {
+            assert!(cmd.find_subcommand(c.id).is_some(), "{} missing", c.id);
+        }
+    }
+}

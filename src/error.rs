@@ -1,0 +1,149 @@
+//! Errors of the workbook and the validation of user input.
+//!
+//! Every flag a reader can set is checked before a chapter computes anything. A bad
+//! value gives one line naming the flag, the value and the valid range, and the
+//! command exits with code 2 (see [`WorkbookError::exit_code`]).
+
+use std::fmt;
+
+/// Everything that can stop a chapter before it produces a report.
+#[derive(Debug, Clone, PartialEq)]
+pub enum WorkbookError {
+    /// A flag's value is outside its valid range (exit code 2).
+    BadInput {
+        /// The flag as the user typed it, for example `--angle-deg`.
+        flag: String,
+        /// The offending value, as text.
+        value: String,
+        /// The valid range in words, for example `-90 < angle < 90 (degrees)`.
+        valid: String,
+    },
+    /// Writing a figure or a file failed (exit code 1).
+    Io(String),
+}
+
+impl WorkbookError {
+    /// Builds a [`WorkbookError::BadInput`].
+    pub fn bad_input(flag: &str, value: impl fmt::Display, valid: &str) -> Self {
+        WorkbookError::BadInput {
+            flag: flag.to_string(),
+            value: value.to_string(),
+            valid: valid.to_string(),
+        }
+    }
+
+    /// The process exit code for this error: 2 for bad input, 1 otherwise.
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            WorkbookError::BadInput { .. } => 2,
+            WorkbookError::Io(_) => 1,
+        }
+    }
+}
+
+impl fmt::Display for WorkbookError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            WorkbookError::BadInput { flag, value, valid } => {
+                write!(f, "error: invalid value {value} for {flag}: valid range is {valid}")
+            }
+            WorkbookError::Io(msg) => write!(f, "error: {msg}"),
+        }
+    }
+}
+
+impl std::error::Error for WorkbookError {}
+
+impl From<std::io::Error> for WorkbookError {
+    fn from(e: std::io::Error) -> Self {
+        WorkbookError::Io(e.to_string())
+    }
+}
+
+/// Result type of the workbook.
+pub type Result<T> = std::result::Result<T, WorkbookError>;
+
+/// Checks that `value` is finite and satisfies `ok`; otherwise a bad-input error
+/// naming `flag` and the range `valid`.
+///
+/// ```
+/// use locomotion_workbook::error::check;
+/// assert!(check("--mu", 0.4, |m| m >= 0.0, "mu >= 0").is_ok());
+/// assert!(check("--mu", f64::NAN, |m| m >= 0.0, "mu >= 0").is_err());
+/// ```
+pub fn check(flag: &str, value: f64, ok: impl Fn(f64) -> bool, valid: &str) -> Result<f64> {
+    if value.is_finite() && ok(value) {
+        Ok(value)
+    } else {
+        Err(WorkbookError::bad_input(flag, value, valid))
+    }
+}
+
+/// `value > 0` and finite.
+pub fn positive(flag: &str, value: f64, unit: &str) -> Result<f64> {
+    check(flag, value, |v| v > 0.0, &format!("a finite number > 0 ({unit})"))
+}
+
+/// `value >= 0` and finite.
+pub fn non_negative(flag: &str, value: f64, unit: &str) -> Result<f64> {
+    check(flag, value, |v| v >= 0.0, &format!("a finite number >= 0 ({unit})"))
+}
+
+/// `lo < value < hi` and finite.
+pub fn open_interval(flag: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result<f64> {
+    check(flag, value, |v| v > lo && v < hi, &format!("{lo} < value < {hi} ({unit})"))
+}
+
+/// `lo <= value < hi` and finite.
+pub fn half_open(flag: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result<f64> {
+    check(flag, value, |v| v >= lo && v < hi, &format!("{lo} <= value < {hi} ({unit})"))
+}
+
+/// Parses a velocity pair `X,Y` (m/s) for clap; both parts must be finite numbers.
+pub fn parse_pair(s: &str) -> std::result::Result<[f64; 2], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 2 {
+        return Err(format!("expected X,Y (two finite numbers in m/s, comma-separated), got '{s}'"));
+    }
+    let mut out = [0.0; 2];
+    for (o, p) in out.iter_mut().zip(&parts) {
+        let v: f64 = p
+            .parse()
+            .map_err(|_| format!("expected X,Y (two finite numbers in m/s), '{p}' is not a number"))?;
+        if !v.is_finite() {
+            return Err(format!("expected X,Y (two finite numbers in m/s), '{p}' is not finite"));
+        }
+        *o = v;
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn checks_reject_nan_infinities_and_out_of_range() {
+        assert!(positive("--length-m", 0.0, "m").is_err());
+        assert!(positive("--length-m", f64::INFINITY, "m").is_err());
+        assert!(non_negative("--mu", -0.1, "1").is_err());
+        assert!(open_interval("--angle-deg", 90.0, -90.0, 90.0, "degrees").is_err());
+        assert!(half_open("--bias", 1.0, 0.0, 1.0, "1").is_err());
+        assert_eq!(half_open("--bias", 0.0, 0.0, 1.0, "1"), Ok(0.0));
+        let e = open_interval("--angle-deg", 95.0, -90.0, 90.0, "degrees").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "error: invalid value 95 for --angle-deg: valid range is -90 < value < 90 (degrees)"
+        );
+        assert_eq!(e.exit_code(), 2);
+    }
+
+    #[test]
+    fn pairs_parse_strictly() {
+        assert_eq!(parse_pair("1.5,-2"), Ok([1.5, -2.0]));
+        assert_eq!(parse_pair(" 1 , 2 "), Ok([1.0, 2.0]));
+        for bad in ["1", "1,2,3", "a,1", "nan,1", "1,inf", ""] {
+            assert!(parse_pair(bad).is_err(), "{bad}");
+        }
+    }
+}

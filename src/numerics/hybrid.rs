@@ -1,0 +1,426 @@
+//! The event-driven hybrid-automaton driver.
+//!
+//! A [`HybridSystem`] has discrete modes. In each mode the state follows a flow (an
+//! ODE integrated by the chosen [`Method`], or a closed form supplied by the model
+//! through [`HybridSystem::exact`]) until one of the mode's guards crosses zero in its
+//! [`Direction`]. The crossing is located on the step's dense output (or on the closed
+//! form) by [`illinois`], and the model's [`HybridSystem::on_event`] decides the next
+//! mode and the reset state, or stops the run with a typed reason.
+//!
+//! Rules (stated once, used by every model):
+//! - **Simultaneous events**: the earliest located crossing wins; crossings at the
+//!   same time go to the guard with the lowest index (models order guards by priority).
+//! - **Breakpoints**: a model whose data are not smooth at known times (a sawtooth
+//!   plate) names them with [`HybridSystem::breakpoint_after`]; the driver steps exactly
+//!   to each one and calls [`HybridSystem::on_breakpoint`].
+//! - **Zeno guard**: if `zeno.max_events` events fall inside a window shorter than
+//!   `zeno.window_s`, the run ends with [`Outcome::Zeno`] instead of hanging.
+//! - Guards that start a mode at exactly zero do not fire (see [`Direction::fires`]).
+
+use super::events::{illinois, time_tolerance, Direction};
+use super::ode::{Integrator, Method, OdeError, OdeSystem, Stats, StepControl};
+use std::collections::VecDeque;
+use std::fmt::Debug;
+
+/// What an event or breakpoint leads to.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Transition<M, X, const N: usize> {
+    /// Continue in `mode` from `state` (the reset map's image).
+    To {
+        /// The next mode.
+        mode: M,
+        /// The state after the reset.
+        state: [f64; N],
+    },
+    /// End the run with a model-defined reason (the stick fell, the model's validity ended).
+    Stop(X),
+}
+
+/// A hybrid system with `N` continuous states.
+pub trait HybridSystem<const N: usize> {
+    /// The discrete modes.
+    type Mode: Copy + PartialEq + Debug;
+    /// Model-defined reasons to stop a run.
+    type Stop: Clone + Debug;
+
+    /// The flow `y' = f(mode, t, y)` (used when [`HybridSystem::exact`] gives `None`).
+    fn flow(&self, mode: Self::Mode, t: f64, y: &[f64; N]) -> [f64; N];
+
+    /// The closed-form state at `t` of a mode entered at `(t0, y0)`, for modes that have
+    /// one (ballistic flight, constant acceleration). `None`: integrate the flow.
+    fn exact(&self, _mode: Self::Mode, _t0: f64, _y0: &[f64; N], _t: f64) -> Option<[f64; N]> {
+        None
+    }
+
+    /// Number of guards of `mode`.
+    fn guard_count(&self, mode: Self::Mode) -> usize;
+
+    /// Value of guard `i` of `mode` at `(t, y)`.
+    fn guard(&self, mode: Self::Mode, i: usize, t: f64, y: &[f64; N]) -> f64;
+
+    /// The direction in which guard `i` of `mode` fires.
+    fn direction(&self, mode: Self::Mode, i: usize) -> Direction;
+
+    /// The transition when guard `i` of `mode` fires at `(t, y)`.
+    fn on_event(&self, mode: Self::Mode, i: usize, t: f64, y: &[f64; N]) -> Transition<Self::Mode, Self::Stop, N>;
+
+    /// Longest step from `(t, y)` in `mode` (s). Guards are compared only at the ends
+    /// of a step (and at `interior_checks` points), so the model must keep this short
+    /// enough that no guard crosses zero twice within one step; in particular a guard
+    /// that starts a mode at zero (a ball leaving the floor) must be seen to leave
+    /// zero before it can come back (bound the first step by the time to the apex).
+    /// For closed-form modes this is the sampling interval of the guard search.
+    fn max_step(&self, _mode: Self::Mode, _t: f64, _y: &[f64; N]) -> f64 {
+        f64::INFINITY
+    }
+
+    /// The first time strictly after `t` at which the model's data are not smooth.
+    fn breakpoint_after(&self, _t: f64) -> Option<f64> {
+        None
+    }
+
+    /// The transition at a breakpoint (default: carry on in the same mode).
+    fn on_breakpoint(&self, mode: Self::Mode, _t: f64, y: &[f64; N]) -> Transition<Self::Mode, Self::Stop, N> {
+        Transition::To { mode, state: *y }
+    }
+}
+
+/// The Zeno guard: at most `max_events` events within any `window_s`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ZenoGuard {
+    /// Events allowed inside one window.
+    pub max_events: usize,
+    /// Window length (s).
+    pub window_s: f64,
+}
+
+/// Options of a hybrid run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Integration method for integrated modes.
+    pub method: Method,
+    /// Step-size control for integrated modes.
+    pub control: StepControl,
+    /// Locate crossings on the dense output (true) or take the end of the step where
+    /// the sign change was seen (false: the event-blind baseline).
+    pub locate_events: bool,
+    /// Event-time tolerance (s); `None`: a few ulps of t.
+    pub event_tol_s: Option<f64>,
+    /// Extra interior points per step at which guards are checked for sign changes
+    /// (0: ends only). Catches a guard that crosses twice inside one long step.
+    pub interior_checks: usize,
+    /// The Zeno guard.
+    pub zeno: ZenoGuard,
+    /// Keep a record of every event (counts are kept regardless).
+    pub record_events: bool,
+}
+
+impl Default for Options {
+    /// Dormand-Prince 5(4) at rtol = atol = 1e-10, located events, Zeno guard of 100
+    /// events within 1 microsecond.
+    fn default() -> Self {
+        Options {
+            method: Method::Dopri5,
+            control: StepControl::tol(1e-10, 1e-10),
+            locate_events: true,
+            event_tol_s: None,
+            interior_checks: 0,
+            zeno: ZenoGuard { max_events: 100, window_s: 1e-6 },
+            record_events: true,
+        }
+    }
+}
+
+/// One event of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EventRecord<M> {
+    /// Time (s).
+    pub t_s: f64,
+    /// Mode before.
+    pub from: M,
+    /// Index of the guard that fired (`usize::MAX` for a breakpoint).
+    pub guard: usize,
+    /// Mode after, `None` if the run stopped.
+    pub to: Option<M>,
+}
+
+/// How a run ended.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Outcome<X> {
+    /// Reached the end time.
+    Completed,
+    /// The model stopped it (its reason).
+    Stopped(X),
+    /// Events accumulated: `events` of them within `window_s` ending at `t_s`.
+    Zeno {
+        /// Time of the last event (s).
+        t_s: f64,
+        /// Events in the window.
+        events: usize,
+        /// Window (s).
+        window_s: f64,
+    },
+    /// The integrator failed (step underflow, non-finite state).
+    Failed(OdeError),
+}
+
+/// The result of a hybrid run.
+#[derive(Debug, Clone)]
+pub struct Run<M, X, const N: usize> {
+    /// How the run ended.
+    pub outcome: Outcome<X>,
+    /// Time at the end (s).
+    pub t_end_s: f64,
+    /// State at the end.
+    pub y_end: [f64; N],
+    /// Mode at the end.
+    pub mode_end: M,
+    /// The events, if recorded.
+    pub events: Vec<EventRecord<M>>,
+    /// Number of events (guards fired and breakpoints that changed the mode).
+    pub event_count: usize,
+    /// Integration work.
+    pub stats: Stats,
+    /// Guard evaluations spent locating events.
+    pub locate_evals: u64,
+    /// Time spent in each mode (s), in order of first visit.
+    pub mode_time_s: Vec<(M, f64)>,
+}
+
+/// One piece of trajectory inside a mode: a step, or the part of it before an event.
+pub struct Segment<'a, const N: usize> {
+    /// Start time (s).
+    pub t0: f64,
+    /// End time (s).
+    pub t1: f64,
+    /// State at `t0`.
+    pub y0: [f64; N],
+    /// State at `t1`.
+    pub y1: [f64; N],
+    eval: &'a dyn Fn(f64) -> [f64; N],
+}
+
+impl<const N: usize> Segment<'_, N> {
+    /// The state at `t` in `[t0, t1]` (dense output or closed form).
+    pub fn eval(&self, t: f64) -> [f64; N] {
+        (self.eval)(t)
+    }
+}
+
+/// Watches a run: every segment (accepted step) and every event.
+pub trait Observer<M, const N: usize> {
+    /// Called for every piece of trajectory, in time order.
+    fn segment(&mut self, _mode: M, _seg: &Segment<'_, N>) {}
+    /// Called at every event with the state before the reset and the next mode and
+    /// state after it (`None` if the run stops).
+    fn event(&mut self, _t_s: f64, _from: M, _guard: usize, _before: &[f64; N], _after: Option<(M, &[f64; N])>) {}
+}
+
+impl<M, const N: usize> Observer<M, N> for () {}
+
+struct ModeFlow<'a, S, M> {
+    sys: &'a S,
+    mode: M,
+}
+
+impl<S: HybridSystem<N>, const N: usize> OdeSystem<N> for ModeFlow<'_, S, S::Mode> {
+    fn rhs(&self, t: f64, y: &[f64; N]) -> [f64; N] {
+        self.sys.flow(self.mode, t, y)
+    }
+}
+
+/// Runs `sys` from `(t0, y0)` in `mode0` until `t_end` or a stop.
+pub fn simulate<S: HybridSystem<N>, const N: usize>(
+    sys: &S,
+    mode0: S::Mode,
+    t0: f64,
+    y0: [f64; N],
+    t_end: f64,
+    opts: &Options,
+    obs: &mut impl Observer<S::Mode, N>,
+) -> Run<S::Mode, S::Stop, N> {
+    let mut integ = Integrator::<N>::new(opts.method, opts.control);
+    let (mut t, mut y, mut mode) = (t0, y0, mode0);
+    let mut run = Run {
+        outcome: Outcome::Completed,
+        t_end_s: t0,
+        y_end: y0,
+        mode_end: mode0,
+        events: Vec::new(),
+        event_count: 0,
+        stats: Stats::default(),
+        locate_evals: 0,
+        mode_time_s: Vec::new(),
+    };
+    let mut recent: VecDeque<f64> = VecDeque::with_capacity(opts.zeno.max_events + 1);
+    let mut guards0: Vec<f64> = Vec::new();
+    let mut fresh_mode = true;
+    let outcome = 'outer: loop {
+        if t >= t_end {
+            break Outcome::Completed;
+        }
+        if fresh_mode {
+            guards0 = (0..sys.guard_count(mode)).map(|i| sys.guard(mode, i, t, &y)).collect();
+            fresh_mode = false;
+        }
+        let bp = sys.breakpoint_after(t).filter(|&b| b < t_end);
+        let horizon = bp.unwrap_or(t_end);
+        let max_step = sys.max_step(mode, t, &y);
+        let t_lim = if t + max_step < horizon { t + max_step } else { horizon };
+        // A step too short to advance time right after a run of events is Zeno
+        // accumulation below the time resolution; otherwise a failure. Either way:
+        // report, never spin.
+        let too_small = |t: f64, e: OdeError| {
+            let in_window = recent.iter().filter(|&&te| t - te < opts.zeno.window_s).count();
+            match e {
+                OdeError::StepTooSmall { .. } if in_window > 0 => {
+                    Outcome::Zeno { t_s: t, events: in_window, window_s: opts.zeno.window_s }
+                }
+                e => Outcome::Failed(e),
+            }
+        };
+        if t_lim <= t {
+            break too_small(t, OdeError::StepTooSmall { t_s: t });
+        }
+        // One piece of trajectory: closed form or one integrator step.
+        let (t1, y1, step);
+        let closed = sys.exact(mode, t, &y, t).is_some();
+        if closed {
+            t1 = t_lim;
+            y1 = sys.exact(mode, t, &y, t1).expect("closed form");
+            step = None;
+        } else {
+            let flow = ModeFlow { sys, mode };
+            match integ.step(&flow, t, &y, t_lim) {
+                Ok(s) => {
+                    t1 = s.t1;
+                    y1 = s.y1;
+                    step = Some(s);
+                }
+                Err(e) => break too_small(t, e),
+            }
+        }
+        let (ts, ys) = (t, y);
+        let eval = |s: f64| -> [f64; N] {
+            match &step {
+                Some(st) => st.eval(s),
+                None => sys.exact(mode, ts, &ys, s).expect("closed form"),
+            }
+        };
+        // Find the earliest crossing among the guards.
+        let mut best: Option<(usize, f64)> = None;
+        let guards1: Vec<f64> = (0..guards0.len()).map(|i| sys.guard(mode, i, t1, &y1)).collect();
+        for i in 0..guards0.len() {
+            let dir = sys.direction(mode, i);
+            let mut ta = ts;
+            let mut ga = guards0[i];
+            let mut bracket = None;
+            for k in 1..=opts.interior_checks + 1 {
+                let tb = if k == opts.interior_checks + 1 { t1 } else { ts + (t1 - ts) * k as f64 / (opts.interior_checks + 1) as f64 };
+                let gb = if tb == t1 { guards1[i] } else { sys.guard(mode, i, tb, &eval(tb)) };
+                if dir.fires(ga, gb) {
+                    bracket = Some((ta, tb, ga, gb));
+                    break;
+                }
+                ta = tb;
+                ga = gb;
+            }
+            if let Some((a, b, ga, gb)) = bracket {
+                let te = if opts.locate_events {
+                    let tol = opts.event_tol_s.unwrap_or_else(|| time_tolerance(b));
+                    let (te, n) = illinois(|s| sys.guard(mode, i, s, &eval(s)), a, b, ga, gb, tol);
+                    run.locate_evals += u64::from(n);
+                    te
+                } else {
+                    b
+                };
+                if best.is_none_or(|(_, tb)| te < tb) {
+                    best = Some((i, te));
+                }
+            }
+        }
+        match best {
+            Some((i, te)) => {
+                let ye = eval(te);
+                obs.segment(mode, &Segment { t0: ts, t1: te, y0: ys, y1: ye, eval: &eval });
+                add_time(&mut run.mode_time_s, mode, te - ts);
+                let tr = sys.on_event(mode, i, te, &ye);
+                run.event_count += 1;
+                let to = match &tr {
+                    Transition::To { mode: m, state } => {
+                        obs.event(te, mode, i, &ye, Some((*m, state)));
+                        Some(*m)
+                    }
+                    Transition::Stop(_) => {
+                        obs.event(te, mode, i, &ye, None);
+                        None
+                    }
+                };
+                if opts.record_events {
+                    run.events.push(EventRecord { t_s: te, from: mode, guard: i, to });
+                }
+                t = te;
+                match tr {
+                    Transition::To { mode: m, state } => {
+                        mode = m;
+                        y = state;
+                    }
+                    Transition::Stop(x) => {
+                        y = ye;
+                        break 'outer Outcome::Stopped(x);
+                    }
+                }
+                integ.restart();
+                fresh_mode = true;
+                recent.push_back(te);
+                while recent.len() > opts.zeno.max_events {
+                    recent.pop_front();
+                }
+                if recent.len() == opts.zeno.max_events && te - recent[0] < opts.zeno.window_s {
+                    break Outcome::Zeno { t_s: te, events: recent.len(), window_s: opts.zeno.window_s };
+                }
+            }
+            None => {
+                obs.segment(mode, &Segment { t0: ts, t1, y0: ys, y1, eval: &eval });
+                add_time(&mut run.mode_time_s, mode, t1 - ts);
+                t = t1;
+                y = y1;
+                guards0 = guards1;
+                if Some(t1) == bp {
+                    integ.restart();
+                    match sys.on_breakpoint(mode, t, &y) {
+                        Transition::To { mode: m, state } => {
+                            if m != mode {
+                                run.event_count += 1;
+                                if opts.record_events {
+                                    run.events.push(EventRecord { t_s: t, from: mode, guard: usize::MAX, to: Some(m) });
+                                }
+                            }
+                            mode = m;
+                            y = state;
+                            // Guards may jump at a breakpoint: re-evaluate them.
+                            fresh_mode = true;
+                        }
+                        Transition::Stop(x) => break 'outer Outcome::Stopped(x),
+                    }
+                }
+            }
+        }
+    };
+    run.outcome = outcome;
+    run.t_end_s = t;
+    run.y_end = y;
+    run.mode_end = mode;
+    run.stats = integ.stats;
+    run
+}
+
+fn add_time<M: PartialEq + Copy>(acc: &mut Vec<(M, f64)>, mode: M, dt: f64) {
+    match acc.iter_mut().find(|(m, _)| *m == mode) {
+        Some((_, t)) => *t += dt,
+        None => acc.push((mode, dt)),
+    }
+}
+
+#[cfg(test)]
+mod tests;

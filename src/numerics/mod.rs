@@ -1,0 +1,11 @@
+//! Numerical methods. They know nothing of sticks, plates or friction.
+//!
+//! - [`ode`]: explicit Euler, classical RK4 and Dormand-Prince 5(4) with adaptive step
+//!   control and dense output, behind one [`ode::Integrator`].
+//! - [`events`]: crossing directions and a bracketing (Illinois) root finder.
+//! - [`hybrid`]: the event-driven hybrid-automaton driver: modes, flows (integrated or
+//!   in closed form), guards, resets, scheduled breakpoints and a Zeno guard.
+
+pub mod events;
+pub mod hybrid;
+pub mod ode;

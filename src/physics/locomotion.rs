@@ -1,0 +1,1 @@
+//! What counts as locomotion (document section 1): not built yet.

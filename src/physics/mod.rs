@@ -1,0 +1,7 @@
+//! Physical models: no I/O, no integrator choice, no printing.
+//!
+//! A model that has a phase with a closed form exposes it; a model that needs
+//! integration exposes itself as a [`crate::numerics::hybrid::HybridSystem`].
+
+pub mod locomotion;
+pub mod rigid;

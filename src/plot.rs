@@ -1,0 +1,1 @@
+//! The one figure style: not built yet.

@@ -1,0 +1,433 @@
+//! Claims, verdicts and chapter reports: the human table and the JSON contract.
+//!
+//! A [`Claim`] is one statement of the source document together with an independent
+//! computation that checks it. Its [`Verdict`] is decided by that check (see
+//! [`Claim::judged`]): a claim never carries a verdict that no computation supports.
+//!
+//! The JSON form of a [`ChapterReport`] is the contract of `DESIGN.md`:
+//! `{"chapter", "title", "section", "params", "claims", "results", "figures"}`, and a
+//! claim is `{"id", "section", "statement", "expected", "computed", "tolerance", "verdict"}`.
+
+use serde::Serialize;
+use serde_json::{Map, Value};
+use std::fmt::Write as _;
+
+/// The outcome of checking one claim of the document.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Verdict {
+    /// The document holds: the independent computation agrees within the tolerance.
+    Confirmed,
+    /// The document is wrong; the claim's statement carries the correction, and the
+    /// corrected statement is what the computation confirms.
+    Erratum,
+    /// True only in a limit, which the statement names; the computation shows both the
+    /// agreement in the limit and the departure away from it.
+    Approximation,
+    /// The workbook's own check broke: a regression, never a finding about the document.
+    Failed,
+}
+
+impl Verdict {
+    /// The lower-case name used in tables and JSON.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Verdict::Confirmed => "confirmed",
+            Verdict::Erratum => "erratum",
+            Verdict::Approximation => "approximation",
+            Verdict::Failed => "failed",
+        }
+    }
+}
+
+/// One checked statement of the document.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Claim {
+    /// Short kebab-case id, unique within the chapter.
+    pub id: String,
+    /// Section (or equation, table, algorithm) of the document the claim comes from.
+    pub section: String,
+    /// What the document says; for an erratum also the correction, for an
+    /// approximation also the limit in which it holds.
+    pub statement: String,
+    /// The value the statement predicts (number, boolean or text).
+    pub expected: Value,
+    /// The value the workbook computed independently.
+    pub computed: Value,
+    /// The allowed difference (number) or the kind of comparison (text, e.g. `"exact"`).
+    pub tolerance: Value,
+    /// The verdict.
+    pub verdict: Verdict,
+}
+
+impl Claim {
+    /// A claim whose verdict is `verdict_if_holds` when the check `holds`, and
+    /// [`Verdict::Failed`] otherwise.
+    ///
+    /// `holds` must come from a comparison of `expected` with `computed` (or of the
+    /// corrected statement with the computation, for an erratum).
+    #[allow(clippy::too_many_arguments)]
+    pub fn judged(
+        id: &str,
+        section: &str,
+        statement: &str,
+        expected: impl Into<Value>,
+        computed: impl Into<Value>,
+        tolerance: impl Into<Value>,
+        holds: bool,
+        verdict_if_holds: Verdict,
+    ) -> Claim {
+        Claim {
+            id: id.to_string(),
+            section: section.to_string(),
+            statement: statement.to_string(),
+            expected: finite_or_text(expected.into()),
+            computed: finite_or_text(computed.into()),
+            tolerance: finite_or_text(tolerance.into()),
+            verdict: if holds { verdict_if_holds } else { Verdict::Failed },
+        }
+    }
+
+    /// A numeric claim: confirmed when `|computed - expected| <= tolerance`, failed
+    /// otherwise (also when either number is not finite).
+    pub fn close(
+        id: &str,
+        section: &str,
+        statement: &str,
+        expected: f64,
+        computed: f64,
+        tolerance: f64,
+    ) -> Claim {
+        let holds = is_close(expected, computed, tolerance);
+        Claim::judged(id, section, statement, expected, computed, tolerance, holds, Verdict::Confirmed)
+    }
+
+    /// An exact comparison of two discrete values (booleans, labels, counts):
+    /// confirmed when equal, failed otherwise.
+    pub fn exact<T: Into<Value> + PartialEq + Clone>(
+        id: &str,
+        section: &str,
+        statement: &str,
+        expected: T,
+        computed: T,
+    ) -> Claim {
+        let holds = expected == computed;
+        Claim::judged(id, section, statement, expected, computed, "exact", holds, Verdict::Confirmed)
+    }
+}
+
+/// `|a - b| <= tol`, false when anything is not finite.
+pub fn is_close(a: f64, b: f64, tol: f64) -> bool {
+    a.is_finite() && b.is_finite() && tol.is_finite() && (a - b).abs() <= tol
+}
+
+/// JSON has no NaN: a non-finite number becomes the text `"non-finite: NaN"` so it is
+/// visible instead of silently turning into `null`.
+fn finite_or_text(v: Value) -> Value {
+    match v {
+        Value::Null => Value::String("non-finite".into()),
+        other => other,
+    }
+}
+
+/// The report of one chapter run.
+#[derive(Debug, Clone, Serialize)]
+pub struct ChapterReport {
+    /// Chapter id (kebab-case), as on the command line.
+    pub chapter: String,
+    /// Chapter title.
+    pub title: String,
+    /// Section of the document the chapter covers.
+    pub section: String,
+    /// The physical parameters the chapter ran with (SI units, unit in the key).
+    pub params: Map<String, Value>,
+    /// The checked claims.
+    pub claims: Vec<Claim>,
+    /// Named results (snake_case, SI units in the name where needed).
+    pub results: Map<String, Value>,
+    /// Paths of the figures written, relative to the working directory.
+    pub figures: Vec<String>,
+    /// Markdown tables for the course text, by block name (`workbook render`); not in JSON.
+    #[serde(skip)]
+    pub tables: Vec<(String, String)>,
+    /// Free-text status line for the human table (e.g. "not built yet"); not in JSON.
+    #[serde(skip)]
+    pub status: Option<String>,
+}
+
+impl ChapterReport {
+    /// An empty report for a chapter.
+    pub fn new(chapter: &str, title: &str, section: &str) -> Self {
+        ChapterReport {
+            chapter: chapter.to_string(),
+            title: title.to_string(),
+            section: section.to_string(),
+            params: Map::new(),
+            claims: Vec::new(),
+            results: Map::new(),
+            figures: Vec::new(),
+            tables: Vec::new(),
+            status: None,
+        }
+    }
+
+    /// Records a parameter.
+    pub fn param(&mut self, key: &str, value: impl Into<Value>) {
+        self.params.insert(key.to_string(), value.into());
+    }
+
+    /// Records a named result. A non-finite number is stored as text and adds a
+    /// failed claim, so a NaN can never pass unnoticed.
+    pub fn result(&mut self, key: &str, value: impl Into<Value>) {
+        let v = value.into();
+        if v.is_null() || contains_null(&v) {
+            self.claims.push(Claim::judged(
+                &format!("finite-{key}"),
+                "workbook",
+                &format!("result {key} is a finite number"),
+                "finite",
+                "non-finite",
+                "exact",
+                false,
+                Verdict::Failed,
+            ));
+        }
+        self.results.insert(key.to_string(), finite_or_text(v));
+    }
+
+    /// Adds a claim.
+    pub fn claim(&mut self, claim: Claim) {
+        self.claims.push(claim);
+    }
+
+    /// Adds a Markdown table for the course text under the block name `name`.
+    pub fn table(&mut self, name: &str, markdown: String) {
+        self.tables.push((name.to_string(), markdown));
+    }
+
+    /// Number of claims with the given verdict.
+    pub fn count(&self, verdict: Verdict) -> usize {
+        self.claims.iter().filter(|c| c.verdict == verdict).count()
+    }
+
+    /// True when some claim failed (exit code 1).
+    pub fn has_failures(&self) -> bool {
+        self.count(Verdict::Failed) > 0
+    }
+
+    /// One-line summary of the verdicts.
+    pub fn summary(&self) -> String {
+        format!(
+            "{} claims: {} confirmed, {} erratum, {} approximation, {} failed",
+            self.claims.len(),
+            self.count(Verdict::Confirmed),
+            self.count(Verdict::Erratum),
+            self.count(Verdict::Approximation),
+            self.count(Verdict::Failed)
+        )
+    }
+
+    /// The human-readable report: parameters, an aligned verdict table, results,
+    /// figures and a one-line summary.
+    pub fn human(&self) -> String {
+        let mut s = String::new();
+        let _ = writeln!(s, "== {} : {} (document section {}) ==", self.chapter, self.title, self.section);
+        if let Some(status) = &self.status {
+            let _ = writeln!(s, "{status}");
+        }
+        if !self.params.is_empty() {
+            let p: Vec<String> = self.params.iter().map(|(k, v)| format!("{k} = {}", fmt_value(v))).collect();
+            let _ = writeln!(s, "parameters: {}", p.join(", "));
+        }
+        if !self.claims.is_empty() {
+            let rows: Vec<[String; 6]> = self
+                .claims
+                .iter()
+                .enumerate()
+                .map(|(i, c)| {
+                    [
+                        format!("{}", i + 1),
+                        c.verdict.as_str().to_string(),
+                        c.id.clone(),
+                        fmt_value(&c.expected),
+                        fmt_value(&c.computed),
+                        fmt_value(&c.tolerance),
+                    ]
+                })
+                .collect();
+            let header = ["#", "verdict", "claim", "expected", "computed", "tolerance"];
+            let mut w: Vec<usize> = header.iter().map(|h| h.len()).collect();
+            for r in &rows {
+                for (wi, cell) in w.iter_mut().zip(r) {
+                    *wi = (*wi).max(cell.chars().count()).min(28);
+                }
+            }
+            let line = |cells: &[&str]| {
+                let mut l = String::new();
+                for (i, c) in cells.iter().enumerate() {
+                    let c = clip(c, w[i]);
+                    let _ = write!(l, "{c:<width$}  ", width = w[i]);
+                }
+                l.trim_end().to_string()
+            };
+            let _ = writeln!(s, "{}", line(&header));
+            for (r, c) in rows.iter().zip(&self.claims) {
+                let cells: Vec<&str> = r.iter().map(String::as_str).collect();
+                let _ = writeln!(s, "{}", line(&cells));
+                let _ = writeln!(s, "{:indent$}[{}] {}", "", c.section, c.statement, indent = w[0] + 2);
+            }
+        }
+        if !self.results.is_empty() {
+            let _ = writeln!(s, "results:");
+            for (k, v) in &self.results {
+                let _ = writeln!(s, "  {k} = {}", fmt_value(v));
+            }
+        }
+        if !self.figures.is_empty() {
+            let _ = writeln!(s, "figures: {}", self.figures.join(", "));
+        }
+        let _ = writeln!(s, "summary: {}", self.summary());
+        s
+    }
+
+    /// The JSON object of the contract (pretty-printed is not required; compact).
+    pub fn to_json(&self) -> Value {
+        serde_json::to_value(self).expect("report serialises")
+    }
+
+    /// The generated Markdown table of claims, for the course text (block `claims`).
+    pub fn claims_markdown(&self) -> String {
+        let mut s = String::from("| # | claim | section | verdict | expected | computed | tolerance |\n|---|---|---|---|---|---|---|\n");
+        for (i, c) in self.claims.iter().enumerate() {
+            let _ = writeln!(
+                s,
+                "| {} | **{}**: {} | {} | {} | {} | {} | {} |",
+                i + 1,
+                c.id,
+                c.statement.replace('|', "\\|"),
+                c.section,
+                c.verdict.as_str(),
+                fmt_value(&c.expected).replace('|', "\\|"),
+                fmt_value(&c.computed).replace('|', "\\|"),
+                fmt_value(&c.tolerance)
+            );
+        }
+        s
+    }
+
+    /// The generated Markdown table of results (block `results`).
+    pub fn results_markdown(&self) -> String {
+        let mut s = String::from("| result | value |\n|---|---|\n");
+        for (k, v) in &self.results {
+            let _ = writeln!(s, "| `{k}` | {} |", fmt_value(v).replace('|', "\\|"));
+        }
+        s
+    }
+}
+
+fn contains_null(v: &Value) -> bool {
+    match v {
+        Value::Null => true,
+        Value::Array(a) => a.iter().any(contains_null),
+        Value::Object(o) => o.values().any(contains_null),
+        _ => false,
+    }
+}
+
+fn clip(s: &str, width: usize) -> String {
+    if s.chars().count() <= width {
+        s.to_string()
+    } else {
+        let mut t: String = s.chars().take(width.saturating_sub(1)).collect();
+        t.push('~');
+        t
+    }
+}
+
+/// Formats a number for tables: integers exactly, others with 4 significant digits
+/// (scientific notation outside 1e-3 .. 1e5). Stable across runs and platforms for
+/// numbers that agree to ~5 digits.
+pub fn fmt_num(x: f64) -> String {
+    if !x.is_finite() {
+        return "non-finite".into();
+    }
+    if x == x.trunc() && x.abs() < 1e9 {
+        return format!("{}", x as i64);
+    }
+    let a = x.abs();
+    if (1e-3..1e5).contains(&a) {
+        let digits = (3 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{x:.digits$}");
+        let s = if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s };
+        if s == "-0" { "0".into() } else { s }
+    } else {
+        format!("{x:.3e}")
+    }
+}
+
+/// Formats any JSON value for tables (numbers via [`fmt_num`]).
+pub fn fmt_value(v: &Value) -> String {
+    match v {
+        Value::Number(n) => n.as_f64().map(fmt_num).unwrap_or_else(|| n.to_string()),
+        Value::String(s) => s.clone(),
+        Value::Bool(b) => b.to_string(),
+        Value::Null => "non-finite".into(),
+        Value::Array(a) => format!("[{}]", a.iter().map(fmt_value).collect::<Vec<_>>().join(", ")),
+        Value::Object(o) => {
+            let parts: Vec<String> = o.iter().map(|(k, v)| format!("{k}: {}", fmt_value(v))).collect();
+            format!("{{{}}}", parts.join(", "))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn verdict_follows_the_check() {
+        let ok = Claim::close("a", "2", "x is one", 1.0, 1.0 + 1e-13, 1e-12);
+        assert_eq!(ok.verdict, Verdict::Confirmed);
+        let bad = Claim::close("b", "2", "x is one", 1.0, 1.1, 1e-12);
+        assert_eq!(bad.verdict, Verdict::Failed);
+        let nan = Claim::close("c", "2", "x is one", 1.0, f64::NAN, 1e-12);
+        assert_eq!(nan.verdict, Verdict::Failed);
+        assert_eq!(nan.computed, Value::String("non-finite".into()));
+        let e = Claim::judged("d", "3", "s", 1.0, 2.0, 0.1, true, Verdict::Erratum);
+        assert_eq!(e.verdict, Verdict::Erratum);
+    }
+
+    #[test]
+    fn json_has_exactly_the_contract_keys() {
+        let mut r = ChapterReport::new("x", "T", "1");
+        r.param("mu", 0.4);
+        r.result("ratio", 0.6);
+        r.claim(Claim::exact("k", "1", "s", true, true));
+        r.table("t", "|a|".into());
+        let j = r.to_json();
+        let keys: Vec<&String> = j.as_object().unwrap().keys().collect();
+        assert_eq!(keys, ["chapter", "title", "section", "params", "claims", "results", "figures"]);
+        let ck: Vec<&String> = j["claims"][0].as_object().unwrap().keys().collect();
+        assert_eq!(ck, ["id", "section", "statement", "expected", "computed", "tolerance", "verdict"]);
+    }
+
+    #[test]
+    fn nan_results_fail_loudly() {
+        let mut r = ChapterReport::new("x", "T", "1");
+        r.result("speed_mps", f64::NAN);
+        assert!(r.has_failures());
+        assert_eq!(r.results["speed_mps"], Value::String("non-finite".into()));
+        assert!(!r.to_json().to_string().contains("NaN"));
+    }
+
+    #[test]
+    fn numbers_format_stably() {
+        assert_eq!(fmt_num(0.6), "0.6");
+        assert_eq!(fmt_num(45.0), "45");
+        assert_eq!(fmt_num(0.599999999999), "0.6");
+        assert_eq!(fmt_num(1.23456e-7), "1.235e-7");
+        assert_eq!(fmt_num(-0.00001), "-1.000e-5");
+        assert_eq!(fmt_num(1234.5678), "1235");
+        assert_eq!(fmt_num(3.14159), "3.142");
+    }
+}
