@@ -9,3 +9,4 @@
 pub mod events;
 pub mod hybrid;
 pub mod ode;
+pub mod timestepping;
