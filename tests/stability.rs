@@ -1,0 +1,249 @@
+//! Where numerical methods fail, at the level of the numerics: each test shows the
+//! failing method failing and the good method not, against a closed form.
+//!
+//! - Stiffness: the stick's flight relaxation `theta' = -(k/gamma)(theta - theta_0)` has
+//!   a time constant gamma/k = 1 ms, far shorter than a sensible step for a 30 Hz drive.
+//!   Explicit Euler and RK4 with a fixed step of a tenth of the period blow up (their
+//!   stability intervals on the negative real axis end at h/tau = 2 and 2.785);
+//!   adaptive Dormand-Prince follows the closed form.
+//! - Events: fixed steps without event location take an impact or a stick-slip switch
+//!   at the end of the step that saw it, late by up to one step (error ~ h); located
+//!   events are exact to ~1e-12.
+//! - Zeno: a ball bouncing with 0 < e < 1 makes infinitely many impacts before
+//!   t_inf = t1 (1 + e)/(1 - e). The event-driven driver reports `Outcome::Zeno` there
+//!   instead of hanging; Moreau-Jean passes through the accumulation to rest.
+
+use locomotion_workbook::numerics::events::Direction;
+use locomotion_workbook::numerics::hybrid::{simulate, HybridSystem, Options, Outcome, Transition};
+use locomotion_workbook::numerics::ode::{Integrator, Method, OdeError, StepControl};
+use locomotion_workbook::numerics::timestepping::{self as mj, ContactModel, ContactStatus, MjOptions};
+use std::f64::consts::TAU;
+
+const G: f64 = 9.81;
+
+// ---------------------------------------------------------------- stiffness
+
+/// tau = gamma / k of the stick scene (k = 10 N m/rad, gamma = 0.01 N m s/rad).
+const TAU_S: f64 = 1e-3;
+/// Drive frequency of the stick scene (Hz).
+const F_HZ: f64 = 30.0;
+/// Amplitude of the forcing of the relaxation (rad).
+const A_RAD: f64 = 0.1;
+
+/// theta' = -(theta - a cos(w t)) / tau: the relaxation towards a moving target.
+fn relax(t: f64, y: &[f64; 1]) -> [f64; 1] {
+    [-(y[0] - A_RAD * (TAU * F_HZ * t).cos()) / TAU_S]
+}
+
+/// Closed form from theta(0) = 0: particular solution plus decaying transient.
+fn relax_exact(t: f64) -> f64 {
+    let wt = TAU * F_HZ * TAU_S;
+    let d = 1.0 + wt * wt;
+    A_RAD * ((TAU * F_HZ * t).cos() + wt * (TAU * F_HZ * t).sin()) / d - A_RAD / d * (-t / TAU_S).exp()
+}
+
+fn relax_error(method: Method, control: StepControl, t_end: f64) -> Result<f64, OdeError> {
+    let mut integ = Integrator::new(method, control);
+    let y = integ.integrate(&relax, 0.0, [0.0], t_end, |_| {})?;
+    Ok((y[0] - relax_exact(t_end)).abs())
+}
+
+#[test]
+fn explicit_fixed_steps_blow_up_on_the_stiff_flight_relaxation() {
+    // h = T/10 = 3.3 ms = 3.3 tau: outside both stability intervals. After 1 s (300
+    // steps) the amplification |1 - h/tau|^300 = 2.3^300 overflows or is astronomically
+    // large; either the integrator reports a non-finite state or the error exceeds 1e6 rad.
+    let h = 1.0 / (10.0 * F_HZ);
+    for m in [Method::Euler, Method::Rk4] {
+        match relax_error(m, StepControl::Fixed { h_s: h }, 1.0) {
+            Err(OdeError::NonFinite { .. }) => {}
+            Ok(e) => assert!(e > 1e6, "{m:?} error {e} did not blow up"),
+            Err(e) => panic!("{m:?}: unexpected {e}"),
+        }
+    }
+    // The good method: adaptive DP5 at 1e-8 follows the closed form. Stiff decay is
+    // damped, so the global error stays within a small multiple of the tolerance.
+    let e = relax_error(Method::Dopri5, StepControl::tol(1e-8, 1e-8), 1.0).unwrap();
+    assert!(e < 1e-6, "DP5 error {e}");
+}
+
+#[test]
+fn the_failure_is_stability_not_accuracy() {
+    // Inside the stability interval (h = 1.5 tau for Euler, 2.5 tau for RK4) the same
+    // fixed-step methods stay bounded: the error is the forcing's phase error, of order
+    // the amplitude at most (0.1 rad), nowhere near the blow-up above.
+    assert!(relax_error(Method::Euler, StepControl::Fixed { h_s: 1.5 * TAU_S }, 1.0).unwrap() < A_RAD);
+    assert!(relax_error(Method::Rk4, StepControl::Fixed { h_s: 2.5 * TAU_S }, 1.0).unwrap() < A_RAD);
+}
+
+// ---------------------------------------------------------------- events
+
+/// A ball above a fixed floor (height, velocity); guard: height falling. e = 0 stops.
+struct Ball {
+    e: f64,
+}
+
+impl HybridSystem<2> for Ball {
+    type Mode = ();
+    type Stop = &'static str;
+    fn flow(&self, _m: (), _t: f64, y: &[f64; 2]) -> [f64; 2] {
+        [y[1], -G]
+    }
+    fn max_step(&self, _m: (), _t: f64, y: &[f64; 2]) -> f64 {
+        // Leaving the floor, step at most to the apex so the guard is seen positive.
+        if y[0] <= 0.0 && y[1] > 0.0 {
+            y[1] / G
+        } else {
+            f64::INFINITY
+        }
+    }
+    fn guard_count(&self, _m: ()) -> usize {
+        1
+    }
+    fn guard(&self, _m: (), _i: usize, _t: f64, y: &[f64; 2]) -> f64 {
+        y[0]
+    }
+    fn direction(&self, _m: (), _i: usize) -> Direction {
+        Direction::Falling
+    }
+    fn on_event(&self, _m: (), _i: usize, _t: f64, y: &[f64; 2]) -> Transition<(), &'static str, 2> {
+        if self.e == 0.0 {
+            Transition::Stop("landed")
+        } else {
+            Transition::To { mode: (), state: [0.0, -self.e * y[1]] }
+        }
+    }
+}
+
+/// A block sliding on a floor (position, velocity > 0), decelerating at mu g; guard:
+/// velocity falling through zero (the slip-to-stick switch), which stops the run.
+struct Slider {
+    mu: f64,
+}
+
+impl HybridSystem<2> for Slider {
+    type Mode = ();
+    type Stop = &'static str;
+    fn flow(&self, _m: (), _t: f64, _y: &[f64; 2]) -> [f64; 2] {
+        [_y[1], -self.mu * G]
+    }
+    fn guard_count(&self, _m: ()) -> usize {
+        1
+    }
+    fn guard(&self, _m: (), _i: usize, _t: f64, y: &[f64; 2]) -> f64 {
+        y[1]
+    }
+    fn direction(&self, _m: (), _i: usize) -> Direction {
+        Direction::Falling
+    }
+    fn on_event(&self, _m: (), _i: usize, _t: f64, _y: &[f64; 2]) -> Transition<(), &'static str, 2> {
+        Transition::Stop("stuck")
+    }
+}
+
+fn fixed(method: Method, h: f64, locate: bool) -> Options {
+    Options { method, control: StepControl::Fixed { h_s: h }, locate_events: locate, ..Options::default() }
+}
+
+#[test]
+fn unlocated_impacts_are_late_by_up_to_a_step_located_ones_exact() {
+    // Closed form: the ball dropped from 1 m lands at sqrt(2/g). Unlocated, the event
+    // is taken at the end of the step that crossed: 0 < error <= h, and the error
+    // shrinks with h (first order on average). Located on the dense output: ~1e-12
+    // (RK4's Hermite interpolant is exact for the quadratic flight).
+    let exact = (2.0 / G).sqrt();
+    let mut errs = Vec::new();
+    for h in [1e-2, 1e-3, 1e-4] {
+        let run = simulate(&Ball { e: 0.0 }, (), 0.0, [1.0, 0.0], 2.0, &fixed(Method::Rk4, h, false), &mut ());
+        let err = run.t_end_s - exact;
+        assert!(err > 0.0 && err <= h * (1.0 + 1e-9), "h {h}: late by {err}");
+        errs.push(err);
+        let run = simulate(&Ball { e: 0.0 }, (), 0.0, [1.0, 0.0], 2.0, &fixed(Method::Rk4, h, true), &mut ());
+        assert!((run.t_end_s - exact).abs() < 1e-12, "located: {}", run.t_end_s - exact);
+    }
+    assert!(errs[2] < errs[0] / 10.0, "{errs:?}");
+}
+
+#[test]
+fn unlocated_stick_slip_switches_are_late_by_up_to_a_step() {
+    // Closed form: the block launched at 1 m/s with mu = 0.4 sticks at t = v0/(mu g).
+    // RK4 integrates the constant deceleration (quadratic position) exactly and its
+    // Hermite interpolant reproduces it, so the only error is the event's placement:
+    // up to h unlocated, round-off located (time and stopping distance v0^2/(2 mu g)).
+    let (v0, mu) = (1.0, 0.4);
+    let exact = v0 / (mu * G);
+    for h in [1e-2, 1e-3] {
+        let run = simulate(&Slider { mu }, (), 0.0, [0.0, v0], 2.0, &fixed(Method::Rk4, h, false), &mut ());
+        let late = run.t_end_s - exact;
+        assert!(late > 0.0 && late <= h * (1.0 + 1e-9), "h {h}: {late}");
+        let run = simulate(&Slider { mu }, (), 0.0, [0.0, v0], 2.0, &fixed(Method::Rk4, h, true), &mut ());
+        assert!((run.t_end_s - exact).abs() < 1e-12, "located: {}", run.t_end_s - exact);
+        assert!((run.y_end[0] - v0 * v0 / (2.0 * mu * G)).abs() < 1e-12);
+    }
+}
+
+// ---------------------------------------------------------------- Zeno
+
+/// The same ball as a Moreau-Jean contact model: q = (x, z).
+struct MjBall {
+    e: f64,
+}
+
+impl ContactModel<2> for MjBall {
+    fn inv_mass(&self, _t: f64, _q: &[f64; 2], _h: f64) -> [[f64; 2]; 2] {
+        [[1.0, 0.0], [0.0, 1.0]]
+    }
+    fn free_velocity(&self, _t: f64, _q: &[f64; 2], v: &[f64; 2], h: f64) -> [f64; 2] {
+        [v[0], v[1] - G * h]
+    }
+    fn gap(&self, _t: f64, q: &[f64; 2]) -> f64 {
+        q[1]
+    }
+    fn jacobians(&self, _t: f64, _q: &[f64; 2]) -> ([f64; 2], [f64; 2]) {
+        ([0.0, 1.0], [1.0, 0.0])
+    }
+    fn restitution(&self) -> f64 {
+        self.e
+    }
+    fn mu(&self) -> f64 {
+        0.5
+    }
+}
+
+#[test]
+fn zeno_bouncing_stops_the_event_driver_and_moreau_jean_passes_to_rest() {
+    // Closed form: from 1 m, t1 = sqrt(2/g); flights 2 t1 e^k sum to
+    // t_inf = t1 (1 + e)/(1 - e) = 3 t1 for e = 1/2.
+    let e = 0.5;
+    let t1 = (2.0 / G).sqrt();
+    let t_inf = t1 * (1.0 + e) / (1.0 - e);
+    // Event-driven: infinitely many events before t_inf; the driver stops there.
+    let run = simulate(&Ball { e }, (), 0.0, [1.0, 0.0], 5.0, &Options::default(), &mut ());
+    let Outcome::Zeno { t_s, .. } = run.outcome else { panic!("expected Zeno, got {:?}", run.outcome) };
+    assert!(t_s <= t_inf + 1e-12 && t_inf - t_s < 1e-6, "{t_s} vs {t_inf}");
+    // Moreau-Jean with h = 1e-3: bounces shorter than a step are absorbed into a
+    // sticking contact. It reaches rest (v = 0, status Stick) within a few flights of
+    // the accumulation point: the flights left after a bounce of speed v last
+    // 2 v/(g (1 - e)); bounces below ~g h are lost, so rest comes within ~4 h/(1-e) +
+    // 2 e^k t1 of t_inf, and certainly within 0.05 s for h = 1 ms. It ends in
+    // finitely many steps, all of them finite.
+    let h = 1e-3;
+    let mut rest_from = f64::NAN;
+    let mut impacts = 0;
+    let run = mj::simulate(&MjBall { e }, 0.0, [0.0, 1.0], [0.0, 0.0], 5.0, &MjOptions::midpoint(h), |s| {
+        let resting = s.impulse.status == ContactStatus::Stick && s.v1[1].abs() < 1e-12;
+        if resting && rest_from.is_nan() {
+            rest_from = s.t1;
+        } else if !resting && s.impulse.status != ContactStatus::Inactive && s.v0[1] < 0.0 {
+            impacts += 1;
+        }
+        if !resting && s.q1[1] > 0.0 {
+            rest_from = f64::NAN;
+        }
+    })
+    .unwrap();
+    assert!(run.v[1].abs() < 1e-12 && run.q[1] <= 0.0 && run.q[1] > -h * (2.0 * G).sqrt(), "{:?} {:?}", run.q, run.v);
+    assert!((rest_from - t_inf).abs() < 0.05, "rest from {rest_from} vs t_inf {t_inf}");
+    // log2(v1 / (g h)) = log2(4.43 / 0.0098) = 9 resolved bounces, give or take two
+    assert!((5..=14).contains(&impacts), "{impacts} impacts");
+}
