@@ -90,7 +90,11 @@ impl Cli {
         Ok(Context {
             quick: self.quick,
             g_mps2: self.g_mps2,
-            figures_root: if self.no_figures { None } else { Some(self.figures.clone()) },
+            figures_root: if self.no_figures {
+                None
+            } else {
+                Some(self.figures.clone())
+            },
         })
     }
 }
@@ -107,14 +111,23 @@ where
         Err(e) => {
             use clap::error::ErrorKind;
             return match e.kind() {
-                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+                ErrorKind::DisplayHelp
+                | ErrorKind::DisplayVersion
+                | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
                     let _ = write!(out, "{}", e.render());
-                    if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand { 2 } else { 0 }
+                    if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                        2
+                    } else {
+                        0
+                    }
                 }
                 _ => {
                     // One line: clap's first line names the flag and the value.
                     let text = e.render().to_string();
-                    let first = text.lines().find(|l| !l.trim().is_empty()).unwrap_or("error: bad arguments");
+                    let first = text
+                        .lines()
+                        .find(|l| !l.trim().is_empty())
+                        .unwrap_or("error: bad arguments");
                     let _ = writeln!(err, "{first} (see --help)");
                     2
                 }
@@ -179,7 +192,11 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
         writeln!(out, "{}", serde_json::Value::Array(arr))?;
     } else {
         writeln!(out, "== summary of verdicts ==")?;
-        writeln!(out, "{:<22} {:>6} {:>9} {:>7} {:>13} {:>6}", "chapter", "claims", "confirmed", "erratum", "approximation", "failed")?;
+        writeln!(
+            out,
+            "{:<22} {:>6} {:>9} {:>7} {:>13} {:>6}",
+            "chapter", "claims", "confirmed", "erratum", "approximation", "failed"
+        )?;
         for r in &reports {
             use crate::report::Verdict::*;
             writeln!(
@@ -191,7 +208,11 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
                 r.count(Erratum),
                 r.count(Approximation),
                 r.count(Failed),
-                if r.status.is_some() { "  (not built yet)" } else { "" }
+                if r.status.is_some() {
+                    "  (not built yet)"
+                } else {
+                    ""
+                }
             )?;
         }
     }

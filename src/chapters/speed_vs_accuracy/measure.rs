@@ -1,0 +1,99 @@
+//! Observables and timed runs: the block's steady drift by every method.
+//!
+//! The drift is the mean horizontal velocity `(x(t_b) - x(t_a)) / (t_b - t_a)` over
+//! whole drive periods after a transient. The event-driven runs read `x(t_a)` from the
+//! dense output of the segment that contains `t_a`; Moreau-Jean runs use a step that
+//! divides the period, so `t_a` and `t_b` are step boundaries.
+
+use super::block_scene::{BlockMode, BlockScene};
+use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment};
+use crate::numerics::timestepping::{self as mj, MjOptions};
+use crate::physics::plate::PlateMotion;
+use std::time::Instant;
+
+/// One run of a method: the observable, its cost and whether it completed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Measured {
+    /// The observable (m/s).
+    pub value: f64,
+    /// Right-hand-side evaluations (flow evaluations; one per Moreau-Jean step).
+    pub rhs_evals: u64,
+    /// Events handled (impacts, takeoffs, stick-slip switches), or contact steps for
+    /// Moreau-Jean.
+    pub events: u64,
+    /// Did the run reach its end time with a finite result?
+    pub completed: bool,
+}
+
+/// Records `x(t)` from the segment containing `t`.
+struct XAt {
+    t: f64,
+    x: Option<f64>,
+}
+
+impl Observer<BlockMode, 4> for XAt {
+    fn segment(&mut self, _m: BlockMode, s: &Segment<'_, 4>) {
+        if self.x.is_none() && s.t0 <= self.t && self.t <= s.t1 {
+            self.x = Some(s.eval(self.t)[0]);
+        }
+    }
+}
+
+/// The drift window: `(t_a, t_b)` after `transient` periods, `cycles` periods long (s).
+pub fn window(scene: &BlockScene, transient: u32, cycles: u32) -> (f64, f64) {
+    let t = scene.period_s();
+    (f64::from(transient) * t, f64::from(transient + cycles) * t)
+}
+
+/// The block's drift with the event-driven driver and `opts`.
+pub fn drift_hybrid(scene: &BlockScene, opts: &Options, (t_a, t_b): (f64, f64)) -> Measured {
+    let mut obs = XAt { t: t_a, x: None };
+    let y0 = [0.0, 0.0, scene.plate.z_m(0.0), scene.plate.vz_mps(0.0)];
+    let run = simulate(scene, BlockMode::Stick, 0.0, y0, t_b, &Options { record_events: false, ..*opts }, &mut obs);
+    let value = match obs.x {
+        Some(xa) => (run.y_end[0] - xa) / (t_b - t_a), // formula: v_drift = (x(t_b) - x(t_a)) / (t_b - t_a)
+        None => f64::NAN,
+    };
+    Measured {
+        value,
+        rhs_evals: run.stats.rhs_evals,
+        events: run.event_count as u64,
+        completed: run.outcome == Outcome::Completed && value.is_finite(),
+    }
+}
+
+/// The block's drift with Moreau-Jean, `steps_per_period` steps per drive period.
+pub fn drift_mj(scene: &BlockScene, steps_per_period: u32, (t_a, t_b): (f64, f64)) -> Measured {
+    let h = scene.period_s() / f64::from(steps_per_period);
+    let q0 = [0.0, scene.plate.z_m(0.0)];
+    let v0 = [0.0, scene.plate.vz_mps(0.0)];
+    let n_a = (t_a / h).round() as u64;
+    let mut k = 0u64;
+    let mut xa = f64::NAN;
+    let run = mj::simulate(scene, 0.0, q0, v0, t_b, &MjOptions::midpoint(h), |s| {
+        k += 1;
+        if k == n_a {
+            xa = s.q1[0];
+        }
+    });
+    match run {
+        Ok(r) => {
+            let value = if n_a == 0 { (r.q[0] - q0[0]) / (t_b - t_a) } else { (r.q[0] - xa) / (t_b - t_a) };
+            Measured { value, rhs_evals: r.stats.rhs_evals, events: r.stats.contact_steps, completed: value.is_finite() }
+        }
+        Err(_) => Measured { value: f64::NAN, rhs_evals: k, events: 0, completed: false },
+    }
+}
+
+/// Runs `f` `repeats` times; returns its (last) result and the minimum wall time (s).
+pub fn timed<R>(repeats: u32, mut f: impl FnMut() -> R) -> (R, f64) {
+    let mut best = f64::INFINITY;
+    let mut out = None;
+    for _ in 0..repeats.max(1) {
+        let start = Instant::now();
+        let r = f();
+        best = best.min(start.elapsed().as_secs_f64());
+        out = Some(r);
+    }
+    (out.expect("at least one repeat"), best)
+}

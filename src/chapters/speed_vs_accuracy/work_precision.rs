@@ -1,0 +1,149 @@
+//! Work-precision ladders: every method at a ladder of steps or tolerances, its error
+//! against a reference and its cost (right-hand-side evaluations, wall time).
+
+use super::measure::{timed, Measured};
+use crate::numerics::hybrid::Options;
+use crate::numerics::ode::{Method, StepControl};
+use serde_json::{json, Value};
+
+/// A solver configuration of the ladder.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Solver {
+    /// The event-driven driver with a fixed step `h_s` (Euler, RK4).
+    Fixed {
+        /// The method.
+        method: Method,
+        /// Locate events on the dense output?
+        locate: bool,
+        /// Step (s).
+        h_s: f64,
+    },
+    /// The event-driven driver with adaptive Dormand-Prince at `rtol = atol = tol`.
+    Adaptive {
+        /// Locate events on the dense output?
+        locate: bool,
+        /// Tolerance.
+        tol: f64,
+    },
+    /// Moreau-Jean with `steps_per_period` steps per drive period.
+    MoreauJean {
+        /// Steps per period.
+        steps_per_period: u32,
+        /// The resulting step (s).
+        h_s: f64,
+    },
+}
+
+impl Solver {
+    /// The method label of tables and JSON.
+    pub fn label(&self) -> String {
+        match self {
+            Solver::Fixed { method, locate, .. } => format!("{}-{}", method.name(), if *locate { "located" } else { "unlocated" }),
+            Solver::Adaptive { locate, .. } => format!("dopri5-{}", if *locate { "located" } else { "unlocated" }),
+            Solver::MoreauJean { .. } => "moreau-jean".to_string(),
+        }
+    }
+
+    /// The step (s) or tolerance of the configuration.
+    pub fn knob(&self) -> f64 {
+        match self {
+            Solver::Fixed { h_s, .. } | Solver::MoreauJean { h_s, .. } => *h_s,
+            Solver::Adaptive { tol, .. } => *tol,
+        }
+    }
+
+    /// Hybrid-driver options for the event-driven configurations; the guards are also
+    /// checked at `interior_checks` points inside each step.
+    pub fn options(&self, interior_checks: usize) -> Option<Options> {
+        let base = Options { interior_checks, record_events: false, ..Options::default() };
+        match *self {
+            Solver::Fixed { method, locate, h_s } => Some(Options { method, control: StepControl::Fixed { h_s }, locate_events: locate, ..base }),
+            Solver::Adaptive { locate, tol } => Some(Options { method: Method::Dopri5, control: StepControl::tol(tol, tol), locate_events: locate, ..base }),
+            Solver::MoreauJean { .. } => None,
+        }
+    }
+}
+
+/// The ladder for a problem with drive period `period_s`: fixed steps of
+/// `period / n` for `n` in `steps`, tolerances `tols`, Moreau-Jean at `mj_steps`.
+pub fn ladder(period_s: f64, steps: &[u32], tols: &[f64], mj_steps: &[u32]) -> Vec<Solver> {
+    let mut out = Vec::new();
+    for method in [Method::Euler, Method::Rk4] {
+        for locate in [true, false] {
+            for &n in steps {
+                out.push(Solver::Fixed { method, locate, h_s: period_s / f64::from(n) });
+            }
+        }
+    }
+    for locate in [true, false] {
+        for &tol in tols {
+            out.push(Solver::Adaptive { locate, tol });
+        }
+    }
+    for &n in mj_steps {
+        out.push(Solver::MoreauJean { steps_per_period: n, h_s: period_s / f64::from(n) });
+    }
+    out
+}
+
+/// One point of a work-precision diagram.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WpPoint {
+    /// Problem name (`block-drift`, `stick-speed`).
+    pub problem: &'static str,
+    /// The configuration.
+    pub solver: Solver,
+    /// The observable (m/s).
+    pub value: f64,
+    /// Relative error against the reference (NaN if the run failed).
+    pub error: f64,
+    /// Minimum wall time over the repeats (s).
+    pub wall_s: f64,
+    /// Right-hand-side evaluations.
+    pub rhs_evals: u64,
+    /// Did the run complete?
+    pub completed: bool,
+}
+
+impl WpPoint {
+    /// The JSON row of `work_precision`: {method, tolerance_or_step, error, wall_s, rhs_evals}
+    /// (plus the problem name).
+    pub fn json(&self) -> Value {
+        json!({
+            "problem": self.problem,
+            "method": self.solver.label(),
+            "tolerance_or_step": self.solver.knob(),
+            "error": if self.error.is_finite() { json!(self.error) } else { json!("failed") },
+            "wall_s": self.wall_s,
+            "rhs_evals": self.rhs_evals,
+        })
+    }
+}
+
+/// Runs every solver of `ladder` on `run` (repeated `repeats` times for the wall time)
+/// and measures the relative error against `reference`.
+pub fn measure(
+    problem: &'static str,
+    ladder: &[Solver],
+    reference: f64,
+    repeats: u32,
+    run: impl Fn(&Solver) -> Measured + Sync,
+) -> Vec<WpPoint> {
+    // Sequential on purpose: wall times of parallel runs would measure the contention.
+    ladder
+        .iter()
+        .map(|s| {
+            let (m, wall_s) = timed(repeats, || run(s));
+            let error = if m.completed { ((m.value - reference) / reference).abs() } else { f64::NAN }; // formula: relative error
+            WpPoint { problem, solver: *s, value: m.value, error, wall_s, rhs_evals: m.rhs_evals, completed: m.completed }
+        })
+        .collect()
+}
+
+/// The cheapest point (fewest rhs evaluations) of `label` whose error is below `target`.
+pub fn cheapest_below<'a>(points: &'a [WpPoint], label: &str, target: f64) -> Option<&'a WpPoint> {
+    points
+        .iter()
+        .filter(|p| p.solver.label() == label && p.completed && p.error <= target)
+        .min_by_key(|p| p.rhs_evals)
+}
