@@ -5,7 +5,7 @@ use crate::chapters::{self, Context, CHAPTERS};
 use crate::error::{self, WorkbookError};
 use crate::render;
 use crate::report::ChapterReport;
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use std::ffi::OsString;
 use std::io::Write;
 use std::path::PathBuf;
@@ -106,7 +106,10 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    let cli = match Cli::try_parse_from(args) {
+    let cli = match command()
+        .try_get_matches_from(args)
+        .and_then(|m| Cli::from_arg_matches(&m))
+    {
         Ok(c) => c,
         Err(e) => {
             use clap::error::ErrorKind;
@@ -141,6 +144,22 @@ where
             e.exit_code()
         }
     }
+}
+
+/// The clap command with negative numbers accepted as values everywhere, so that
+/// `--angle-deg -30` works as well as `--angle-deg=-30`.
+pub fn command() -> clap::Command {
+    fn allow_negative(cmd: clap::Command) -> clap::Command {
+        cmd.mut_args(|a| {
+            if a.get_action().takes_values() {
+                a.allow_negative_numbers(true)
+            } else {
+                a
+            }
+        })
+        .mut_subcommands(allow_negative)
+    }
+    allow_negative(Cli::command())
 }
 
 fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
@@ -228,11 +247,10 @@ impl From<std::fmt::Error> for WorkbookError {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::CommandFactory;
 
     #[test]
     fn clap_definition_is_consistent() {
-        Cli::command().debug_assert();
+        command().debug_assert();
     }
 
     #[test]

@@ -493,6 +493,6 @@ mod tests {
         assert_eq!(fmt_num(1.23456e-7), "1.235e-7");
         assert_eq!(fmt_num(-0.00001), "-1.000e-5");
         assert_eq!(fmt_num(1234.5678), "1235");
-        assert_eq!(fmt_num(3.14159), "3.142");
+        assert_eq!(fmt_num(1.23456), "1.235");
     }
 }

@@ -7,6 +7,10 @@
 //!
 //! State vectors are fixed-size arrays `[f64; N]`: no allocation in the stepping loop.
 
+// Index loops run over several arrays of the same length at once (y, k1..k7, r); they read
+// like the formulas they implement.
+#![allow(clippy::needless_range_loop)]
+
 /// A first-order system `y' = f(t, y)` of dimension `N`.
 pub trait OdeSystem<const N: usize> {
     /// The right-hand side `f(t, y)`.
