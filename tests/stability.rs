@@ -16,7 +16,9 @@
 use locomotion_workbook::numerics::events::Direction;
 use locomotion_workbook::numerics::hybrid::{simulate, HybridSystem, Options, Outcome, Transition};
 use locomotion_workbook::numerics::ode::{Integrator, Method, OdeError, StepControl};
-use locomotion_workbook::numerics::timestepping::{self as mj, ContactModel, ContactStatus, MjOptions};
+use locomotion_workbook::numerics::timestepping::{
+    self as mj, ContactModel, ContactStatus, MjOptions,
+};
 use std::f64::consts::TAU;
 
 const G: f64 = 9.81;
@@ -39,7 +41,8 @@ fn relax(t: f64, y: &[f64; 1]) -> [f64; 1] {
 fn relax_exact(t: f64) -> f64 {
     let wt = TAU * F_HZ * TAU_S;
     let d = 1.0 + wt * wt;
-    A_RAD * ((TAU * F_HZ * t).cos() + wt * (TAU * F_HZ * t).sin()) / d - A_RAD / d * (-t / TAU_S).exp()
+    A_RAD * ((TAU * F_HZ * t).cos() + wt * (TAU * F_HZ * t).sin()) / d
+        - A_RAD / d * (-t / TAU_S).exp()
 }
 
 fn relax_error(method: Method, control: StepControl, t_end: f64) -> Result<f64, OdeError> {
@@ -72,8 +75,12 @@ fn the_failure_is_stability_not_accuracy() {
     // Inside the stability interval (h = 1.5 tau for Euler, 2.5 tau for RK4) the same
     // fixed-step methods stay bounded: the error is the forcing's phase error, of order
     // the amplitude at most (0.1 rad), nowhere near the blow-up above.
-    assert!(relax_error(Method::Euler, StepControl::Fixed { h_s: 1.5 * TAU_S }, 1.0).unwrap() < A_RAD);
-    assert!(relax_error(Method::Rk4, StepControl::Fixed { h_s: 2.5 * TAU_S }, 1.0).unwrap() < A_RAD);
+    assert!(
+        relax_error(Method::Euler, StepControl::Fixed { h_s: 1.5 * TAU_S }, 1.0).unwrap() < A_RAD
+    );
+    assert!(
+        relax_error(Method::Rk4, StepControl::Fixed { h_s: 2.5 * TAU_S }, 1.0).unwrap() < A_RAD
+    );
 }
 
 // ---------------------------------------------------------------- events
@@ -106,11 +113,20 @@ impl HybridSystem<2> for Ball {
     fn direction(&self, _m: (), _i: usize) -> Direction {
         Direction::Falling
     }
-    fn on_event(&self, _m: (), _i: usize, _t: f64, y: &[f64; 2]) -> Transition<(), &'static str, 2> {
+    fn on_event(
+        &self,
+        _m: (),
+        _i: usize,
+        _t: f64,
+        y: &[f64; 2],
+    ) -> Transition<(), &'static str, 2> {
         if self.e == 0.0 {
             Transition::Stop("landed")
         } else {
-            Transition::To { mode: (), state: [0.0, -self.e * y[1]] }
+            Transition::To {
+                mode: (),
+                state: [0.0, -self.e * y[1]],
+            }
         }
     }
 }
@@ -136,13 +152,24 @@ impl HybridSystem<2> for Slider {
     fn direction(&self, _m: (), _i: usize) -> Direction {
         Direction::Falling
     }
-    fn on_event(&self, _m: (), _i: usize, _t: f64, _y: &[f64; 2]) -> Transition<(), &'static str, 2> {
+    fn on_event(
+        &self,
+        _m: (),
+        _i: usize,
+        _t: f64,
+        _y: &[f64; 2],
+    ) -> Transition<(), &'static str, 2> {
         Transition::Stop("stuck")
     }
 }
 
 fn fixed(method: Method, h: f64, locate: bool) -> Options {
-    Options { method, control: StepControl::Fixed { h_s: h }, locate_events: locate, ..Options::default() }
+    Options {
+        method,
+        control: StepControl::Fixed { h_s: h },
+        locate_events: locate,
+        ..Options::default()
+    }
 }
 
 #[test]
@@ -154,12 +181,32 @@ fn unlocated_impacts_are_late_by_up_to_a_step_located_ones_exact() {
     let exact = (2.0 / G).sqrt();
     let mut errs = Vec::new();
     for h in [1e-2, 1e-3, 1e-4] {
-        let run = simulate(&Ball { e: 0.0 }, (), 0.0, [1.0, 0.0], 2.0, &fixed(Method::Rk4, h, false), &mut ());
+        let run = simulate(
+            &Ball { e: 0.0 },
+            (),
+            0.0,
+            [1.0, 0.0],
+            2.0,
+            &fixed(Method::Rk4, h, false),
+            &mut (),
+        );
         let err = run.t_end_s - exact;
         assert!(err > 0.0 && err <= h * (1.0 + 1e-9), "h {h}: late by {err}");
         errs.push(err);
-        let run = simulate(&Ball { e: 0.0 }, (), 0.0, [1.0, 0.0], 2.0, &fixed(Method::Rk4, h, true), &mut ());
-        assert!((run.t_end_s - exact).abs() < 1e-12, "located: {}", run.t_end_s - exact);
+        let run = simulate(
+            &Ball { e: 0.0 },
+            (),
+            0.0,
+            [1.0, 0.0],
+            2.0,
+            &fixed(Method::Rk4, h, true),
+            &mut (),
+        );
+        assert!(
+            (run.t_end_s - exact).abs() < 1e-12,
+            "located: {}",
+            run.t_end_s - exact
+        );
     }
     assert!(errs[2] < errs[0] / 10.0, "{errs:?}");
 }
@@ -173,11 +220,31 @@ fn unlocated_stick_slip_switches_are_late_by_up_to_a_step() {
     let (v0, mu) = (1.0, 0.4);
     let exact = v0 / (mu * G);
     for h in [1e-2, 1e-3] {
-        let run = simulate(&Slider { mu }, (), 0.0, [0.0, v0], 2.0, &fixed(Method::Rk4, h, false), &mut ());
+        let run = simulate(
+            &Slider { mu },
+            (),
+            0.0,
+            [0.0, v0],
+            2.0,
+            &fixed(Method::Rk4, h, false),
+            &mut (),
+        );
         let late = run.t_end_s - exact;
         assert!(late > 0.0 && late <= h * (1.0 + 1e-9), "h {h}: {late}");
-        let run = simulate(&Slider { mu }, (), 0.0, [0.0, v0], 2.0, &fixed(Method::Rk4, h, true), &mut ());
-        assert!((run.t_end_s - exact).abs() < 1e-12, "located: {}", run.t_end_s - exact);
+        let run = simulate(
+            &Slider { mu },
+            (),
+            0.0,
+            [0.0, v0],
+            2.0,
+            &fixed(Method::Rk4, h, true),
+            &mut (),
+        );
+        assert!(
+            (run.t_end_s - exact).abs() < 1e-12,
+            "located: {}",
+            run.t_end_s - exact
+        );
         assert!((run.y_end[0] - v0 * v0 / (2.0 * mu * G)).abs() < 1e-12);
     }
 }
@@ -218,9 +285,22 @@ fn zeno_bouncing_stops_the_event_driver_and_moreau_jean_passes_to_rest() {
     let t1 = (2.0 / G).sqrt();
     let t_inf = t1 * (1.0 + e) / (1.0 - e);
     // Event-driven: infinitely many events before t_inf; the driver stops there.
-    let run = simulate(&Ball { e }, (), 0.0, [1.0, 0.0], 5.0, &Options::default(), &mut ());
-    let Outcome::Zeno { t_s, .. } = run.outcome else { panic!("expected Zeno, got {:?}", run.outcome) };
-    assert!(t_s <= t_inf + 1e-12 && t_inf - t_s < 1e-6, "{t_s} vs {t_inf}");
+    let run = simulate(
+        &Ball { e },
+        (),
+        0.0,
+        [1.0, 0.0],
+        5.0,
+        &Options::default(),
+        &mut (),
+    );
+    let Outcome::Zeno { t_s, .. } = run.outcome else {
+        panic!("expected Zeno, got {:?}", run.outcome)
+    };
+    assert!(
+        t_s <= t_inf + 1e-12 && t_inf - t_s < 1e-6,
+        "{t_s} vs {t_inf}"
+    );
     // Moreau-Jean with h = 1e-3: bounces shorter than a step are absorbed into a
     // sticking contact. It reaches rest (v = 0, status Stick) within a few flights of
     // the accumulation point: the flights left after a bounce of speed v last
@@ -230,20 +310,36 @@ fn zeno_bouncing_stops_the_event_driver_and_moreau_jean_passes_to_rest() {
     let h = 1e-3;
     let mut rest_from = f64::NAN;
     let mut impacts = 0;
-    let run = mj::simulate(&MjBall { e }, 0.0, [0.0, 1.0], [0.0, 0.0], 5.0, &MjOptions::midpoint(h), |s| {
-        let resting = s.impulse.status == ContactStatus::Stick && s.v1[1].abs() < 1e-12;
-        if resting && rest_from.is_nan() {
-            rest_from = s.t1;
-        } else if !resting && s.impulse.status != ContactStatus::Inactive && s.v0[1] < 0.0 {
-            impacts += 1;
-        }
-        if !resting && s.q1[1] > 0.0 {
-            rest_from = f64::NAN;
-        }
-    })
+    let run = mj::simulate(
+        &MjBall { e },
+        0.0,
+        [0.0, 1.0],
+        [0.0, 0.0],
+        5.0,
+        &MjOptions::midpoint(h),
+        |s| {
+            let resting = s.impulse.status == ContactStatus::Stick && s.v1[1].abs() < 1e-12;
+            if resting && rest_from.is_nan() {
+                rest_from = s.t1;
+            } else if !resting && s.impulse.status != ContactStatus::Inactive && s.v0[1] < 0.0 {
+                impacts += 1;
+            }
+            if !resting && s.q1[1] > 0.0 {
+                rest_from = f64::NAN;
+            }
+        },
+    )
     .unwrap();
-    assert!(run.v[1].abs() < 1e-12 && run.q[1] <= 0.0 && run.q[1] > -h * (2.0 * G).sqrt(), "{:?} {:?}", run.q, run.v);
-    assert!((rest_from - t_inf).abs() < 0.05, "rest from {rest_from} vs t_inf {t_inf}");
+    assert!(
+        run.v[1].abs() < 1e-12 && run.q[1] <= 0.0 && run.q[1] > -h * (2.0 * G).sqrt(),
+        "{:?} {:?}",
+        run.q,
+        run.v
+    );
+    assert!(
+        (rest_from - t_inf).abs() < 0.05,
+        "rest from {rest_from} vs t_inf {t_inf}"
+    );
     // log2(v1 / (g h)) = log2(4.43 / 0.0098) = 9 resolved bounces, give or take two
     assert!((5..=14).contains(&impacts), "{impacts} impacts");
 }

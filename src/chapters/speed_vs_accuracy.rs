@@ -54,7 +54,13 @@ impl Default for Args {
 /// Validated flags.
 fn validate(a: &Args) -> Result<()> {
     positive("--frequency-hz", a.frequency_hz, "Hz")?;
-    open_interval("--gamma", a.gamma, 1.0, 50.0, "dimensionless; flight needs Gamma > 1")?;
+    open_interval(
+        "--gamma",
+        a.gamma,
+        1.0,
+        50.0,
+        "dimensionless; flight needs Gamma > 1",
+    )?;
     open_interval("--mu", a.mu, 0.0, 2.0, "dimensionless")?;
     half_open("--bias", a.bias, 0.0, a.mu, "dimensionless, below --mu")?;
     open_interval("--restitution", a.restitution, 0.0, 1.0, "dimensionless")?;
@@ -64,7 +70,9 @@ fn validate(a: &Args) -> Result<()> {
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     validate(args)?;
-    let mut r = super::info("speed-vs-accuracy").expect("registered").report();
+    let mut r = super::info("speed-vs-accuracy")
+        .expect("registered")
+        .report();
     r.param("frequency_hz", args.frequency_hz);
     r.param("gamma", args.gamma);
     r.param("mu", args.mu);

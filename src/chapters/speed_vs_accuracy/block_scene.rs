@@ -56,7 +56,15 @@ impl BlockScene {
     pub fn new(frequency_hz: f64, gamma: f64, mu: f64, bias: f64, g: f64) -> Self {
         let omega = std::f64::consts::TAU * frequency_hz;
         let plate = Harmonic::sine(Axis::Z, gamma * g / (omega * omega), frequency_hz); // formula: delta = Gamma g / omega^2
-        BlockScene { plate, mu, bias, e: 0.0, g, stick_below_mps: 0.0, closed_form: false }
+        BlockScene {
+            plate,
+            mu,
+            bias,
+            e: 0.0,
+            g,
+            stick_below_mps: 0.0,
+            closed_form: false,
+        }
     }
 
     /// Drive period (s).
@@ -111,7 +119,12 @@ impl HybridSystem<4> for BlockScene {
             s => {
                 let sg = Self::sigma(s);
                 // formula: x'' = F/m - sigma mu (g + z_p'')
-                [y[1], f - sg * self.mu * self.normal(t), y[3], self.plate.az_mps2(t)]
+                [
+                    y[1],
+                    f - sg * self.mu * self.normal(t),
+                    y[3],
+                    self.plate.az_mps2(t),
+                ]
             }
         }
     }
@@ -124,7 +137,12 @@ impl HybridSystem<4> for BlockScene {
         let f = self.bias * self.g;
         Some(match mode {
             // formula: ballistic x = x0 + v0 s + F/(2m) s^2, z = z0 + w0 s - g s^2 / 2
-            BlockMode::Flight => [y0[0] + y0[1] * s + 0.5 * f * s * s, y0[1] + f * s, y0[2] + y0[3] * s - 0.5 * self.g * s * s, y0[3] - self.g * s],
+            BlockMode::Flight => [
+                y0[0] + y0[1] * s + 0.5 * f * s * s,
+                y0[1] + f * s,
+                y0[2] + y0[3] * s - 0.5 * self.g * s * s,
+                y0[3] - self.g * s,
+            ],
             BlockMode::Stick => self.on_plate(t, y0[0], 0.0),
             m => {
                 let sg = Self::sigma(m);
@@ -132,7 +150,8 @@ impl HybridSystem<4> for BlockScene {
                 // formula: vx = vx0 + (F/m - sigma mu g) s - sigma mu (z_p'(t) - z_p'(t0))
                 let vx = y0[1] + a * s - sg * self.mu * (p.vz_mps(t) - p.vz_mps(t0));
                 // formula: x = x0 + vx0 s + (F/m - sigma mu g) s^2/2 - sigma mu (z_p(t) - z_p(t0) - z_p'(t0) s)
-                let x = y0[0] + y0[1] * s + 0.5 * a * s * s - sg * self.mu * (p.z_m(t) - p.z_m(t0) - p.vz_mps(t0) * s);
+                let x = y0[0] + y0[1] * s + 0.5 * a * s * s
+                    - sg * self.mu * (p.z_m(t) - p.z_m(t0) - p.vz_mps(t0) * s);
                 self.on_plate(t, x, vx)
             }
         })
@@ -150,7 +169,7 @@ impl HybridSystem<4> for BlockScene {
             (BlockMode::Flight, _) => y[2] - self.plate.z_m(t), // gap
             (_, 0) => self.normal(t),                           // takeoff: N/m falls to 0
             (BlockMode::Stick, _) => self.mu * self.normal(t) - self.bias.abs() * self.g, // slip: mu N falls to |F|
-            (m, _) => Self::sigma(m) * y[1],                    // slide stops: sigma x' falls to 0
+            (m, _) => Self::sigma(m) * y[1], // slide stops: sigma x' falls to 0
         }
     }
 
@@ -158,25 +177,48 @@ impl HybridSystem<4> for BlockScene {
         Direction::Falling
     }
 
-    fn on_event(&self, mode: BlockMode, i: usize, t: f64, y: &[f64; 4]) -> Transition<BlockMode, (), 4> {
+    fn on_event(
+        &self,
+        mode: BlockMode,
+        i: usize,
+        t: f64,
+        y: &[f64; 4],
+    ) -> Transition<BlockMode, (), 4> {
         let next = match (mode, i) {
             (BlockMode::Flight, _) => {
                 let u = y[3] - self.plate.vz_mps(t); // relative normal velocity (< 0)
                 let pn = (1.0 + self.e) * (-u).max(0.0); // formula: P_n/m = (1 + e)(z_p' - z')
                 let slip = self.mu * pn; // formula: |dP_t| <= mu P_n
-                let vx = if y[1].abs() <= slip { 0.0 } else { y[1] - y[1].signum() * slip };
+                let vx = if y[1].abs() <= slip {
+                    0.0
+                } else {
+                    y[1] - y[1].signum() * slip
+                };
                 let rebound = -self.e * u; // formula: u+ = -e u-
                 if rebound > self.stick_below_mps || self.normal(t) <= 0.0 {
                     let z = self.plate.z_m(t);
-                    return Transition::To { mode: BlockMode::Flight, state: [y[0], vx, z, self.plate.vz_mps(t) + rebound] };
+                    return Transition::To {
+                        mode: BlockMode::Flight,
+                        state: [y[0], vx, z, self.plate.vz_mps(t) + rebound],
+                    };
                 }
                 (self.contact_mode(t, vx), vx)
             }
             (_, 0) => (BlockMode::Flight, y[1]),
-            (BlockMode::Stick, _) => (if self.bias >= 0.0 { BlockMode::SlidePos } else { BlockMode::SlideNeg }, 0.0),
+            (BlockMode::Stick, _) => (
+                if self.bias >= 0.0 {
+                    BlockMode::SlidePos
+                } else {
+                    BlockMode::SlideNeg
+                },
+                0.0,
+            ),
             (_, _) => (self.contact_mode(t, 0.0), 0.0),
         };
-        Transition::To { mode: next.0, state: self.on_plate(t, y[0], next.1) }
+        Transition::To {
+            mode: next.0,
+            state: self.on_plate(t, y[0], next.1),
+        }
     }
 
     fn max_step(&self, mode: BlockMode, t: f64, y: &[f64; 4]) -> f64 {

@@ -46,13 +46,20 @@ impl Relaxation {
         let wt = self.omega_rad_s * self.tau_s;
         let d = 1.0 + wt * wt;
         // formula: theta = a (cos wt + w tau sin wt)/(1 + w^2 tau^2) - a e^(-t/tau)/(1 + w^2 tau^2)
-        Self::A * ((self.omega_rad_s * t).cos() + wt * (self.omega_rad_s * t).sin()) / d - Self::A / d * (-t / self.tau_s).exp()
+        Self::A * ((self.omega_rad_s * t).cos() + wt * (self.omega_rad_s * t).sin()) / d
+            - Self::A / d * (-t / self.tau_s).exp()
     }
 
     /// The error at `t_end` of `method` with `control`, or the integrator's error.
     pub fn error(&self, method: Method, control: StepControl, t_end: f64) -> Result<f64, OdeError> {
         let mut integ = Integrator::new(method, control);
-        let y = integ.integrate(&|t: f64, y: &[f64; 1]| self.rhs(t, y), 0.0, [0.0], t_end, |_| {})?;
+        let y = integ.integrate(
+            &|t: f64, y: &[f64; 1]| self.rhs(t, y),
+            0.0,
+            [0.0],
+            t_end,
+            |_| {},
+        )?;
         let e = (y[0] - self.exact(t_end)).abs();
         if e.is_finite() {
             Ok(e)
@@ -76,14 +83,28 @@ pub struct StiffOutcome {
 /// Fixed steps of a tenth of the drive period on the relaxation with `tau_s`, for
 /// `duration_s`; DP5 at 1e-8.
 pub fn stiff(tau_s: f64, frequency_hz: f64, duration_s: f64) -> StiffOutcome {
-    let r = Relaxation { tau_s, omega_rad_s: std::f64::consts::TAU * frequency_hz };
+    let r = Relaxation {
+        tau_s,
+        omega_rad_s: std::f64::consts::TAU * frequency_hz,
+    };
     let h = 1.0 / (10.0 * frequency_hz);
     let fixed = [Method::Euler, Method::Rk4]
         .into_iter()
-        .map(|m| (m, r.error(m, StepControl::Fixed { h_s: h }, duration_s).ok()))
+        .map(|m| {
+            (
+                m,
+                r.error(m, StepControl::Fixed { h_s: h }, duration_s).ok(),
+            )
+        })
         .collect();
-    let dopri5_error = r.error(Method::Dopri5, StepControl::tol(1e-8, 1e-8), duration_s).unwrap_or(f64::NAN);
-    StiffOutcome { fixed, dopri5_error, h_over_tau: h / tau_s }
+    let dopri5_error = r
+        .error(Method::Dopri5, StepControl::tol(1e-8, 1e-8), duration_s)
+        .unwrap_or(f64::NAN);
+    StiffOutcome {
+        fixed,
+        dopri5_error,
+        h_over_tau: h / tau_s,
+    }
 }
 
 /// Result of the Zeno scene.
@@ -104,11 +125,33 @@ pub struct ZenoOutcome {
 /// The bouncing block with restitution `e` on the plate: event-driven without and
 /// with the sticking transition (rebounds slower than 0.1 mm/s end in contact), and
 /// Moreau-Jean, over `cycles` periods after `transient`.
-pub fn zeno(scene: &BlockScene, e: f64, transient: u32, cycles: u32, mj_steps_per_period: u32) -> ZenoOutcome {
-    let mut s = BlockScene { e, closed_form: true, stick_below_mps: 0.0, ..*scene };
+pub fn zeno(
+    scene: &BlockScene,
+    e: f64,
+    transient: u32,
+    cycles: u32,
+    mj_steps_per_period: u32,
+) -> ZenoOutcome {
+    let mut s = BlockScene {
+        e,
+        closed_form: true,
+        stick_below_mps: 0.0,
+        ..*scene
+    };
     let w = window(&s, transient, cycles);
     let y0 = [0.0, 0.0, s.plate.z_m(0.0), s.plate.vz_mps(0.0)];
-    let run = simulate(&s, BlockMode::Stick, 0.0, y0, w.1, &Options { record_events: false, ..Options::default() }, &mut ());
+    let run = simulate(
+        &s,
+        BlockMode::Stick,
+        0.0,
+        y0,
+        w.1,
+        &Options {
+            record_events: false,
+            ..Options::default()
+        },
+        &mut (),
+    );
     let zeno_at_s = match run.outcome {
         Outcome::Zeno { t_s, .. } => Some(t_s),
         _ => None,
@@ -119,7 +162,11 @@ pub fn zeno(scene: &BlockScene, e: f64, transient: u32, cycles: u32, mj_steps_pe
     ZenoOutcome {
         zeno_at_s,
         events: run.event_count,
-        drift_sticking_mps: if sticking.completed { sticking.value } else { f64::NAN },
+        drift_sticking_mps: if sticking.completed {
+            sticking.value
+        } else {
+            f64::NAN
+        },
         drift_mj_mps: if mj.completed { mj.value } else { f64::NAN },
         mj_steps_per_period,
     }

@@ -49,7 +49,18 @@ pub fn window(scene: &BlockScene, transient: u32, cycles: u32) -> (f64, f64) {
 pub fn drift_hybrid(scene: &BlockScene, opts: &Options, (t_a, t_b): (f64, f64)) -> Measured {
     let mut obs = XAt { t: t_a, x: None };
     let y0 = [0.0, 0.0, scene.plate.z_m(0.0), scene.plate.vz_mps(0.0)];
-    let run = simulate(scene, BlockMode::Stick, 0.0, y0, t_b, &Options { record_events: false, ..*opts }, &mut obs);
+    let run = simulate(
+        scene,
+        BlockMode::Stick,
+        0.0,
+        y0,
+        t_b,
+        &Options {
+            record_events: false,
+            ..*opts
+        },
+        &mut obs,
+    );
     let value = match obs.x {
         Some(xa) => (run.y_end[0] - xa) / (t_b - t_a), // formula: v_drift = (x(t_b) - x(t_a)) / (t_b - t_a)
         None => f64::NAN,
@@ -78,10 +89,24 @@ pub fn drift_mj(scene: &BlockScene, steps_per_period: u32, (t_a, t_b): (f64, f64
     });
     match run {
         Ok(r) => {
-            let value = if n_a == 0 { (r.q[0] - q0[0]) / (t_b - t_a) } else { (r.q[0] - xa) / (t_b - t_a) };
-            Measured { value, rhs_evals: r.stats.rhs_evals, events: r.stats.contact_steps, completed: value.is_finite() }
+            let value = if n_a == 0 {
+                (r.q[0] - q0[0]) / (t_b - t_a)
+            } else {
+                (r.q[0] - xa) / (t_b - t_a)
+            };
+            Measured {
+                value,
+                rhs_evals: r.stats.rhs_evals,
+                events: r.stats.contact_steps,
+                completed: value.is_finite(),
+            }
         }
-        Err(_) => Measured { value: f64::NAN, rhs_evals: k, events: 0, completed: false },
+        Err(_) => Measured {
+            value: f64::NAN,
+            rhs_evals: k,
+            events: 0,
+            completed: false,
+        },
     }
 }
 

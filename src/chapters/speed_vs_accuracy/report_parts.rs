@@ -62,7 +62,10 @@ pub fn observed_order(points: &[WpPoint], label: &str, floor: f64) -> f64 {
     if pts.len() < 2 {
         return f64::NAN;
     }
-    let (mx, my) = (pts.iter().map(|p| p.0).sum::<f64>() / n, pts.iter().map(|p| p.1).sum::<f64>() / n);
+    let (mx, my) = (
+        pts.iter().map(|p| p.0).sum::<f64>() / n,
+        pts.iter().map(|p| p.1).sum::<f64>() / n,
+    );
     let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
     let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
     sxy / sxx // formula: order = cov(ln h, ln err) / var(ln h)
@@ -86,13 +89,29 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     let win = window(&scene, plan.transient, plan.cycles);
 
     // ---- the reference and its convergence study
-    let exact_scene = BlockScene { closed_form: true, ..scene };
+    let exact_scene = BlockScene {
+        closed_form: true,
+        ..scene
+    };
     let reference = drift_hybrid(&exact_scene, &Options::default(), win);
-    let dp = |tol: f64| drift_hybrid(&scene, &Options { control: StepControl::tol(tol, tol), ..Options::default() }, win).value;
+    let dp = |tol: f64| {
+        drift_hybrid(
+            &scene,
+            &Options {
+                control: StepControl::tol(tol, tol),
+                ..Options::default()
+            },
+            win,
+        )
+        .value
+    };
     let (d10, d11, d12) = (dp(1e-10), dp(1e-11), dp(1e-12));
     let rel = |v: f64| ((v - reference.value) / reference.value).abs();
     r.result("block_drift_mps", reference.value);
-    r.result("block_drift_reference_check", json!({"dopri5_1e-10": rel(d10), "dopri5_1e-11": rel(d11), "dopri5_1e-12": rel(d12)}));
+    r.result(
+        "block_drift_reference_check",
+        json!({"dopri5_1e-10": rel(d10), "dopri5_1e-11": rel(d11), "dopri5_1e-12": rel(d12)}),
+    );
     // DP5 at 1e-12 over <= 50 periods with events located to a few ulps: its relative
     // error on the drift is ~1e-10 (measured: 1e-11 .. 1e-10); 1e-8 leaves room for
     // the scene's flags and still tests far beyond any method of the ladder.
@@ -114,15 +133,27 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
 
     // ---- the work-precision ladder
     let solvers = ladder(period, &plan.steps, &plan.tols, &plan.mj_steps);
-    let points = measure("block-drift", &solvers, reference.value, plan.repeats, |s| match s {
-        Solver::MoreauJean { steps_per_period, .. } => super::measure::drift_mj(&scene, *steps_per_period, win),
-        other => drift_hybrid(&scene, &other.options(0).expect("hybrid"), win),
-    });
+    let points = measure(
+        "block-drift",
+        &solvers,
+        reference.value,
+        plan.repeats,
+        |s| match s {
+            Solver::MoreauJean {
+                steps_per_period, ..
+            } => super::measure::drift_mj(&scene, *steps_per_period, win),
+            other => drift_hybrid(&scene, &other.options(0).expect("hybrid"), win),
+        },
+    );
     // Observed orders: least-squares slopes over the asymptotic range h <= T/320 (at
     // coarser steps a guard seen one step late or a takeoff missed inside a step adds an
     // error that does not shrink smoothly), above each method's round-off floor.
     let h_asym = period / 320.0 * (1.0 + 1e-9);
-    let asym: Vec<WpPoint> = points.iter().filter(|p| p.solver.knob() <= h_asym).cloned().collect();
+    let asym: Vec<WpPoint> = points
+        .iter()
+        .filter(|p| p.solver.knob() <= h_asym)
+        .cloned()
+        .collect();
     let mut order_json = serde_json::Map::new();
     for (label, expected, tol, floor, pts) in [
         // Euler: order 1 over h <= T/320; +-0.3 because the phase of the events inside
@@ -160,9 +191,17 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         Verdict::Confirmed,
     ));
     r.result("observed_orders", Value::Object(order_json));
-    let err_of = |label: &str, knob: f64| points.iter().find(|p| p.solver.label() == label && p.solver.knob() == knob).map_or(f64::NAN, |p| p.error);
+    let err_of = |label: &str, knob: f64| {
+        points
+            .iter()
+            .find(|p| p.solver.label() == label && p.solver.knob() == knob)
+            .map_or(f64::NAN, |p| p.error)
+    };
     let tight = *plan.tols.last().expect("tolerances");
-    let (loc, unloc) = (err_of("dopri5-located", tight), err_of("dopri5-unlocated", tight));
+    let (loc, unloc) = (
+        err_of("dopri5-located", tight),
+        err_of("dopri5-unlocated", tight),
+    );
     r.claim(Claim::exact(
         "unlocated-events-stall",
         "numerics",
@@ -171,11 +210,26 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         unloc > 100.0 * loc.max(1e-15),
     ));
     let mut cheapest = serde_json::Map::new();
-    for label in ["euler-located", "euler-unlocated", "rk4-located", "rk4-unlocated", "dopri5-located", "dopri5-unlocated", "moreau-jean"] {
-        cheapest.insert(label.to_string(), cheapest_below(&points, label, 1e-6).map_or(json!("not reached"), |p| json!(p.rhs_evals)));
+    for label in [
+        "euler-located",
+        "euler-unlocated",
+        "rk4-located",
+        "rk4-unlocated",
+        "dopri5-located",
+        "dopri5-unlocated",
+        "moreau-jean",
+    ] {
+        cheapest.insert(
+            label.to_string(),
+            cheapest_below(&points, label, 1e-6)
+                .map_or(json!("not reached"), |p| json!(p.rhs_evals)),
+        );
     }
     r.result("rhs_evals_to_reach_1e-6", Value::Object(cheapest));
-    r.result("work_precision", Value::Array(points.iter().map(WpPoint::json).collect()));
+    r.result(
+        "work_precision",
+        Value::Array(points.iter().map(WpPoint::json).collect()),
+    );
 
     // ---- failures
     let mut fails: Vec<Failure> = Vec::new();
@@ -185,7 +239,10 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         if blew {
             fails.push(Failure {
                 method: format!("{}-fixed", m.name()),
-                scene: format!("stick flight relaxation, tau = gamma/k = 1 ms, h = T/10 = {:.1} tau", st.h_over_tau),
+                scene: format!(
+                    "stick flight relaxation, tau = gamma/k = 1 ms, h = T/10 = {:.1} tau",
+                    st.h_over_tau
+                ),
                 symptom: match e {
                     None => "blew up: state overflowed to non-finite".into(),
                     Some(e) => format!("blew up: error {} rad", fmt_num(*e)),
@@ -193,7 +250,8 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
             });
         }
     }
-    let stiff_ok = st.fixed.iter().all(|(_, e)| e.is_none_or(|e| e > 1e3)) && st.dopri5_error < 1e-6;
+    let stiff_ok =
+        st.fixed.iter().all(|(_, e)| e.is_none_or(|e| e > 1e3)) && st.dopri5_error < 1e-6;
     r.claim(Claim::exact(
         "stiff-relaxation-explicit-blowup",
         "4 (C.3)",
@@ -203,12 +261,19 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     ));
     let coarse = period / f64::from(plan.steps[0]);
     for m in ["euler", "rk4"] {
-        let (l, u) = (err_of(&format!("{m}-located"), coarse), err_of(&format!("{m}-unlocated"), coarse));
+        let (l, u) = (
+            err_of(&format!("{m}-located"), coarse),
+            err_of(&format!("{m}-unlocated"), coarse),
+        );
         if u > 2.0 * l {
             fails.push(Failure {
                 method: format!("{m}-unlocated"),
                 scene: "block drift, h = T/20".into(),
-                symptom: format!("events late by up to a step: drift error {} (located: {})", fmt_err(u), fmt_err(l)),
+                symptom: format!(
+                    "events late by up to a step: drift error {} (located: {})",
+                    fmt_err(u),
+                    fmt_err(l)
+                ),
             });
         }
     }
@@ -216,18 +281,32 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         fails.push(Failure {
             method: "dopri5-unlocated".into(),
             scene: format!("block drift, tol = {tight:e}"),
-            symptom: format!("error stalls at {} whatever the tolerance (located: {})", fmt_err(unloc), fmt_err(loc)),
+            symptom: format!(
+                "error stalls at {} whatever the tolerance (located: {})",
+                fmt_err(unloc),
+                fmt_err(loc)
+            ),
         });
     }
     // Zeno: Gamma = 3 (period-one takeoff with long chattering landings)
     let zeno_scene = BlockScene::new(args.frequency_hz, 3.0, args.mu, args.bias, g);
     let mj_n = if ctx.quick { 1000 } else { 4000 };
-    let z = zeno(&zeno_scene, args.restitution, plan.transient, plan.cycles, mj_n);
+    let z = zeno(
+        &zeno_scene,
+        args.restitution,
+        plan.transient,
+        plan.cycles,
+        mj_n,
+    );
     if let Some(t) = z.zeno_at_s {
         fails.push(Failure {
             method: "event-driven (any integrator)".into(),
             scene: format!("bouncing block, e = {}, Gamma = 3", args.restitution),
-            symptom: format!("Zeno: impacts accumulate, run stopped at t = {} s after {} events", fmt_num(t), z.events),
+            symptom: format!(
+                "Zeno: impacts accumulate, run stopped at t = {} s after {} events",
+                fmt_num(t),
+                z.events
+            ),
         });
     }
     r.claim(Claim::exact(
@@ -252,36 +331,65 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     fails.push(Failure {
         method: "moreau-jean".into(),
         scene: "block drift, h = T/20".into(),
-        symptom: format!("first order only: drift error {} at h = T/20 (rk4-located: {})", fmt_err(mj20), fmt_err(err_of("rk4-located", coarse))),
+        symptom: format!(
+            "first order only: drift error {} at h = T/20 (rk4-located: {})",
+            fmt_err(mj20),
+            fmt_err(err_of("rk4-located", coarse))
+        ),
     });
-    r.result("failures", Value::Array(fails.iter().map(Failure::json).collect()));
+    r.result(
+        "failures",
+        Value::Array(fails.iter().map(Failure::json).collect()),
+    );
 
     // ---- economy
     let (law, map) = (law_drift(&exact_scene), flight_map_drift(&exact_scene));
-    let (_, wall_exact) = timed(plan.repeats.max(3), || drift_hybrid(&exact_scene, &Options::default(), win));
+    let (_, wall_exact) = timed(plan.repeats.max(3), || {
+        drift_hybrid(&exact_scene, &Options::default(), win)
+    });
     let (_, wall_map) = timed(plan.repeats.max(3) * 100, || flight_map_drift(&exact_scene));
-    let map_err = map.map_or(f64::NAN, |m| ((m - reference.value) / reference.value).abs());
+    let map_err = map.map_or(f64::NAN, |m| {
+        ((m - reference.value) / reference.value).abs()
+    });
     let law_err = ((law - reference.value) / reference.value).abs();
-    r.result("economy", json!({
-        "flight_map_error": map_err,
-        "mu_eff_law_error": law_err,
-        "cost_ratio_exact_over_flight_map": wall_exact / wall_map.max(1e-9),
-    }));
+    r.result(
+        "economy",
+        json!({
+            "flight_map_error": map_err,
+            "mu_eff_law_error": law_err,
+            "cost_ratio_exact_over_flight_map": wall_exact / wall_map.max(1e-9),
+        }),
+    );
     let sweep: Vec<(f64, f64, Option<f64>, f64)> = plan
         .gammas
         .iter()
         .map(|&gm| {
-            let s = BlockScene { closed_form: true, ..BlockScene::new(args.frequency_hz, gm, args.mu, args.bias, g) };
-            let ex = drift_hybrid(&s, &Options::default(), window(&s, plan.transient, plan.cycles)).value;
+            let s = BlockScene {
+                closed_form: true,
+                ..BlockScene::new(args.frequency_hz, gm, args.mu, args.bias, g)
+            };
+            let ex = drift_hybrid(
+                &s,
+                &Options::default(),
+                window(&s, plan.transient, plan.cycles),
+            )
+            .value;
             (gm, ex, flight_map_drift(&s), law_drift(&s))
         })
         .collect();
     let within = |f: &dyn Fn(&(f64, f64, Option<f64>, f64)) -> Option<f64>| -> Vec<f64> {
-        sweep.iter().filter(|row| f(row).is_some_and(|m| ((m - row.1) / row.1).abs() < 0.01)).map(|row| row.0).collect()
+        sweep
+            .iter()
+            .filter(|row| f(row).is_some_and(|m| ((m - row.1) / row.1).abs() < 0.01))
+            .map(|row| row.0)
+            .collect()
     };
     let map_ok = within(&|row| row.2);
     let law_ok = within(&|row| Some(row.3));
-    r.result("economy_within_1pct_gammas", json!({"flight_map": map_ok, "mu_eff_law": law_ok, "of": plan.gammas.len()}));
+    r.result(
+        "economy_within_1pct_gammas",
+        json!({"flight_map": map_ok, "mu_eff_law": law_ok, "of": plan.gammas.len()}),
+    );
     // The flight map neglects the slip before takeoff, of relative size ~ b/mu
     // (bias 0.02, mu 0.4: 5 % of the contact-phase slip, well under 1 % of the drift).
     r.claim(Claim::judged(

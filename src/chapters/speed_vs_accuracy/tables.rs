@@ -8,10 +8,23 @@ use crate::report::{fmt_num, ChapterReport};
 use std::fmt::Write as _;
 
 /// Adds the tables `work_precision`, `failures`, `economy` and `results_stable`.
-pub fn tables(r: &mut ChapterReport, points: &[WpPoint], fails: &[Failure], sweep: &[(f64, f64, Option<f64>, f64)]) {
+pub fn tables(
+    r: &mut ChapterReport,
+    points: &[WpPoint],
+    fails: &[Failure],
+    sweep: &[(f64, f64, Option<f64>, f64)],
+) {
     let mut t = String::from("| problem | method | step (s) or tolerance | relative error | rhs evaluations |\n|---|---|---|---|---|\n");
     for p in points {
-        let _ = writeln!(t, "| {} | {} | {:.3e} | {} | {} |", p.problem, p.solver.label(), p.solver.knob(), fmt_err(p.error), p.rhs_evals);
+        let _ = writeln!(
+            t,
+            "| {} | {} | {:.3e} | {} | {} |",
+            p.problem,
+            p.solver.label(),
+            p.solver.knob(),
+            fmt_err(p.error),
+            p.rhs_evals
+        );
     }
     r.table("work_precision", t);
     let mut t = String::from("| method | scene | symptom |\n|---|---|---|\n");
@@ -23,7 +36,14 @@ pub fn tables(r: &mut ChapterReport, points: &[WpPoint], fails: &[Failure], swee
     let stride = (sweep.len() / 12).max(1);
     for row in sweep.iter().step_by(stride) {
         let rel = |m: f64| format!("{:+.2} %", 100.0 * (m - row.1) / row.1);
-        let _ = writeln!(t, "| {} | {} | {} | {} |", fmt_num(row.0), fmt_num(row.1), row.2.map_or("no sticking orbit".into(), rel), rel(row.3));
+        let _ = writeln!(
+            t,
+            "| {} | {} | {} | {} |",
+            fmt_num(row.0),
+            fmt_num(row.1),
+            row.2.map_or("no sticking orbit".into(), rel),
+            rel(row.3)
+        );
     }
     r.table("economy", t);
     let mut t = String::from("| result | value |\n|---|---|\n");

@@ -38,8 +38,14 @@ impl Solver {
     /// The method label of tables and JSON.
     pub fn label(&self) -> String {
         match self {
-            Solver::Fixed { method, locate, .. } => format!("{}-{}", method.name(), if *locate { "located" } else { "unlocated" }),
-            Solver::Adaptive { locate, .. } => format!("dopri5-{}", if *locate { "located" } else { "unlocated" }),
+            Solver::Fixed { method, locate, .. } => format!(
+                "{}-{}",
+                method.name(),
+                if *locate { "located" } else { "unlocated" }
+            ),
+            Solver::Adaptive { locate, .. } => {
+                format!("dopri5-{}", if *locate { "located" } else { "unlocated" })
+            }
             Solver::MoreauJean { .. } => "moreau-jean".to_string(),
         }
     }
@@ -55,10 +61,28 @@ impl Solver {
     /// Hybrid-driver options for the event-driven configurations; the guards are also
     /// checked at `interior_checks` points inside each step.
     pub fn options(&self, interior_checks: usize) -> Option<Options> {
-        let base = Options { interior_checks, record_events: false, ..Options::default() };
+        let base = Options {
+            interior_checks,
+            record_events: false,
+            ..Options::default()
+        };
         match *self {
-            Solver::Fixed { method, locate, h_s } => Some(Options { method, control: StepControl::Fixed { h_s }, locate_events: locate, ..base }),
-            Solver::Adaptive { locate, tol } => Some(Options { method: Method::Dopri5, control: StepControl::tol(tol, tol), locate_events: locate, ..base }),
+            Solver::Fixed {
+                method,
+                locate,
+                h_s,
+            } => Some(Options {
+                method,
+                control: StepControl::Fixed { h_s },
+                locate_events: locate,
+                ..base
+            }),
+            Solver::Adaptive { locate, tol } => Some(Options {
+                method: Method::Dopri5,
+                control: StepControl::tol(tol, tol),
+                locate_events: locate,
+                ..base
+            }),
             Solver::MoreauJean { .. } => None,
         }
     }
@@ -71,7 +95,11 @@ pub fn ladder(period_s: f64, steps: &[u32], tols: &[f64], mj_steps: &[u32]) -> V
     for method in [Method::Euler, Method::Rk4] {
         for locate in [true, false] {
             for &n in steps {
-                out.push(Solver::Fixed { method, locate, h_s: period_s / f64::from(n) });
+                out.push(Solver::Fixed {
+                    method,
+                    locate,
+                    h_s: period_s / f64::from(n),
+                });
             }
         }
     }
@@ -81,7 +109,10 @@ pub fn ladder(period_s: f64, steps: &[u32], tols: &[f64], mj_steps: &[u32]) -> V
         }
     }
     for &n in mj_steps {
-        out.push(Solver::MoreauJean { steps_per_period: n, h_s: period_s / f64::from(n) });
+        out.push(Solver::MoreauJean {
+            steps_per_period: n,
+            h_s: period_s / f64::from(n),
+        });
     }
     out
 }
@@ -134,8 +165,20 @@ pub fn measure(
         .iter()
         .map(|s| {
             let (m, wall_s) = timed(repeats, || run(s));
-            let error = if m.completed { ((m.value - reference) / reference).abs() } else { f64::NAN }; // formula: relative error
-            WpPoint { problem, solver: *s, value: m.value, error, wall_s, rhs_evals: m.rhs_evals, completed: m.completed }
+            let error = if m.completed {
+                ((m.value - reference) / reference).abs()
+            } else {
+                f64::NAN
+            }; // formula: relative error
+            WpPoint {
+                problem,
+                solver: *s,
+                value: m.value,
+                error,
+                wall_s,
+                rhs_evals: m.rhs_evals,
+                completed: m.completed,
+            }
         })
         .collect()
 }

@@ -1,0 +1,238 @@
+//! Chapter `speed-vs-accuracy`: the benchmark scene of the block on a vertically
+//! vibrating plate (section 3.1.2) and the chapter's contract.
+//!
+//! Physics checked here, each against an independent computation:
+//! - the block's drift by the closed-form hybrid model equals the integrated one
+//!   (Dormand-Prince at 1e-12) and the Moreau-Jean time-stepping limit (second and third
+//!   methods, the latter converging at first order or better);
+//! - the impact law: the normal impulse `(1 + e) |u|` removes up to `mu` times it of
+//!   horizontal speed (Coulomb's law for impulses), by hand;
+//! - the flight-map law approaches the exact drift as the bias b -> 0 (its neglected
+//!   slip before takeoff scales with b);
+//! - the chapter's JSON keys, verdicts, failures and bad input per flag.
+
+use locomotion_workbook::chapters::speed_vs_accuracy::block_scene::{BlockMode, BlockScene};
+use locomotion_workbook::chapters::speed_vs_accuracy::economy::flight_map_drift;
+use locomotion_workbook::chapters::speed_vs_accuracy::measure::{drift_hybrid, drift_mj, window};
+use locomotion_workbook::cli::run_cli;
+use locomotion_workbook::numerics::hybrid::{HybridSystem, Options, Transition};
+use locomotion_workbook::numerics::ode::StepControl;
+use locomotion_workbook::physics::plate::PlateMotion;
+use serde_json::Value;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let (mut out, mut err) = (Vec::new(), Vec::new());
+    let mut full = vec!["workbook", "speed-vs-accuracy"];
+    full.extend_from_slice(args);
+    let code = run_cli(full, &mut out, &mut err);
+    (
+        code,
+        String::from_utf8(out).unwrap(),
+        String::from_utf8(err).unwrap(),
+    )
+}
+
+fn scene() -> BlockScene {
+    BlockScene::new(30.0, 2.5, 0.4, 0.02, 9.81)
+}
+
+#[test]
+fn closed_form_and_integrated_hybrid_models_give_the_same_drift() {
+    // Two implementations of every mode (closed forms vs DP5 at 1e-12 on the flows):
+    // over 15 periods the relative difference is ~1e-9 (event times located to ulps,
+    // DP5 global error ~1e-12 m on centimetre displacements); 1e-7 bounds it with room.
+    let s = scene();
+    let w = window(&s, 5, 10);
+    let exact = drift_hybrid(
+        &BlockScene {
+            closed_form: true,
+            ..s
+        },
+        &Options::default(),
+        w,
+    );
+    let integ = drift_hybrid(
+        &s,
+        &Options {
+            control: StepControl::tol(1e-12, 1e-12),
+            ..Options::default()
+        },
+        w,
+    );
+    assert!(exact.completed && integ.completed);
+    assert_eq!(exact.events, integ.events, "same event sequence");
+    assert!(
+        ((integ.value - exact.value) / exact.value).abs() < 1e-7,
+        "{} vs {}",
+        integ.value,
+        exact.value
+    );
+    // three events per period in the periodic orbit: impact, slip, takeoff
+    assert_eq!(exact.events % 3, 0, "{}", exact.events);
+}
+
+#[test]
+fn moreau_jean_converges_to_the_event_driven_drift() {
+    // Moreau-Jean resolves each impact within a step: error O(h). A hundredfold finer
+    // step must cut the error at least tenfold (order >= 1/2), and at T/4000 the drift
+    // is within 1e-3 relative (first order from 2.5e-2 at T/20 predicts 1.3e-4).
+    let s = scene();
+    let w = window(&s, 5, 10);
+    let exact = drift_hybrid(
+        &BlockScene {
+            closed_form: true,
+            ..s
+        },
+        &Options::default(),
+        w,
+    )
+    .value;
+    let err = |n: u32| ((drift_mj(&s, n, w).value - exact) / exact).abs();
+    let (coarse, fine) = (err(40), err(4000));
+    assert!(fine < coarse / 10.0, "{coarse} -> {fine}");
+    assert!(fine < 1e-3, "{fine}");
+}
+
+#[test]
+fn impacts_follow_newton_and_coulomb_for_impulses() {
+    // By hand: relative approach speed |u| = 0.2 m/s, e = 0.5: P_n/m = 0.3 m/s; with
+    // mu = 0.4 up to 0.12 m/s of horizontal speed is removed.
+    let mut s = scene();
+    s.e = 0.5;
+    let t = 0.75 * s.period_s(); // z_p = delta sin(wt) at its bottom: z_p' = 0, N = m g (1 + Gamma) > 0
+    let zp = s.plate.z_m(t);
+    assert!(s.plate.vz_mps(t).abs() < 1e-12);
+    let hit = |vx: f64| match s.on_event(BlockMode::Flight, 0, t, &[0.0, vx, zp, -0.2]) {
+        Transition::To { mode, state } => (mode, state),
+        Transition::Stop(_) => panic!("no stop"),
+    };
+    let (mode, st) = hit(0.5);
+    assert_eq!(mode, BlockMode::Flight, "rebound 0.1 m/s: flies on");
+    assert!(
+        (st[1] - (0.5 - 0.12)).abs() < 1e-15 && (st[3] - 0.1).abs() < 1e-15,
+        "{st:?}"
+    );
+    let (_, st) = hit(-0.1);
+    assert_eq!(
+        st[1], 0.0,
+        "slow enough: horizontal motion stopped by the impulse"
+    );
+    // e = 0: a plastic impact, then contact; sticking when |F| <= mu N
+    s.e = 0.0;
+    let st = match s.on_event(BlockMode::Flight, 0, t, &[0.0, 0.05, zp, -0.2]) {
+        Transition::To { mode, state } => {
+            assert_eq!(mode, BlockMode::Stick);
+            state
+        }
+        Transition::Stop(_) => panic!(),
+    };
+    assert_eq!(st[1], 0.0);
+    assert!((st[3] - s.plate.vz_mps(t)).abs() < 1e-15);
+}
+
+#[test]
+fn flight_map_law_becomes_exact_as_the_bias_vanishes() {
+    // The flight map neglects the slip before takeoff (while mu N < F), whose share of
+    // the drift grows with b/mu: its error must shrink at least twofold from b = 0.04 to
+    // b = 0.005, and at b = 0.005 lie below 0.5 %.
+    let err = |b: f64| {
+        let s = BlockScene {
+            closed_form: true,
+            ..BlockScene::new(30.0, 2.5, 0.4, b, 9.81)
+        };
+        let ex = drift_hybrid(&s, &Options::default(), window(&s, 10, 20)).value;
+        ((flight_map_drift(&s).unwrap() - ex) / ex).abs()
+    };
+    let (big, small) = (err(0.04), err(0.005));
+    assert!(small < big / 2.0 && small < 5e-3, "{big} -> {small}");
+}
+
+#[test]
+fn quick_json_has_the_issue_keys_and_no_failed_claim() {
+    let (code, out, err) = run(&["--quick", "--json", "--no-figures"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(out.trim()).unwrap();
+    let res = &v["results"];
+    let wp = res["work_precision"]
+        .as_array()
+        .expect("work_precision array");
+    assert!(!wp.is_empty());
+    for p in wp {
+        for k in [
+            "method",
+            "tolerance_or_step",
+            "error",
+            "wall_s",
+            "rhs_evals",
+        ] {
+            assert!(p.get(k).is_some(), "{k} in {p}");
+        }
+        assert!(p["wall_s"].as_f64().unwrap() >= 0.0);
+    }
+    for f in res["failures"].as_array().expect("failures array") {
+        for k in ["method", "scene", "symptom"] {
+            assert!(f[k].is_string(), "{k} in {f}");
+        }
+    }
+    for c in v["claims"].as_array().unwrap() {
+        assert_ne!(c["verdict"], "failed", "{c}");
+    }
+}
+
+#[test]
+fn quick_summary_snapshot() {
+    // Discrete results only: claim verdicts, failing methods, ladder sizes, and the
+    // drift to 3 digits (it is checked to 1e-8 relative against a second method).
+    let (_, out, _) = run(&["--quick", "--json", "--no-figures"]);
+    let v: Value = serde_json::from_str(out.trim()).unwrap();
+    let mut s = String::new();
+    for c in v["claims"].as_array().unwrap() {
+        s += &format!(
+            "{} {}\n",
+            c["id"].as_str().unwrap(),
+            c["verdict"].as_str().unwrap()
+        );
+    }
+    for f in v["results"]["failures"].as_array().unwrap() {
+        s += &format!(
+            "failure: {} | {}\n",
+            f["method"].as_str().unwrap(),
+            f["scene"].as_str().unwrap()
+        );
+    }
+    let wp = v["results"]["work_precision"].as_array().unwrap();
+    let mut labels: Vec<&str> = wp.iter().map(|p| p["method"].as_str().unwrap()).collect();
+    labels.dedup();
+    for l in labels {
+        s += &format!(
+            "ladder {l}: {} runs\n",
+            wp.iter().filter(|p| p["method"] == l).count()
+        );
+    }
+    s += &format!(
+        "block drift {:.3e} m/s\n",
+        v["results"]["block_drift_mps"].as_f64().unwrap()
+    );
+    insta::assert_snapshot!("quick_summary", s);
+}
+
+#[test]
+fn bad_input_names_the_flag() {
+    for (flag, bad) in [
+        ("--frequency-hz", "NaN"),
+        ("--frequency-hz", "-30"),
+        ("--gamma", "0.9"),
+        ("--gamma", "inf"),
+        ("--mu", "-0.1"),
+        ("--bias", "0.5"),
+        ("--bias", "-0.01"),
+        ("--restitution", "1"),
+        ("--restitution", "NaN"),
+    ] {
+        let (code, out, err) = run(&[flag, bad, "--quick", "--no-figures"]);
+        assert_eq!(code, 2, "{flag} {bad}");
+        assert!(out.is_empty(), "{flag} {bad}: {out}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{flag} {bad}: {err}");
+        assert!(err.contains(flag), "{flag} {bad}: {err}");
+    }
+}
