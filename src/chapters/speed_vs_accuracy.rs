@@ -40,8 +40,8 @@ pub struct Args {
     /// Bias force over weight, b = F/(m g) (dimensionless, 0 <= b < mu). Default 0.02.
     #[arg(long, default_value_t = 0.02)]
     pub bias: f64,
-    /// Restitution coefficient e of the Zeno scene (dimensionless, 0 < e < 1). Default 0.3.
-    #[arg(long, default_value_t = 0.3)]
+    /// Restitution coefficient e of the Zeno scenes (dimensionless, 0 < e < 1). Default 0.5.
+    #[arg(long, default_value_t = 0.5)]
     pub restitution: f64,
 }
 

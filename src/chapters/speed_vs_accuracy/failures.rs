@@ -1,10 +1,12 @@
 //! The failure scenes of the chapter: each runs the failing method and the good one.
 
-use super::block_scene::{BlockMode, BlockScene};
-use super::measure::{drift_hybrid, drift_mj, window};
-use crate::numerics::hybrid::{simulate, Options, Outcome};
+use super::block_scene::BlockScene;
+use super::measure::{drift_block_model, drift_mj, window};
+use crate::numerics::events::Direction;
+use crate::numerics::hybrid::{simulate, HybridSystem, Transition};
+use crate::numerics::hybrid::{Options, Outcome};
 use crate::numerics::ode::{Integrator, Method, OdeError, StepControl};
-use crate::physics::plate::PlateMotion;
+use crate::numerics::timestepping::{self as mj, ContactModel, ContactStatus, MjOptions};
 use serde_json::{json, Value};
 
 /// One observed failure: `{method, scene, symptom}`.
@@ -107,24 +109,92 @@ pub fn stiff(tau_s: f64, frequency_hz: f64, duration_s: f64) -> StiffOutcome {
     }
 }
 
-/// Result of the Zeno scene.
+/// Result of the Zeno scenes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ZenoOutcome {
-    /// Time the event-driven run stopped with `Outcome::Zeno` (s), if it did.
-    pub zeno_at_s: Option<f64>,
-    /// Events before it stopped.
-    pub events: usize,
+    /// Ball on a fixed floor: time the event-driven run stopped with `Outcome::Zeno` (s).
+    pub ball_zeno_at_s: Option<f64>,
+    /// Ball: the accumulation time `t1 (1 + e)/(1 - e)` (s), closed form.
+    pub ball_t_inf_s: f64,
+    /// Ball: time from which Moreau-Jean (h = 1 ms) keeps it at rest (s), NaN if never.
+    pub ball_mj_rest_s: f64,
+    /// Block on the plate without a rest threshold: events over the run.
+    pub events_chattering: u64,
+    /// Block with the sticking transition: events over the run.
+    pub events_sticking: u64,
     /// Drift with the sticking transition (event-driven, m/s), NaN if it did not complete.
     pub drift_sticking_mps: f64,
     /// Drift with Moreau-Jean (m/s), NaN if it did not complete.
     pub drift_mj_mps: f64,
-    /// Moreau-Jean steps per period.
-    pub mj_steps_per_period: u32,
 }
 
-/// The bouncing block with restitution `e` on the plate: event-driven without and
-/// with the sticking transition (rebounds slower than 0.1 mm/s end in contact), and
-/// Moreau-Jean, over `cycles` periods after `transient`.
+/// A ball above a fixed floor, `y = [height m, velocity m/s]`, restitution `e`.
+struct Ball {
+    e: f64,
+    g: f64,
+}
+
+impl HybridSystem<2> for Ball {
+    type Mode = ();
+    type Stop = ();
+    fn flow(&self, _m: (), _t: f64, y: &[f64; 2]) -> [f64; 2] {
+        [y[1], -self.g]
+    }
+    fn exact(&self, _m: (), t0: f64, y0: &[f64; 2], t: f64) -> Option<[f64; 2]> {
+        let s = t - t0;
+        Some([y0[0] + y0[1] * s - 0.5 * self.g * s * s, y0[1] - self.g * s]) // formula: ballistic flight
+    }
+    fn max_step(&self, _m: (), _t: f64, y: &[f64; 2]) -> f64 {
+        if y[0] <= 0.0 && y[1] > 0.0 {
+            y[1] / self.g // leaving the floor: sample at the apex first
+        } else {
+            0.01
+        }
+    }
+    fn guard_count(&self, _m: ()) -> usize {
+        1
+    }
+    fn guard(&self, _m: (), _i: usize, _t: f64, y: &[f64; 2]) -> f64 {
+        y[0]
+    }
+    fn direction(&self, _m: (), _i: usize) -> Direction {
+        Direction::Falling
+    }
+    fn on_event(&self, _m: (), _i: usize, _t: f64, y: &[f64; 2]) -> Transition<(), (), 2> {
+        Transition::To {
+            mode: (),
+            state: [0.0, -self.e * y[1]],
+        } // formula: v+ = -e v-
+    }
+}
+
+impl ContactModel<2> for Ball {
+    fn inv_mass(&self, _t: f64, _q: &[f64; 2], _h: f64) -> [[f64; 2]; 2] {
+        [[1.0, 0.0], [0.0, 1.0]]
+    }
+    fn free_velocity(&self, _t: f64, _q: &[f64; 2], v: &[f64; 2], h: f64) -> [f64; 2] {
+        [v[0], v[1] - self.g * h]
+    }
+    fn gap(&self, _t: f64, q: &[f64; 2]) -> f64 {
+        q[1]
+    }
+    fn jacobians(&self, _t: f64, _q: &[f64; 2]) -> ([f64; 2], [f64; 2]) {
+        ([0.0, 1.0], [1.0, 0.0])
+    }
+    fn restitution(&self) -> f64 {
+        self.e
+    }
+    fn mu(&self) -> f64 {
+        0.5
+    }
+}
+
+/// The Zeno scenes with restitution `e`: (1) a ball dropped from 1 m on a fixed floor,
+/// event-driven (stops with `Outcome::Zeno`) and Moreau-Jean at h = 1 ms (comes to
+/// rest); (2) the block on the plate with peak acceleration `gamma_zeno` g, by the
+/// workbook's block model without a rest threshold (each chattering sequence is ended
+/// only by round-off) and with the sticking transition (rebounds below 0.1 mm/s end in
+/// contact), and by Moreau-Jean, over `cycles` periods after `transient`.
 pub fn zeno(
     scene: &BlockScene,
     e: f64,
@@ -132,42 +202,62 @@ pub fn zeno(
     cycles: u32,
     mj_steps_per_period: u32,
 ) -> ZenoOutcome {
-    let mut s = BlockScene {
-        e,
-        closed_form: true,
-        stick_below_mps: 0.0,
-        ..*scene
-    };
-    let w = window(&s, transient, cycles);
-    let y0 = [0.0, 0.0, s.plate.z_m(0.0), s.plate.vz_mps(0.0)];
+    let ball = Ball { e, g: scene.g };
     let run = simulate(
-        &s,
-        BlockMode::Stick,
+        &ball,
+        (),
         0.0,
-        y0,
-        w.1,
+        [1.0, 0.0],
+        10.0,
         &Options {
             record_events: false,
             ..Options::default()
         },
         &mut (),
     );
-    let zeno_at_s = match run.outcome {
+    let ball_zeno_at_s = match run.outcome {
         Outcome::Zeno { t_s, .. } => Some(t_s),
         _ => None,
     };
+    let t1 = (2.0 / scene.g).sqrt(); // formula: first impact from 1 m at sqrt(2 h/g)
+    let ball_t_inf_s = t1 * (1.0 + e) / (1.0 - e); // formula: t_inf = t1 (1 + e)/(1 - e)
+    let mut rest = f64::NAN;
+    let _ = mj::simulate(
+        &ball,
+        0.0,
+        [0.0, 1.0],
+        [0.0, 0.0],
+        10.0,
+        &MjOptions::midpoint(1e-3),
+        |s| {
+            let resting = s.impulse.status == ContactStatus::Stick && s.v1[1].abs() < 1e-12;
+            if !resting {
+                rest = f64::NAN;
+            } else if rest.is_nan() {
+                rest = s.t1;
+            }
+        },
+    );
+    let mut s = BlockScene {
+        e,
+        stick_below_mps: 0.0,
+        ..*scene
+    };
+    let chattering = drift_block_model(&s, &Options::default(), true, 64, transient, cycles);
     s.stick_below_mps = 1e-4;
-    let sticking = drift_hybrid(&s, &Options::default(), w);
-    let mj = drift_mj(&s, mj_steps_per_period, w);
+    let sticking = drift_block_model(&s, &Options::default(), true, 64, transient, cycles);
+    let mj = drift_mj(&s, mj_steps_per_period, window(&s, transient, cycles));
     ZenoOutcome {
-        zeno_at_s,
-        events: run.event_count,
+        ball_zeno_at_s,
+        ball_t_inf_s,
+        ball_mj_rest_s: rest,
+        events_chattering: chattering.events,
+        events_sticking: sticking.events,
         drift_sticking_mps: if sticking.completed {
             sticking.value
         } else {
             f64::NAN
         },
         drift_mj_mps: if mj.completed { mj.value } else { f64::NAN },
-        mj_steps_per_period,
     }
 }

@@ -122,3 +122,47 @@ pub fn timed<R>(repeats: u32, mut f: impl FnMut() -> R) -> (R, f64) {
     }
     (out.expect("at least one repeat"), best)
 }
+
+/// The block's drift by the workbook's block model ([`crate::physics::block`]) with the
+/// driver options `opts`, closed forms on or off, and guards sampled (and integrated
+/// steps bounded) at `samples_per_period` per period; same scene and window.
+pub fn drift_block_model(
+    scene: &BlockScene,
+    opts: &Options,
+    closed_forms: bool,
+    samples_per_period: usize,
+    transient: u32,
+    cycles: u32,
+) -> Measured {
+    use crate::physics::block::{simulate_block, BlockOptions, BlockParams};
+    let mut params = BlockParams::coulomb(scene.g, scene.mu, scene.bias * scene.g); // b = F/m = bias g
+    params.restitution = scene.e;
+    params.rest_velocity_mps = scene.stick_below_mps;
+    let bo = BlockOptions {
+        hybrid: Options {
+            record_events: false,
+            ..*opts
+        },
+        closed_forms,
+        samples_per_period,
+        transient_periods: transient as usize,
+        record_events: false,
+        start: (0.0, [0.0; 4]),
+    };
+    let run = simulate_block(
+        &params,
+        &scene.plate,
+        f64::from(transient + cycles) * scene.period_s(),
+        &bo,
+    );
+    let c = run.total_counts;
+    let events =
+        (c.takeoffs + c.landings + c.stick_to_slip + c.slip_to_stick + c.reversals + c.breakpoints)
+            as u64;
+    Measured {
+        value: run.mean_velocity_mps,
+        rhs_evals: run.stats.rhs_evals,
+        events,
+        completed: run.outcome == Outcome::Completed && run.mean_velocity_mps.is_finite(),
+    }
+}
