@@ -14,6 +14,7 @@
 pub mod block_scene;
 pub mod economy;
 pub mod failures;
+pub mod figures;
 pub mod measure;
 pub mod report_parts;
 pub mod tables;

@@ -163,51 +163,51 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
             other => block(&other.options(0).expect("hybrid"), false),
         },
     );
-    // Observed orders: least-squares slopes over the asymptotic range h <= T/320 (at
-    // coarser steps a guard seen one step late or a takeoff missed inside a step adds an
-    // error that does not shrink smoothly), above each method's round-off floor.
+    // Observed orders: least-squares slopes of log error against log step.
+    // RK4 with events located on its cubic Hermite interpolant: order 4, +-1 because the
+    // phase of the events inside the steps varies from one step size to the next; its
+    // error reaches the round-off floor (~1e-12) near T/640, so it is fitted over the
+    // ladder above 1e-10.
+    let mut order_json = serde_json::Map::new();
+    let o_rk4 = observed_order(&points, "rk4-located", 1e-10);
+    order_json.insert("rk4-located".to_string(), json!(o_rk4));
+    r.claim(Claim::close(
+        "rk4-located-order",
+        "numerics",
+        "RK4 with located events converges at order 4 on the drift (least-squares slope of log error against log step, errors above 1e-10)",
+        4.0,
+        o_rk4,
+        1.0,
+    ));
+    // First-order methods: Euler (located events) and Moreau-Jean. Each has error
+    // sources of both signs (event placement, the flows' truncation) that partly cancel
+    // on an averaged observable, so the observed slope scatters above 1 (measured 1.2 to
+    // 1.8). The check is "at least 0.7": Euler over its asymptotic range h <= T/320 (at
+    // coarser steps a takeoff seen a step late adds an error that does not shrink
+    // smoothly), Moreau-Jean over the whole ladder.
     let h_asym = period / 320.0 * (1.0 + 1e-9);
     let asym: Vec<WpPoint> = points
         .iter()
         .filter(|p| p.solver.knob() <= h_asym)
         .cloned()
         .collect();
-    let mut order_json = serde_json::Map::new();
-    for (label, expected, tol, floor, pts) in [
-        // Euler: order 1 over h <= T/320; +-0.3 because the phase of the events inside
-        // the steps varies from one step size to the next. RK4 with events located on its
-        // cubic Hermite interpolant: order 4, +-1 for the same reason at larger relative
-        // amplitude; its error reaches the round-off floor (~1e-12) near T/640, so it is
-        // fitted over the whole ladder above 1e-10.
-        ("euler-located", 1.0, 0.3, 1e-13, &asym),
-        ("rk4-located", 4.0, 1.0, 1e-10, &points),
+    for (label, name, pts) in [
+        ("euler-located", "Explicit Euler with located events", &asym),
+        ("moreau-jean", "Moreau-Jean", &points),
     ] {
-        let o = observed_order(pts, label, floor);
+        let o = observed_order(pts, label, 1e-13);
         order_json.insert(label.to_string(), json!(o));
-        r.claim(Claim::close(
+        r.claim(Claim::judged(
             &format!("{label}-order"),
             "numerics",
-            &format!("{label} converges at order {expected} on the drift (least-squares slope of log error against log step in its asymptotic range)"),
-            expected,
+            &format!("{name} converges on the drift at least at first order (least-squares slope of log error against log step >= 0.7)"),
+            ">= 1",
             o,
-            tol,
+            0.3,
+            o >= 0.7,
+            Verdict::Confirmed,
         ));
     }
-    // Moreau-Jean: the theory guarantees order 1 (impacts resolved within one step);
-    // on an averaged observable the errors of individual impacts partly cancel and the
-    // observed slope is often steeper. The check is "at least 0.7", over the whole ladder.
-    let o_mj = observed_order(&points, "moreau-jean", 1e-13);
-    order_json.insert("moreau-jean".to_string(), json!(o_mj));
-    r.claim(Claim::judged(
-        "moreau-jean-order",
-        "numerics",
-        "Moreau-Jean converges on the drift at least at first order (least-squares slope of log error against log step >= 0.7)",
-        ">= 1",
-        o_mj,
-        0.3,
-        o_mj >= 0.7,
-        Verdict::Confirmed,
-    ));
     r.result("observed_orders", Value::Object(order_json));
     let err_of = |label: &str, knob: f64| {
         points
@@ -430,5 +430,14 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         Verdict::Approximation,
     ));
     super::tables::tables(r, &points, &fails, &sweep);
+    if let Some(dir) = ctx.figure_dir("speed-vs-accuracy") {
+        r.figures.extend(super::figures::work_precision(
+            &dir,
+            &points,
+            "block-drift",
+            "Block drift",
+        )?);
+        r.figures.extend(super::figures::economy(&dir, &sweep)?);
+    }
     Ok(())
 }

@@ -1,0 +1,105 @@
+//! The chapter's figures: work-precision diagrams and the economy chart.
+
+use super::work_precision::WpPoint;
+use crate::error::Result;
+use crate::plot::{save_chart, save_panels, Chart, Legend, Series};
+use std::path::Path;
+
+/// Method labels in drawing order with (palette colour, dashed).
+const METHODS: [(&str, usize, bool); 7] = [
+    ("euler-located", 0, false),
+    ("euler-unlocated", 0, true),
+    ("rk4-located", 1, false),
+    ("rk4-unlocated", 1, true),
+    ("dopri5-located", 2, false),
+    ("dopri5-unlocated", 2, true),
+    ("moreau-jean", 3, false),
+];
+
+/// Errors below this are drawn at it (the log axis needs positive values).
+const FLOOR: f64 = 1e-15;
+
+fn wp_chart(
+    points: &[WpPoint],
+    problem: &str,
+    title: &str,
+    x_label: &str,
+    x: impl Fn(&WpPoint) -> f64,
+) -> Chart {
+    let mut c = Chart::new(title, x_label, "relative error of the mean velocity")
+        .log_x()
+        .log_y()
+        .legend(Legend::LowerLeft);
+    for (label, col, dashed) in METHODS {
+        let mut pts: Vec<(f64, f64)> = points
+            .iter()
+            .filter(|p| {
+                p.problem == problem && p.solver.label() == label && p.completed && x(p) > 0.0
+            })
+            .map(|p| (x(p), p.error.max(FLOOR)))
+            .collect();
+        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if pts.is_empty() {
+            continue;
+        }
+        let s = if dashed {
+            Series::dashed(label, pts.clone())
+        } else {
+            Series::line(label, pts.clone())
+        };
+        c = c
+            .series(s.color(col))
+            .series(Series::points("", pts).color(col));
+    }
+    c
+}
+
+/// Work-precision panels of `problem`: error against rhs evaluations and against wall time.
+pub fn work_precision(
+    dir: &Path,
+    points: &[WpPoint],
+    problem: &str,
+    what: &str,
+) -> Result<Vec<String>> {
+    let a = wp_chart(
+        points,
+        problem,
+        &format!("{what}: error vs work"),
+        "right-hand-side evaluations",
+        |p| p.rhs_evals as f64,
+    );
+    let b = wp_chart(
+        points,
+        problem,
+        &format!("{what}: error vs time"),
+        "wall time (s, minimum of repeats)",
+        |p| p.wall_s,
+    );
+    save_panels(
+        &[a, b],
+        2,
+        dir,
+        &format!("work_precision_{}", problem.replace('-', "_")),
+    )
+}
+
+/// The economy chart: relative error of the averaged laws against Gamma.
+pub fn economy(dir: &Path, sweep: &[(f64, f64, Option<f64>, f64)]) -> Result<Vec<String>> {
+    let rel = |m: f64, ex: f64| ((m - ex) / ex).abs().max(1e-6);
+    let map: Vec<(f64, f64)> = sweep
+        .iter()
+        .filter_map(|r| r.2.map(|m| (r.0, rel(m, r.1))))
+        .collect();
+    let law: Vec<(f64, f64)> = sweep.iter().map(|r| (r.0, rel(r.3, r.1))).collect();
+    let c = Chart::new(
+        "Averaged laws against the exact drift",
+        "Gamma = delta omega^2 / g",
+        "relative error of the drift",
+    )
+    .log_y()
+    .series(Series::points("flight map b g t_f^2/(2 n T)", map).color(0))
+    .series(Series::points("mu_eff law b delta omega", law).color(1))
+    .hline(0.01, "1 %")
+    .legend(Legend::UpperRight);
+    save_chart(&c, dir, "economy")
+}
