@@ -1,0 +1,41 @@
+//! Criterion benchmarks of the simulators: work per second of each method on the
+//! block benchmark scene (section 3.1.2: block on a vertically vibrating plate,
+//! Gamma = 2.5, f = 30 Hz, mu = 0.4, bias 0.02), 20 drive periods per iteration.
+//!
+//! `cargo bench --bench numerics` (add `-- --quick` for a short run).
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use locomotion_workbook::chapters::speed_vs_accuracy::block_scene::BlockScene;
+use locomotion_workbook::chapters::speed_vs_accuracy::measure::{drift_block_model, drift_mj};
+use locomotion_workbook::numerics::hybrid::Options;
+use locomotion_workbook::numerics::ode::{Method, StepControl};
+use std::hint::black_box;
+
+fn scene() -> BlockScene {
+    BlockScene::new(30.0, 2.5, 0.4, 0.02, 9.81)
+}
+
+fn block(c: &mut Criterion) {
+    let s = scene();
+    let period = s.period_s();
+    let mut g = c.benchmark_group("block_drift_20_periods");
+    g.bench_function("closed_forms_located", |b| b.iter(|| drift_block_model(black_box(&s), &Options::default(), true, 64, 0, 20)));
+    g.bench_function("dopri5_1e-8_located", |b| {
+        let o = Options { control: StepControl::tol(1e-8, 1e-8), ..Options::default() };
+        b.iter(|| drift_block_model(black_box(&s), &o, false, 20, 0, 20))
+    });
+    g.bench_function("rk4_T/160_located", |b| {
+        let o = Options { method: Method::Rk4, control: StepControl::Fixed { h_s: period / 160.0 }, ..Options::default() };
+        b.iter(|| drift_block_model(black_box(&s), &o, false, 20, 0, 20))
+    });
+    g.bench_function("euler_T/160_located", |b| {
+        let o = Options { method: Method::Euler, control: StepControl::Fixed { h_s: period / 160.0 }, ..Options::default() };
+        b.iter(|| drift_block_model(black_box(&s), &o, false, 20, 0, 20))
+    });
+    let w = (0.0, 20.0 * period);
+    g.bench_function("moreau_jean_T/160", |b| b.iter(|| drift_mj(black_box(&s), 160, w)));
+    g.finish();
+}
+
+criterion_group!(benches, block);
+criterion_main!(benches);
