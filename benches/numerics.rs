@@ -19,21 +19,40 @@ fn block(c: &mut Criterion) {
     let s = scene();
     let period = s.period_s();
     let mut g = c.benchmark_group("block_drift_20_periods");
-    g.bench_function("closed_forms_located", |b| b.iter(|| drift_block_model(black_box(&s), &Options::default(), true, 64, 0, 20)));
+    g.bench_function("closed_forms_located", |b| {
+        b.iter(|| drift_block_model(black_box(&s), &Options::default(), true, 64, 0, 20))
+    });
     g.bench_function("dopri5_1e-8_located", |b| {
-        let o = Options { control: StepControl::tol(1e-8, 1e-8), ..Options::default() };
+        let o = Options {
+            control: StepControl::tol(1e-8, 1e-8),
+            ..Options::default()
+        };
         b.iter(|| drift_block_model(black_box(&s), &o, false, 20, 0, 20))
     });
     g.bench_function("rk4_T/160_located", |b| {
-        let o = Options { method: Method::Rk4, control: StepControl::Fixed { h_s: period / 160.0 }, ..Options::default() };
+        let o = Options {
+            method: Method::Rk4,
+            control: StepControl::Fixed {
+                h_s: period / 160.0,
+            },
+            ..Options::default()
+        };
         b.iter(|| drift_block_model(black_box(&s), &o, false, 20, 0, 20))
     });
     g.bench_function("euler_T/160_located", |b| {
-        let o = Options { method: Method::Euler, control: StepControl::Fixed { h_s: period / 160.0 }, ..Options::default() };
+        let o = Options {
+            method: Method::Euler,
+            control: StepControl::Fixed {
+                h_s: period / 160.0,
+            },
+            ..Options::default()
+        };
         b.iter(|| drift_block_model(black_box(&s), &o, false, 20, 0, 20))
     });
     let w = (0.0, 20.0 * period);
-    g.bench_function("moreau_jean_T/160", |b| b.iter(|| drift_mj(black_box(&s), 160, w)));
+    g.bench_function("moreau_jean_T/160", |b| {
+        b.iter(|| drift_mj(black_box(&s), 160, w))
+    });
     g.finish();
 }
 
