@@ -1,0 +1,128 @@
+//! Contact modes: pivot (C.6, C.7) and the two slides (C.8 to C.14).
+//!
+//! Derivation (chapter text, section "Contact modes"): the rod is massless, so the
+//! forces on it balance (the plate's force F at C reaches the mass unchanged) and so do
+//! the moments about P: `0 = k (theta - theta_0) + gamma theta' + F_x L cos(theta) -
+//! F_z L sin(theta)` (C.8, with `z_p - z_c = L cos`, `x_p - x_c = L sin`). The mass obeys
+//! `m a_P = F - m g e_z`.
+
+use super::{Mode, State, StickModel, OM, TH};
+
+/// Accelerations and contact force of a contact mode at one instant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactEval {
+    /// theta'' (rad/s^2).
+    pub theta_dd: f64,
+    /// x'' of C (m/s^2): zero in pivot.
+    pub xc_dd: f64,
+    /// Horizontal force of the plate on C (N).
+    pub fx: f64,
+    /// Vertical (normal) force of the plate on C (N).
+    pub fz: f64,
+}
+
+impl StickModel {
+    /// Pivot (hinge at C, C moving with the plate): C.6 for theta'' and the contact force
+    /// from Newton on P, `F = m (a_P + g e_z)` with `a_P` from C.7.
+    #[inline]
+    pub fn pivot_eval(&self, t: f64, y: &State) -> ContactEval {
+        let p = &self.p;
+        let (m, l, g) = (p.mass_kg, p.length_m, p.g_mps2);
+        let (_, _, a_s) = self.plate(t);
+        let (s, c) = y[TH].sin_cos();
+        let w = y[OM];
+        let torque = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * w;
+        let theta_dd = ((g + a_s) * m * l * s - torque) / (m * l * l); // formula: C.6
+        let ax = l * (theta_dd * c - w * w * s); // formula: C.7 xddot_p
+        let az = a_s - l * (theta_dd * s + w * w * c); // formula: C.7 zddot_p
+        ContactEval {
+            theta_dd,
+            xc_dd: 0.0,
+            fx: m * ax,
+            fz: m * (az + g),
+        } // formula: F = m (a_P + g e_z)
+    }
+
+    /// Denominator of the slide's normal force, `L (sin(theta) - sigma mu cos(theta))`
+    /// (C.9 for sigma = +1, C.11 for sigma = -1): zero on the edge of the self-locking
+    /// range, where the rod lies along the edge of the friction cone.
+    #[inline]
+    pub fn slide_denominator(&self, sigma: f64, theta: f64) -> f64 {
+        let (s, c) = theta.sin_cos();
+        self.p.length_m * (s - sigma * self.p.mu * c) // formula: C.9/C.11 denominators
+    }
+
+    /// Slide with friction `F_x = sigma mu F_z` (sigma = +1 left, -1 right): the normal
+    /// force from the moment balance about P (C.9/C.11), theta'' from the vertical
+    /// constraint `z_c = z_s` (C.14) and x'' of C from C.4.
+    #[inline]
+    pub fn slide_eval(&self, sigma: f64, t: f64, y: &State) -> ContactEval {
+        let p = &self.p;
+        let (m, l, g, mu) = (p.mass_kg, p.length_m, p.g_mps2, p.mu);
+        let (_, _, a_s) = self.plate(t);
+        let (s, c) = y[TH].sin_cos();
+        let w = y[OM];
+        let torque = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * w;
+        let fz = torque / (l * (s - sigma * mu * c)); // formula: C.9 (sigma=+1), C.11 (sigma=-1)
+        let theta_dd = (a_s + g - fz / m - l * c * w * w) / (l * s); // formula: C.14 theta''
+        let xc_dd = sigma * mu * fz / m - l * (theta_dd * c - w * w * s); // formula: C.14 xddot_c
+        ContactEval {
+            theta_dd,
+            xc_dd,
+            fx: sigma * mu * fz,
+            fz,
+        }
+    }
+
+    /// The evaluation of a contact mode (`None` in flight).
+    #[inline]
+    pub fn contact_eval(&self, mode: Mode, t: f64, y: &State) -> Option<ContactEval> {
+        match mode {
+            Mode::Flight => None,
+            Mode::Pivot => Some(self.pivot_eval(t, y)),
+            Mode::SlideLeft | Mode::SlideRight => Some(self.slide_eval(mode.sigma(), t, y)),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::*;
+
+    #[test]
+    fn pivot_and_slide_agree_on_the_cone_edge() {
+        // At a state where the pivot force lies on the edge F_x = mu F_z, the slide-left
+        // force and accelerations equal the pivot's: the moment balance is the same
+        // equation, so the switch is continuous.
+        let mut p = authors_scene(10.0);
+        p.mu = 0.3;
+        let m = StickModel::new(p);
+        // at theta = 0.6, theta' = 0, find a plate phase where F_x = mu F_z (scan, bisect)
+        let mut y = [0.0; NSTATE];
+        y[TH] = 0.6;
+        let f = |t: f64| {
+            let e = m.pivot_eval(t, &y);
+            e.fx - p.mu * e.fz
+        };
+        let n = 400;
+        let dt = m.period_s / n as f64;
+        let k = (0..n)
+            .find(|&k| f(k as f64 * dt).signum() != f((k + 1) as f64 * dt).signum())
+            .expect("a crossing");
+        let (mut a, mut b) = (k as f64 * dt, (k + 1) as f64 * dt);
+        for _ in 0..100 {
+            let c = 0.5 * (a + b);
+            if f(c).signum() == f(a).signum() {
+                a = c
+            } else {
+                b = c
+            }
+        }
+        let t = 0.5 * (a + b);
+        let pe = m.pivot_eval(t, &y);
+        let se = m.slide_eval(1.0, t, &y);
+        assert!((pe.fz - se.fz).abs() < 1e-9 * pe.fz.abs().max(1.0), "{pe:?} {se:?}");
+        assert!((pe.theta_dd - se.theta_dd).abs() < 1e-7 * pe.theta_dd.abs().max(1.0));
+        assert!(se.xc_dd.abs() < 1e-7, "{se:?}");
+    }
+}

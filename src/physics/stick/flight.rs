@@ -1,0 +1,65 @@
+//! Flight in closed form (C.3, C.5).
+//!
+//! No contact force: the massless rod's moment balance is `k (theta - theta_0) +
+//! gamma theta' = 0`, so `theta - theta_0` decays as `exp(-k t / gamma)`; P is ballistic.
+//! The damper dissipates exactly the spring energy released: `k/2 (d0^2 - d^2)`.
+
+use super::{State, StickModel, D_DAMP, OM, TH, VXC, VZC, XC, ZC};
+
+impl StickModel {
+    /// The flight state at `t` of a flight that starts at `(t0, y0)`.
+    #[inline]
+    pub fn flight_state(&self, t0: f64, y0: &State, t: f64) -> State {
+        let p = &self.p;
+        let (l, g) = (p.length_m, p.g_mps2);
+        let tau = t - t0;
+        let [xp0, zp0, vxp0, vzp0] = self.tip(y0);
+        let xp = xp0 + vxp0 * tau; // formula: C.5 ballistic x
+        let zp = zp0 + vzp0 * tau - 0.5 * g * tau * tau; // formula: C.5 ballistic z
+        let vzp = vzp0 - g * tau;
+        let d0 = y0[TH] - p.theta0_rad;
+        let (d, w) = if self.rate.is_finite() && self.rate > 0.0 {
+            let d = d0 * (-self.rate * tau).exp(); // formula: C.3 theta - theta0 = d0 exp(-k t/gamma)
+            (d, -self.rate * d) // formula: C.3 theta' = -(k/gamma)(theta - theta0)
+        } else {
+            (d0, 0.0)
+        };
+        let th = p.theta0_rad + d;
+        let (s, c) = th.sin_cos();
+        let mut y = *y0;
+        y[TH] = th;
+        y[OM] = w;
+        y[XC] = xp - l * s; // formula: C.2
+        y[ZC] = zp - l * c; // formula: C.2
+        y[VXC] = vxp0 - l * w * c; // formula: C.3 xdot_c
+        y[VZC] = vzp + l * w * s; // formula: C.3 zdot_c
+        y[D_DAMP] = y0[D_DAMP] + 0.5 * p.stiffness_nm_per_rad * (d0 * d0 - d * d); // formula: int gamma theta'^2 = k/2 (d0^2 - d^2)
+        y
+    }
+
+    /// Height of C above the plate, `h_c = z_c - z_s` (Table 1).
+    #[inline]
+    pub fn h_c(&self, t: f64, y: &State) -> f64 {
+        y[ZC] - self.plate(t).0
+    }
+
+    /// Longest flight step from `(t, y)` over which `h_c` provably stays positive:
+    /// with `|h_c''| <= A = g + delta omega^2 + L (k/gamma)^2 (d^2 + |d|)`,
+    /// `h_c(t + s) >= h + v s - A s^2 / 2`, positive for `s < (v + sqrt(v^2 + 2 A h)) / A`.
+    /// Never shorter than the model's `min_flight_sample_s`.
+    pub fn flight_step(&self, t: f64, y: &State) -> f64 {
+        let p = &self.p;
+        let (_, vs, _) = self.plate(t);
+        let h = self.h_c(t, y).max(0.0);
+        let v = y[VZC] - vs;
+        let d = (y[TH] - p.theta0_rad).abs();
+        let r2 = if self.rate.is_finite() {
+            self.rate * self.rate
+        } else {
+            0.0
+        };
+        let a = p.g_mps2 + p.plate.peak_acceleration_mps2() + p.length_m * r2 * (d * d + d);
+        let safe = (v + (v * v + 2.0 * a * h).sqrt()) / a; // formula: root of h + v s - A s^2/2
+        safe.max(self.min_flight_sample_s).min(4.0 * self.period_s)
+    }
+}

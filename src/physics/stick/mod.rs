@@ -1,0 +1,198 @@
+//! The leaning stick on a vertically vibrating plate (document sections 4 and 5).
+//!
+//! A massless rod CP of length `L` carries a point mass `m` at its top P; a torsion
+//! spring `k` and a damper `gamma` pull its angle `theta` (from the vertical, positive
+//! when P is to the right of C) towards `theta_0`; its foot C touches a plate that moves
+//! as `z_s = delta cos(omega t)`, with Coulomb friction `mu`.
+//!
+//! Four modes ([`Mode`]): flight (closed form, [`flight`]), pivot and the two slides
+//! (integrated, [`contact`]); the landing and jamming impulses ([`collision`]); the
+//! transition rules ([`rules`]); the energy bookkeeping ([`energy`]); the driver
+//! wrapper and its summary ([`run`]). [`StickModel`] implements
+//! [`crate::numerics::hybrid::HybridSystem`] with `N = 10` states:
+//!
+//! | index | meaning | unit |
+//! |---|---|---|
+//! | [`XC`], [`ZC`] | position of the foot C | m |
+//! | [`TH`] | angle theta | rad |
+//! | [`VXC`], [`VZC`] | velocity of C | m/s |
+//! | [`OM`] | angular rate theta' | rad/s |
+//! | [`W_PLATE`] | work done by the plate on the stick since t0 | J |
+//! | [`D_FRIC`], [`D_DAMP`], [`D_IMPACT`] | energy dissipated by friction, damper, impacts | J |
+//!
+//! Public API used by other chapters: [`StickParams`] (and the scenes
+//! [`authors_scene`], [`jamming_scene`]), [`StickModel::new`], [`run::simulate_stick`]
+//! (one run with a chosen [`crate::numerics::hybrid::Options`], returns a
+//! [`run::RunSummary`]), [`run::initial_state`].
+
+pub mod collision;
+pub mod contact;
+pub mod energy;
+pub mod flight;
+pub mod params;
+pub mod rules;
+pub mod run;
+mod system;
+
+pub use params::{authors_scene, jamming_scene, theta0_for_static_angle, CollisionAngle, StickParams};
+
+/// State index: x of C (m).
+pub const XC: usize = 0;
+/// State index: z of C (m).
+pub const ZC: usize = 1;
+/// State index: theta (rad).
+pub const TH: usize = 2;
+/// State index: x velocity of C (m/s).
+pub const VXC: usize = 3;
+/// State index: z velocity of C (m/s).
+pub const VZC: usize = 4;
+/// State index: theta' (rad/s).
+pub const OM: usize = 5;
+/// State index: plate work (J).
+pub const W_PLATE: usize = 6;
+/// State index: friction dissipation (J).
+pub const D_FRIC: usize = 7;
+/// State index: damper dissipation (J).
+pub const D_DAMP: usize = 8;
+/// State index: impact dissipation (J).
+pub const D_IMPACT: usize = 9;
+/// Number of states.
+pub const NSTATE: usize = 10;
+
+/// The stick's state vector (see the module table).
+pub type State = [f64; NSTATE];
+
+/// The contact modes of Table 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Mode {
+    /// No contact: P ballistic, theta relaxing to theta_0 (C.3, C.5).
+    Flight,
+    /// C stuck on the plate (hinge), one degree of freedom (C.6, C.7).
+    Pivot,
+    /// C sliding towards -x, friction `F_x = +mu F_z` (C.9, C.10).
+    SlideLeft,
+    /// C sliding towards +x, friction `F_x = -mu F_z` (C.11, C.13, C.14).
+    SlideRight,
+}
+
+impl Mode {
+    /// All modes, in the order of the results' `phase_fractions`.
+    pub const ALL: [Mode; 4] = [Mode::Flight, Mode::Pivot, Mode::SlideLeft, Mode::SlideRight];
+
+    /// snake_case name for JSON keys.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::Flight => "flight",
+            Mode::Pivot => "pivot",
+            Mode::SlideLeft => "slide_left",
+            Mode::SlideRight => "slide_right",
+        }
+    }
+
+    /// One letter for phase sequences: F, P, L, R.
+    pub fn letter(self) -> char {
+        match self {
+            Mode::Flight => 'F',
+            Mode::Pivot => 'P',
+            Mode::SlideLeft => 'L',
+            Mode::SlideRight => 'R',
+        }
+    }
+
+    /// Index in [`Mode::ALL`].
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// Sign of the friction force of a slide, `F_x = sigma mu F_z` (+1 left, -1 right).
+    pub fn sigma(self) -> f64 {
+        match self {
+            Mode::SlideLeft => 1.0,
+            Mode::SlideRight => -1.0,
+            _ => 0.0,
+        }
+    }
+}
+
+/// Why a run stopped early.
+#[derive(Debug, Clone, PartialEq)]
+pub enum StickStop {
+    /// The top P reached the plate (|theta| reached 90 degrees).
+    Fell,
+    /// The state left the model's validity (the reason).
+    Invalid(String),
+}
+
+/// The stick model: parameters plus derived constants. Implements
+/// [`crate::numerics::hybrid::HybridSystem`].
+#[derive(Debug, Clone, Copy)]
+pub struct StickModel {
+    /// The parameters.
+    pub p: StickParams,
+    /// `k/gamma` (1/s).
+    pub rate: f64,
+    /// Drive period (s).
+    pub period_s: f64,
+    /// Shortest sampling interval of the landing search in flight (s).
+    pub min_flight_sample_s: f64,
+    /// Longest step in contact modes (s).
+    pub max_contact_step_s: f64,
+    /// Penetration depth below which a missed landing is reported as invalid (m).
+    pub penetration_tol_m: f64,
+}
+
+impl StickModel {
+    /// A model for `p`.
+    pub fn new(p: StickParams) -> Self {
+        let period = p.period_s();
+        StickModel {
+            p,
+            rate: p.relax_rate(),
+            period_s: period,
+            // A landing missed inside one such interval would need a dip below the plate
+            // of at most A h^2/8 with |h_c''| <= A: about 0.1 micrometre here.
+            min_flight_sample_s: period / 256.0,
+            max_contact_step_s: period / 32.0,
+            penetration_tol_m: 1e-9 * p.length_m.max(1e-3),
+        }
+    }
+
+    /// Plate height, velocity and acceleration at `t`.
+    #[inline]
+    pub fn plate(&self, t: f64) -> (f64, f64, f64) {
+        let pl = &self.p.plate;
+        let ph = pl.omega_rad_s * t + pl.phase_rad;
+        let (s, c) = ph.sin_cos();
+        let w = pl.omega_rad_s;
+        let d = pl.amplitude_m;
+        (d * s, d * w * c, -d * w * w * s) // formula: z_s = delta cos(wt): phase pi/2 in sin(wt + phi)
+    }
+
+    /// The state with C's height and vertical velocity made the plate's in contact
+    /// modes: they are not integrated there (minimal coordinates x_c, theta), so the
+    /// stored values are those of the mode's entry. Flight states are returned as they are.
+    #[inline]
+    pub fn canonical(&self, mode: Mode, t: f64, y: &State) -> State {
+        let mut y = *y;
+        if mode != Mode::Flight {
+            let (zs, vs, _) = self.plate(t);
+            y[ZC] = zs;
+            y[VZC] = vs;
+        }
+        y
+    }
+
+    /// Position and velocity of P from the state: `P = C + L (sin, cos)` (C.1),
+    /// `v_P = v_C + L theta' (cos, -sin)` (C.3).
+    #[inline]
+    pub fn tip(&self, y: &State) -> [f64; 4] {
+        let l = self.p.length_m;
+        let (s, c) = y[TH].sin_cos();
+        [
+            y[XC] + l * s,          // formula: C.1 x_p = x_c + L sin
+            y[ZC] + l * c,          // formula: C.1 z_p = z_c + L cos
+            y[VXC] + l * c * y[OM], // formula: C.3 xdot_p = xdot_c + L theta' cos
+            y[VZC] - l * s * y[OM], // formula: C.3 zdot_p = zdot_c - L theta' sin
+        ]
+    }
+}

@@ -1,0 +1,192 @@
+//! Transition rules: which mode follows a landing, a lift-off, a stop of the slip or a
+//! jam. Decided by the contact conditions of Table 1, not by habit:
+//!
+//! - C on the plate and not slipping: compute the pivot reaction F (C.6, C.7). `F_z < 0`:
+//!   lift off. `|F_x| <= mu F_z`: pivot. Otherwise slide the way the missing tangential
+//!   force drives: `F_x > mu F_z` (the plate would have to push C towards +x harder than
+//!   friction can) -> slide left; `F_x < -mu F_z` -> slide right.
+//! - Lift-off: the rod's rate becomes the flight rate `-(k/gamma)(theta - theta_0)`
+//!   (continuous when F = 0) and the flight must move C away from the plate.
+//! - Landing: a sticking impact (C.15) when the along-rod impulse is compressive
+//!   (`w < 0`) and inside the friction cone (`|tan(theta)| <= mu`); otherwise no impulse
+//!   can act and C lands sliding.
+//! - A slide whose angle reaches the self-locking edge `tan(theta) = sigma mu` jams: the
+//!   moment balance would need an infinite normal force; a sticking impulse along the
+//!   rod (on the cone's edge) stops the slip.
+
+use super::{CollisionAngle, Mode, State, StickModel, StickStop, OM, TH, VXC, VZC, ZC};
+
+/// The next mode and state, or a stop.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Next {
+    /// Continue in this mode from this state.
+    To(Mode, State),
+    /// Stop the run.
+    Stop(StickStop),
+}
+
+impl StickModel {
+    /// Mode for a state with C on the plate and not slipping. The pivot reaction test
+    /// first: `F_z >= 0` and `|F_x| <= mu F_z` keeps the pivot. Otherwise the first
+    /// consistent mode of: the slide the tangential force drives (if `F_z >= 0`) or the
+    /// flight (if `F_z < 0`), then either slide, then the flight. A slide from rest is
+    /// consistent when its normal force is compressive and its slip accelerates in its own
+    /// direction; a flight when it moves C away from the plate. None: invalid.
+    pub fn select_contact(&self, t: f64, y: &State) -> Next {
+        self.select_contact_from(t, y, true)
+    }
+
+    /// [`StickModel::select_contact`] with the pivot excluded when `allow_pivot` is false:
+    /// a pivot guard that fired at the edge of the cone (or at `F_z = 0`) must leave the
+    /// pivot even if rounding puts the reaction back on the edge.
+    pub fn select_contact_from(&self, t: f64, y: &State, allow_pivot: bool) -> Next {
+        let mut y = *y;
+        y[VXC] = 0.0;
+        let e = self.pivot_eval(t, &y);
+        let mu = self.p.mu;
+        if allow_pivot && e.fz >= 0.0 && e.fx.abs() <= mu * e.fz {
+            return Next::To(Mode::Pivot, y);
+        }
+        let (drive, other) = if e.fx > 0.0 {
+            (Mode::SlideLeft, Mode::SlideRight)
+        } else {
+            (Mode::SlideRight, Mode::SlideLeft)
+        };
+        let order: [Mode; 3] = if e.fz >= 0.0 {
+            [drive, Mode::Flight, other]
+        } else {
+            [Mode::Flight, drive, other]
+        };
+        for mode in order {
+            let next = if mode == Mode::Flight {
+                self.takeoff(t, &y)
+            } else {
+                self.try_slide(mode, t, &y)
+            };
+            if let Next::To(..) = next {
+                return next;
+            }
+        }
+        Next::Stop(StickStop::Invalid(format!(
+            "no consistent contact mode at t = {t:.6} s (theta = {:.4} rad, pivot F = ({:.3e}, {:.3e}) N)",
+            y[TH], e.fx, e.fz
+        )))
+    }
+
+    /// The slide `mode` from rest at `(t, y)` if it is consistent (see
+    /// [`StickModel::select_contact`]); a stop with the reason otherwise.
+    pub fn try_slide(&self, mode: Mode, t: f64, y: &State) -> Next {
+        if y[TH].sin().abs() < 1e-9 {
+            return Next::Stop(StickStop::Invalid(format!(
+                "slide from theta = 0 at t = {t:.6} s: the sliding equations (C.14) are singular"
+            )));
+        }
+        let e = self.slide_eval(mode.sigma(), t, y);
+        if e.fz < 0.0 || mode.sigma() * e.xc_dd > 0.0 || !e.fz.is_finite() {
+            return Next::Stop(StickStop::Invalid(format!(
+                "{} inconsistent at t = {t:.6} s",
+                mode.name()
+            )));
+        }
+        Next::To(mode, *y)
+    }
+
+    fn enter_slide(&self, mode: Mode, t: f64, y: State) -> Next {
+        if y[TH].sin().abs() < 1e-9 {
+            return Next::Stop(StickStop::Invalid(format!(
+                "slide from theta = 0 at t = {t:.6} s: the sliding equations (C.14) are singular"
+            )));
+        }
+        let n = self.slide_eval(mode.sigma(), t, &y).fz;
+        if n < 0.0 {
+            // The slide would need a tensile force: C leaves the plate.
+            return self.takeoff(t, &y);
+        }
+        Next::To(mode, y)
+    }
+
+    /// Lift-off: flight rate of the rod, C's velocity from P's (continuous) velocity;
+    /// invalid if the flight would drive C into the plate.
+    pub fn takeoff(&self, t: f64, y: &State) -> Next {
+        let p = &self.p;
+        if !self.rate.is_finite() {
+            return Next::Stop(StickStop::Invalid(
+                "gamma = 0 with k > 0: the massless rod's angle in flight is undetermined".to_string(),
+            ));
+        }
+        let l = p.length_m;
+        let [_, _, vxp, vzp] = self.tip(y);
+        let (zs, vs, a_s) = self.plate(t);
+        let (s, c) = y[TH].sin_cos();
+        let w = -self.rate * (y[TH] - p.theta0_rad); // formula: C.3
+        let mut a = *y;
+        a[ZC] = zs;
+        a[OM] = w;
+        a[VXC] = vxp - l * w * c; // formula: C.3
+        a[VZC] = vzp + l * w * s; // formula: C.3
+        let h_d = a[VZC] - vs;
+        let h_dd = -p.g_mps2 + l * (c * w * w - s * self.rate * w) - a_s; // formula: C.4 with theta'' = -(k/gamma) theta'
+                                                                          // A lift-off at F = 0 located to the event tolerance leaves C with a relative
+                                                                          // velocity of order (F/gamma) L: zero up to about 1e-9 m/s at rtol 1e-10. 1e-6 of
+                                                                          // the velocity scale is far above that and far below any real approach.
+        let tol_v = 1e-6 * p.plate.peak_velocity_mps().max((p.g_mps2 * l).sqrt());
+        if h_d < -tol_v || (h_d <= tol_v && h_dd < 0.0) {
+            return Next::Stop(StickStop::Invalid(format!(
+                "lift-off at t = {t:.6} s would drive C into the plate (h_c' = {h_d:.3e} m/s, h_c'' = {h_dd:.3e} m/s^2): no consistent mode"
+            )));
+        }
+        Next::To(Mode::Flight, a)
+    }
+
+    /// Along-rod velocity of P relative to the plate, `w = (v_P - zdot_s e_z) . e_r` (m/s).
+    pub fn approach_velocity(&self, t: f64, y: &State) -> f64 {
+        let [_, _, vxp, vzp] = self.tip(y);
+        let (_, vs, _) = self.plate(t);
+        let (s, c) = y[TH].sin_cos();
+        vxp * s + (vzp - vs) * c
+    }
+
+    /// Landing (C reaches the plate in flight).
+    pub fn landing(&self, t: f64, y: &State) -> Next {
+        let mut y = *y;
+        let lever = match self.p.collision_angle {
+            CollisionAngle::Actual => y[TH],
+            CollisionAngle::Reset => self.p.theta0_rad,
+        };
+        let w = self.approach_velocity(t, &y);
+        if y[TH].tan().abs() <= self.p.mu && w < 0.0 {
+            let imp = self.sticking_impact(t, &y, lever);
+            return self.select_contact(t, &imp.after);
+        }
+        if self.p.collision_angle == CollisionAngle::Reset {
+            y[TH] = lever; // the document's "after collision theta = theta_0", C kept in place
+        }
+        match self.impulse_free_landing(t, &y) {
+            None => Next::Stop(StickStop::Invalid(format!(
+                "landing at t = {t:.6} s with the rod vertical outside the friction cone"
+            ))),
+            Some(a) => {
+                if a[VXC] < 0.0 {
+                    self.enter_slide(Mode::SlideLeft, t, a)
+                } else if a[VXC] > 0.0 {
+                    self.enter_slide(Mode::SlideRight, t, a)
+                } else {
+                    self.select_contact(t, &a)
+                }
+            }
+        }
+    }
+
+    /// A slide reaching the self-locking edge: sticking impulse along the rod (on the
+    /// cone's edge), then the pivot reaction test.
+    pub fn jam(&self, t: f64, y: &State) -> Next {
+        let imp = self.sticking_impact(t, y, y[TH]);
+        if imp.lambda_ns < 0.0 {
+            return Next::Stop(StickStop::Invalid(format!(
+                "jam at t = {t:.6} s would need a tensile impulse (w = {:.3e} m/s)",
+                imp.w_mps
+            )));
+        }
+        self.select_contact(t, &imp.after)
+    }
+}

@@ -1,0 +1,310 @@
+//! One run of the stick through the hybrid driver, and its summary.
+
+use super::energy::Budget;
+use super::{Mode, State, StickModel, StickStop, NSTATE, VXC, W_PLATE, XC};
+use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment};
+use crate::numerics::ode::Stats;
+
+/// The typed outcome of a run.
+#[derive(Debug, Clone, PartialEq)]
+pub enum StickOutcome {
+    /// Reached the end time.
+    Completed,
+    /// The top P reached the plate (|theta| reached 90 degrees).
+    Fell,
+    /// Events accumulated (Zeno).
+    Zeno,
+    /// The state left the model's validity (the reason).
+    Invalid(String),
+}
+
+impl StickOutcome {
+    /// `completed`, `fell`, `zeno` or `invalid`.
+    pub fn label(&self) -> &'static str {
+        match self {
+            StickOutcome::Completed => "completed",
+            StickOutcome::Fell => "fell",
+            StickOutcome::Zeno => "zeno",
+            StickOutcome::Invalid(_) => "invalid",
+        }
+    }
+}
+
+/// What to record during a run, beyond the counts.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Recording {
+    /// Keep the phase sequence (one letter per mode entered, capped at this length).
+    pub sequence_cap: usize,
+    /// Sample the trajectory every this many seconds (0: no trace).
+    pub trace_dt_s: f64,
+    /// Check the contact conditions of Table 1 at the ends of every accepted step.
+    pub check_invariants: bool,
+}
+
+/// Largest violations of Table 1 seen at accepted steps (N, m, m/s).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Violations {
+    /// Largest `-F_z` in contact modes (N).
+    pub normal_n: f64,
+    /// Largest `|F_x| - mu F_z` in pivot (N).
+    pub cone_n: f64,
+    /// Largest slip against the slide's direction, `sigma xdot_c` (m/s).
+    pub slip_mps: f64,
+    /// Largest `-h_c` in flight (m).
+    pub penetration_m: f64,
+    /// Largest `|xdot_c|` in pivot (m/s).
+    pub pivot_slip_mps: f64,
+    /// Accepted steps checked.
+    pub checked: usize,
+}
+
+/// One sample of a trace.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sample {
+    /// Time (s).
+    pub t_s: f64,
+    /// Mode.
+    pub mode: Mode,
+    /// State.
+    pub y: State,
+}
+
+/// Summary of a run.
+#[derive(Debug, Clone)]
+pub struct RunSummary {
+    /// How it ended.
+    pub outcome: StickOutcome,
+    /// End time (s).
+    pub end_time_s: f64,
+    /// Start time (s).
+    pub start_time_s: f64,
+    /// Mean horizontal velocity of C over the run (m/s).
+    pub mean_velocity_mps: f64,
+    /// Time in each mode, in [`Mode::ALL`] order (s).
+    pub mode_time_s: [f64; 4],
+    /// Transitions counted `[from][to]` in [`Mode::ALL`] order.
+    pub transitions: [[usize; 4]; 4],
+    /// Jams (slides stopped by the self-locking edge).
+    pub jams: usize,
+    /// Landings (flight phases that ended on the plate).
+    pub hops: usize,
+    /// Sticking impacts among the landings.
+    pub sticking_landings: usize,
+    /// The energy budget over the run.
+    pub budget: Budget,
+    /// Integration work.
+    pub stats: Stats,
+    /// Guard evaluations spent locating events.
+    pub locate_evals: u64,
+    /// Drive cycles simulated.
+    pub cycles: f64,
+    /// Phase sequence (letters F, P, L, R), capped.
+    pub sequence: String,
+    /// Table 1 violations.
+    pub violations: Violations,
+    /// Trace samples.
+    pub trace: Vec<Sample>,
+    /// Events: (time s, from, to) with `to = None` for the stop.
+    pub events: Vec<(f64, Mode, Option<Mode>)>,
+    /// Final state.
+    pub y_end: State,
+    /// Final mode.
+    pub mode_end: Mode,
+}
+
+impl RunSummary {
+    /// Fraction of the run's time spent in each mode (1), [`Mode::ALL`] order.
+    pub fn phase_fractions(&self) -> [f64; 4] {
+        let total: f64 = self.mode_time_s.iter().sum();
+        self.mode_time_s.map(|x| if total > 0.0 { x / total } else { 0.0 })
+    }
+}
+
+/// Start state: C at x = 0 on the plate at time `t0`, standing still at `theta` with
+/// rate zero (relative to the plate), accumulators zero.
+pub fn initial_state(model: &StickModel, t0: f64, theta: f64) -> State {
+    let (zs, vs, _) = model.plate(t0);
+    let mut y = [0.0; NSTATE];
+    y[super::ZC] = zs;
+    y[super::VZC] = vs;
+    y[super::TH] = theta;
+    y
+}
+
+struct Watch<'a> {
+    model: &'a StickModel,
+    rec: Recording,
+    sum: RunSummary,
+    acc: [f64; 4],
+    last_mode: Option<Mode>,
+    next_sample_t: f64,
+}
+
+impl Watch<'_> {
+    fn check(&mut self, mode: Mode, t: f64, y: &State) {
+        let m = self.model;
+        let v = &mut self.sum.violations;
+        v.checked += 1;
+        match m.contact_eval(mode, t, y) {
+            None => v.penetration_m = v.penetration_m.max(-m.h_c(t, y)),
+            Some(e) => {
+                v.normal_n = v.normal_n.max(-e.fz);
+                if mode == Mode::Pivot {
+                    v.cone_n = v.cone_n.max(e.fx.abs() - m.p.mu * e.fz);
+                    v.pivot_slip_mps = v.pivot_slip_mps.max(y[VXC].abs());
+                } else {
+                    v.slip_mps = v.slip_mps.max(mode.sigma() * y[VXC]);
+                }
+            }
+        }
+    }
+
+    fn enter(&mut self, mode: Mode) {
+        if self.last_mode != Some(mode) && self.sum.sequence.len() < self.rec.sequence_cap {
+            self.sum.sequence.push(mode.letter());
+        }
+        self.last_mode = Some(mode);
+    }
+}
+
+impl Observer<Mode, NSTATE> for Watch<'_> {
+    fn segment(&mut self, mode: Mode, seg: &Segment<'_, NSTATE>) {
+        if self.last_mode.is_none() {
+            self.enter(mode);
+        }
+        if self.rec.check_invariants {
+            let y1 = self.model.canonical(mode, seg.t1, &seg.y1);
+            self.check(mode, seg.t1, &y1);
+        }
+        if self.rec.trace_dt_s > 0.0 {
+            while self.next_sample_t <= seg.t1 {
+                let t = self.next_sample_t.max(seg.t0);
+                self.sum.trace.push(Sample {
+                    t_s: t,
+                    mode,
+                    y: self.model.canonical(mode, t, &seg.eval(t)),
+                });
+                self.next_sample_t += self.rec.trace_dt_s;
+            }
+            // keep the segment's end so that events are drawn sharply
+            self.sum.trace.push(Sample {
+                t_s: seg.t1,
+                mode,
+                y: self.model.canonical(mode, seg.t1, &seg.y1),
+            });
+        }
+    }
+
+    fn event(&mut self, t: f64, from: Mode, guard: usize, _before: &State, after: Option<(Mode, &State)>) {
+        let to = after.map(|(m, _)| m);
+        if self.rec.sequence_cap > 0 {
+            self.sum.events.push((t, from, to));
+        }
+        if let Some((m, y)) = after {
+            for k in 0..4 {
+                self.acc[k] += _before[W_PLATE + k];
+            }
+            self.sum.transitions[from.index()][m.index()] += 1;
+            if from == Mode::Flight && guard == 0 {
+                self.sum.hops += 1;
+                if y[VXC] == 0.0 {
+                    self.sum.sticking_landings += 1;
+                }
+            }
+            if from != Mode::Flight && from != Mode::Pivot && guard == 0 {
+                self.sum.jams += 1;
+            }
+            self.enter(m);
+            if self.rec.check_invariants {
+                self.check(m, t, y);
+            }
+        }
+    }
+}
+
+/// Simulates `model` from `(t0, y0)` in the mode the contact rules choose (C on the
+/// plate) or in flight (C above it), up to `t_end`.
+pub fn simulate_stick(
+    model: &StickModel,
+    t0: f64,
+    y0: State,
+    t_end: f64,
+    opts: &Options,
+    rec: Recording,
+) -> RunSummary {
+    let start = if model.h_c(t0, &y0) > 0.0 {
+        super::rules::Next::To(Mode::Flight, y0)
+    } else {
+        model.select_contact(t0, &y0)
+    };
+    let mut watch = Watch {
+        model,
+        rec,
+        sum: RunSummary {
+            outcome: StickOutcome::Completed,
+            end_time_s: t0,
+            start_time_s: t0,
+            mean_velocity_mps: 0.0,
+            mode_time_s: [0.0; 4],
+            transitions: [[0; 4]; 4],
+            jams: 0,
+            hops: 0,
+            sticking_landings: 0,
+            budget: Budget::default(),
+            stats: Stats::default(),
+            locate_evals: 0,
+            cycles: 0.0,
+            sequence: String::new(),
+            violations: Violations::default(),
+            trace: Vec::new(),
+            events: Vec::new(),
+            y_end: y0,
+            mode_end: Mode::Pivot,
+        },
+        acc: [0.0; 4],
+        last_mode: None,
+        next_sample_t: t0,
+    };
+    let (mode0, ys) = match start {
+        super::rules::Next::To(m, y) => (m, y),
+        super::rules::Next::Stop(x) => {
+            let mut s = watch.sum;
+            s.outcome = match x {
+                StickStop::Fell => StickOutcome::Fell,
+                StickStop::Invalid(r) => StickOutcome::Invalid(r),
+            };
+            return s;
+        }
+    };
+    let opts = Options {
+        record_events: false,
+        ..*opts
+    };
+    let run = simulate(model, mode0, t0, ys, t_end, &opts, &mut watch);
+    let acc = watch.acc;
+    let mut s = watch.sum;
+    s.outcome = match run.outcome {
+        Outcome::Completed => StickOutcome::Completed,
+        Outcome::Stopped(StickStop::Fell) => StickOutcome::Fell,
+        Outcome::Stopped(StickStop::Invalid(r)) => StickOutcome::Invalid(r),
+        Outcome::Zeno { .. } => StickOutcome::Zeno,
+        Outcome::Failed(e) => StickOutcome::Invalid(format!("integration failed: {e}")),
+    };
+    s.end_time_s = run.t_end_s;
+    for (m, dt) in &run.mode_time_s {
+        s.mode_time_s[m.index()] += dt;
+    }
+    let dur = run.t_end_s - t0;
+    s.mean_velocity_mps = if dur > 0.0 { (run.y_end[XC] - y0[XC]) / dur } else { 0.0 };
+    let mut y_end = model.canonical(run.mode_end, run.t_end_s, &run.y_end);
+    for k in 0..4 {
+        y_end[W_PLATE + k] += acc[k];
+    }
+    s.budget = model.budget(&y0, &y_end);
+    s.stats = run.stats;
+    s.locate_evals = run.locate_evals;
+    s.cycles = dur / model.period_s;
+    s.y_end = y_end;
+    s.mode_end = run.mode_end;
+    s
+}

@@ -1,0 +1,151 @@
+//! The [`HybridSystem`] implementation: flows, guards and their transitions.
+//!
+//! Guards, by mode, in priority order (ties go to the lower index):
+//! - Flight: 0 `h_c` falling (landing); 1 `-h_c - tol` rising (a missed landing: invalid).
+//! - Pivot: 0 `F_z` falling (lift-off); 1 `mu F_z - F_x` falling and 2 `mu F_z + F_x`
+//!   falling (friction cone's edges); 3 `cos(theta)` falling (fell).
+//! - Slides: 0 slide denominator (jam); 1 `Q sign(den)` falling, `Q = k (theta -
+//!   theta_0) + gamma theta'` (normal force reaching zero: lift-off); 2 `-sigma xdot_c`
+//!   falling (slip stops); 3 `cos(theta)` falling (fell); 4 `sin(theta)` (C.14 singular:
+//!   invalid); 5 `sigma xdot_c - tol` rising (slip against friction: invalid).
+
+use super::rules::Next;
+use super::{Mode, State, StickModel, StickStop, D_IMPACT, NSTATE, OM, TH, VXC, W_PLATE};
+use crate::numerics::events::Direction;
+use crate::numerics::hybrid::{HybridSystem, Transition};
+
+fn tr(n: Next) -> Transition<Mode, StickStop, NSTATE> {
+    match n {
+        Next::To(mode, state) => Transition::To { mode, state },
+        Next::Stop(x) => Transition::Stop(x),
+    }
+}
+
+impl HybridSystem<NSTATE> for StickModel {
+    type Mode = Mode;
+    type Stop = StickStop;
+
+    fn flow(&self, mode: Mode, t: f64, y: &State) -> State {
+        let p = &self.p;
+        let (_, vs, _) = self.plate(t);
+        let e = match self.contact_eval(mode, t, y) {
+            Some(e) => e,
+            None => return [0.0; NSTATE], // flight uses the closed form
+        };
+        let friction = if mode == Mode::Pivot {
+            0.0
+        } else {
+            p.mu * e.fz * y[VXC].abs()
+        };
+        [
+            y[VXC],
+            0.0, // z_c and zdot_c follow the plate: not integrated (see StickModel::canonical)
+            y[OM],
+            e.xc_dd,
+            0.0,
+            e.theta_dd,
+            e.fz * vs,                             // formula: plate power F_z zdot_s
+            friction,                              // formula: friction loss mu F_z |xdot_c|
+            p.damping_nms_per_rad * y[OM] * y[OM], // formula: damper loss gamma theta'^2
+            0.0,
+        ]
+    }
+
+    fn exact(&self, mode: Mode, t0: f64, y0: &State, t: f64) -> Option<State> {
+        (mode == Mode::Flight).then(|| self.flight_state(t0, y0, t))
+    }
+
+    fn guard_count(&self, mode: Mode) -> usize {
+        match mode {
+            Mode::Flight => 2,
+            Mode::Pivot => 4,
+            Mode::SlideLeft | Mode::SlideRight => 6,
+        }
+    }
+
+    fn guard(&self, mode: Mode, i: usize, t: f64, y: &State) -> f64 {
+        let p = &self.p;
+        match mode {
+            Mode::Flight => {
+                let h = self.h_c(t, y);
+                if i == 0 {
+                    h
+                } else {
+                    -h - self.penetration_tol_m
+                }
+            }
+            Mode::Pivot => match i {
+                3 => y[TH].cos(),
+                _ => {
+                    let e = self.pivot_eval(t, y);
+                    match i {
+                        0 => e.fz,
+                        1 => p.mu * e.fz - e.fx,
+                        _ => p.mu * e.fz + e.fx,
+                    }
+                }
+            },
+            Mode::SlideLeft | Mode::SlideRight => {
+                let sigma = mode.sigma();
+                match i {
+                    0 => self.slide_denominator(sigma, y[TH]),
+                    1 => {
+                        let q = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * y[OM];
+                        q * self.slide_denominator(sigma, y[TH]).signum()
+                    }
+                    2 => -sigma * y[VXC],
+                    3 => y[TH].cos(),
+                    4 => y[TH].sin(),
+                    _ => sigma * y[VXC] - 1e-9,
+                }
+            }
+        }
+    }
+
+    fn direction(&self, mode: Mode, i: usize) -> Direction {
+        match (mode, i) {
+            (Mode::Flight, 1) => Direction::Rising,
+            (Mode::SlideLeft | Mode::SlideRight, 0 | 4) => Direction::Either,
+            (Mode::SlideLeft | Mode::SlideRight, 5) => Direction::Rising,
+            _ => Direction::Falling,
+        }
+    }
+
+    fn on_event(&self, mode: Mode, i: usize, t: f64, y: &State) -> Transition<Mode, StickStop, NSTATE> {
+        let y = &self.canonical(mode, t, y);
+        let mut next = tr(match (mode, i) {
+            (Mode::Flight, 0) => self.landing(t, y),
+            (Mode::Flight, _) => Next::Stop(StickStop::Invalid(format!(
+                "C went below the plate in flight at t = {t:.6} s (a landing was missed)"
+            ))),
+            (Mode::Pivot, 3) => Next::Stop(StickStop::Fell),
+            (Mode::Pivot, _) => self.select_contact_from(t, y, false),
+            (_, 0) => self.jam(t, y),
+            (_, 1) => self.takeoff(t, y),
+            (_, 2) => self.select_contact(t, y),
+            (_, 3) => Next::Stop(StickStop::Fell),
+            (_, 4) => Next::Stop(StickStop::Invalid(format!(
+                "the sliding rod reached theta = 0 at t = {t:.6} s: C.14 is singular there"
+            ))),
+            _ => Next::Stop(StickStop::Invalid(format!(
+                "C slips against the friction force at t = {t:.6} s: no consistent slide"
+            ))),
+        });
+        // The energy accumulators restart from zero in every mode (keeping them small keeps
+        // their share of the error control honest); the new state carries only what the
+        // reset itself added (impulse work, impact loss). The run's observer sums them.
+        if let Transition::To { state, .. } = &mut next {
+            for k in W_PLATE..=D_IMPACT {
+                state[k] -= y[k];
+            }
+        }
+        next
+    }
+
+    fn max_step(&self, mode: Mode, t: f64, y: &State) -> f64 {
+        match mode {
+            Mode::Flight => self.flight_step(t, y),
+            _ => self.max_contact_step_s,
+        }
+    }
+}
