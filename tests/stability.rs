@@ -12,6 +12,10 @@
 //! - Zeno: a ball bouncing with 0 < e < 1 makes infinitely many impacts before
 //!   t_inf = t1 (1 + e)/(1 - e). The event-driven driver reports `Outcome::Zeno` there
 //!   instead of hanging; Moreau-Jean passes through the accumulation to rest.
+//! - 1/sin(theta): the stick's sliding equations (C.14) divide by sin(theta). Near the
+//!   vertical the slide's theta'' grows as 1/theta and an adaptive integrator's step
+//!   collapses (a typed StepTooSmall) before theta = 0; the pivot equation (C.6) from the
+//!   same state crosses theta = 0 smoothly.
 
 use locomotion_workbook::numerics::events::Direction;
 use locomotion_workbook::numerics::hybrid::{simulate, HybridSystem, Options, Outcome, Transition};
@@ -342,4 +346,82 @@ fn zeno_bouncing_stops_the_event_driver_and_moreau_jean_passes_to_rest() {
     );
     // log2(v1 / (g h)) = log2(4.43 / 0.0098) = 9 resolved bounces, give or take two
     assert!((5..=14).contains(&impacts), "{impacts} impacts");
+}
+
+// ---------------------------------------------------------------- 1/sin(theta)
+
+use locomotion_workbook::numerics::ode::Step;
+use locomotion_workbook::physics::stick::run::initial_state;
+use locomotion_workbook::physics::stick::{authors_scene, Mode, StickModel, NSTATE, OM, TH, VXC};
+
+#[test]
+fn sliding_equations_are_singular_at_theta_zero_the_pivot_equation_is_not() {
+    // C.14: theta'' = ((z_c'' - z_p'')/L - theta'^2 cos)/sin(theta): the slide's angular
+    // acceleration grows as 1/theta near the vertical, while the pivot's C.6,
+    // m L^2 theta'' = (g + z_s'') m L sin - k (theta - theta_0) - gamma theta', stays
+    // bounded. Closed-form scaling: theta'' theta tends to a constant (to O(theta^2)).
+    let m = StickModel::new(authors_scene(10.0));
+    let at = |th: f64| {
+        let mut y = initial_state(&m, 0.0, th);
+        y[OM] = -5.0;
+        (
+            m.slide_eval(1.0, 0.0, &y).theta_dd,
+            m.pivot_eval(0.0, &y).theta_dd,
+        )
+    };
+    let (s3, p3) = at(1e-3);
+    let (s6, p6) = at(1e-6);
+    assert!(
+        ((s6 * 1e-6) / (s3 * 1e-3) - 1.0).abs() < 1e-2,
+        "slide theta'' theta: {} vs {}",
+        s3 * 1e-3,
+        s6 * 1e-6
+    );
+    assert!(
+        s6.abs() > 1e5 * p6.abs().max(1.0),
+        "slide {s6} vs pivot {p6}"
+    );
+    assert!(
+        (p6 - p3).abs() < 1e-2 * p3.abs().max(1.0),
+        "pivot bounded: {p3} {p6}"
+    );
+    assert!(
+        !m.slide_eval(1.0, 0.0, &initial_state(&m, 0.0, 0.0))
+            .theta_dd
+            .is_finite(),
+        "C.14 at theta = 0"
+    );
+}
+
+#[test]
+fn integrating_the_slide_into_theta_zero_fails_the_pivot_crosses_it() {
+    // A rod sliding with C moving right (x_c' = 0.5 m/s) and theta' = -5 rad/s from
+    // theta = 0.05 rad is driven to the vertical. Adaptive Dormand-Prince on C.14 cannot
+    // pass theta = 0: its step collapses (a typed StepTooSmall, never a hang or a NaN)
+    // with theta within 1e-6 rad of 0. The pivot flow (C.6) from the same state crosses
+    // theta = 0 in one smooth sweep: the singularity belongs to the sliding equations.
+    let m = StickModel::new(authors_scene(10.0));
+    let mut y = initial_state(&m, 0.0, 0.05);
+    y[OM] = -5.0;
+    y[VXC] = 0.5;
+    let flow = |mode: Mode| {
+        move |t: f64, y: &[f64; NSTATE]| {
+            locomotion_workbook::numerics::hybrid::HybridSystem::flow(&m, mode, t, y)
+        }
+    };
+    let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(1e-10, 1e-10));
+    let mut last_theta = y[TH];
+    let r = integ.integrate(&flow(Mode::SlideLeft), 0.0, y, 0.01, |s: &Step<NSTATE>| {
+        last_theta = s.y1[TH]
+    });
+    assert!(matches!(r, Err(OdeError::StepTooSmall { .. })), "{r:?}");
+    assert!(last_theta.abs() < 1e-6 && last_theta > 0.0, "{last_theta}");
+    let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(1e-10, 1e-10));
+    let mut crossed = false;
+    let y1 = integ
+        .integrate(&flow(Mode::Pivot), 0.0, y, 0.02, |s: &Step<NSTATE>| {
+            crossed |= s.y1[TH] < 0.0
+        })
+        .unwrap();
+    assert!(crossed && y1.iter().all(|v| v.is_finite()), "{y1:?}");
 }

@@ -116,7 +116,8 @@ impl RunSummary {
     /// Fraction of the run's time spent in each mode (1), [`Mode::ALL`] order.
     pub fn phase_fractions(&self) -> [f64; 4] {
         let total: f64 = self.mode_time_s.iter().sum();
-        self.mode_time_s.map(|x| if total > 0.0 { x / total } else { 0.0 })
+        self.mode_time_s
+            .map(|x| if total > 0.0 { x / total } else { 0.0 })
     }
 }
 
@@ -195,7 +196,14 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
         }
     }
 
-    fn event(&mut self, t: f64, from: Mode, guard: usize, _before: &State, after: Option<(Mode, &State)>) {
+    fn event(
+        &mut self,
+        t: f64,
+        from: Mode,
+        guard: usize,
+        _before: &State,
+        after: Option<(Mode, &State)>,
+    ) {
         let to = after.map(|(m, _)| m);
         if self.rec.sequence_cap > 0 {
             self.sum.events.push((t, from, to));
@@ -295,7 +303,11 @@ pub fn simulate_stick(
         s.mode_time_s[m.index()] += dt;
     }
     let dur = run.t_end_s - t0;
-    s.mean_velocity_mps = if dur > 0.0 { (run.y_end[XC] - y0[XC]) / dur } else { 0.0 };
+    s.mean_velocity_mps = if dur > 0.0 {
+        (run.y_end[XC] - y0[XC]) / dur
+    } else {
+        0.0
+    };
     let mut y_end = model.canonical(run.mode_end, run.t_end_s, &run.y_end);
     for k in 0..4 {
         y_end[W_PLATE + k] += acc[k];
