@@ -169,6 +169,13 @@ fn quick_json_has_the_issue_keys_and_no_failed_claim() {
         }
         assert!(p["wall_s"].as_f64().unwrap() >= 0.0);
     }
+    let cps = res["stick_cycles_per_second"]
+        .as_f64()
+        .expect("stick_cycles_per_second");
+    assert!(cps > 0.0, "{cps}");
+    for problem in ["block-drift", "stick-speed"] {
+        assert!(wp.iter().any(|p| p["problem"] == problem), "{problem}");
+    }
     for f in res["failures"].as_array().expect("failures array") {
         for k in ["method", "scene", "symptom"] {
             assert!(f[k].is_string(), "{k} in {f}");
@@ -201,17 +208,32 @@ fn quick_summary_snapshot() {
         );
     }
     let wp = v["results"]["work_precision"].as_array().unwrap();
-    let mut labels: Vec<&str> = wp.iter().map(|p| p["method"].as_str().unwrap()).collect();
+    let mut labels: Vec<(&str, &str)> = wp
+        .iter()
+        .map(|p| {
+            (
+                p["problem"].as_str().unwrap(),
+                p["method"].as_str().unwrap(),
+            )
+        })
+        .collect();
     labels.dedup();
-    for l in labels {
-        s += &format!(
-            "ladder {l}: {} runs\n",
-            wp.iter().filter(|p| p["method"] == l).count()
-        );
+    for (pr, l) in labels {
+        let n = wp
+            .iter()
+            .filter(|p| p["problem"] == pr && p["method"] == l)
+            .count();
+        s += &format!("ladder {pr} {l}: {n} runs\n");
     }
+    let res = &v["results"];
     s += &format!(
         "block drift {:.3e} m/s\n",
-        v["results"]["block_drift_mps"].as_f64().unwrap()
+        res["block_drift_mps"].as_f64().unwrap()
+    );
+    // the stick's mean speed is checked to 1e-8 relative by the tolerance study
+    s += &format!(
+        "stick mean speed {:.4e} m/s\n",
+        res["stick_mean_speed_mps"].as_f64().unwrap()
     );
     insta::assert_snapshot!("quick_summary", s);
 }

@@ -17,6 +17,7 @@ pub mod failures;
 pub mod figures;
 pub mod measure;
 pub mod report_parts;
+pub mod stick_part;
 pub mod tables;
 pub mod work_precision;
 

@@ -9,6 +9,8 @@ use super::block_scene::{BlockMode, BlockScene};
 use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment};
 use crate::numerics::timestepping::{self as mj, MjOptions};
 use crate::physics::plate::PlateMotion;
+use crate::physics::stick::run::{initial_state, simulate_stick, Recording, StickOutcome};
+use crate::physics::stick::StickModel;
 use std::time::Instant;
 
 /// One run of a method: the observable, its cost and whether it completed.
@@ -23,6 +25,8 @@ pub struct Measured {
     pub events: u64,
     /// Did the run reach its end time with a finite result?
     pub completed: bool,
+    /// How the run ended (`completed`, `zeno`, `invalid`, `failed`, ...).
+    pub note: &'static str,
 }
 
 /// Records `x(t)` from the segment containing `t`.
@@ -70,6 +74,16 @@ pub fn drift_hybrid(scene: &BlockScene, opts: &Options, (t_a, t_b): (f64, f64)) 
         rhs_evals: run.stats.rhs_evals,
         events: run.event_count as u64,
         completed: run.outcome == Outcome::Completed && value.is_finite(),
+        note: outcome_label(&run.outcome),
+    }
+}
+
+fn outcome_label<X>(o: &Outcome<X>) -> &'static str {
+    match o {
+        Outcome::Completed => "completed",
+        Outcome::Stopped(_) => "stopped",
+        Outcome::Zeno { .. } => "zeno",
+        Outcome::Failed(_) => "failed",
     }
 }
 
@@ -99,6 +113,7 @@ pub fn drift_mj(scene: &BlockScene, steps_per_period: u32, (t_a, t_b): (f64, f64
                 rhs_evals: r.stats.rhs_evals,
                 events: r.stats.contact_steps,
                 completed: value.is_finite(),
+                note: "completed",
             }
         }
         Err(_) => Measured {
@@ -106,6 +121,7 @@ pub fn drift_mj(scene: &BlockScene, steps_per_period: u32, (t_a, t_b): (f64, f64
             rhs_evals: k,
             events: 0,
             completed: false,
+            note: "failed",
         },
     }
 }
@@ -164,5 +180,36 @@ pub fn drift_block_model(
         rhs_evals: run.stats.rhs_evals,
         events,
         completed: run.outcome == Outcome::Completed && run.mean_velocity_mps.is_finite(),
+        note: outcome_label(&run.outcome),
     }
+}
+
+/// The stick's mean horizontal speed of C (m/s) over `cycles` drive periods from rest at
+/// its static angle (the workbook's stick model, [`crate::physics::stick`]), with the
+/// driver options `opts`; the outcome's reason if it did not complete.
+pub fn stick_speed(model: &StickModel, cycles: f64, opts: &Options) -> (Measured, Option<String>) {
+    let p = &model.p;
+    let y0 = initial_state(model, 0.0, p.static_angle().unwrap_or(p.theta0_rad));
+    let r = simulate_stick(
+        model,
+        0.0,
+        y0,
+        cycles * model.period_s,
+        opts,
+        Recording::default(),
+    );
+    let completed = r.outcome == StickOutcome::Completed && r.mean_velocity_mps.is_finite();
+    let reason = match &r.outcome {
+        StickOutcome::Completed => None,
+        StickOutcome::Invalid(why) => Some(why.split(" at t =").next().unwrap_or(why).to_string()),
+        other => Some(other.label().to_string()),
+    };
+    let m = Measured {
+        value: r.mean_velocity_mps,
+        rhs_evals: r.stats.rhs_evals,
+        events: r.hops as u64,
+        completed,
+        note: r.outcome.label(),
+    };
+    (m, reason)
 }

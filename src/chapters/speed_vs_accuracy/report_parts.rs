@@ -244,10 +244,6 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         );
     }
     r.result("rhs_evals_to_reach_1e-6", Value::Object(cheapest));
-    r.result(
-        "work_precision",
-        Value::Array(points.iter().map(WpPoint::json).collect()),
-    );
 
     // ---- failures
     let mut fails: Vec<Failure> = Vec::new();
@@ -374,6 +370,15 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
             fmt_err(err_of("rk4-located", coarse))
         ),
     });
+    // ---- the stick (authors' scene; g = 10 m/s^2 unless --g-mps2 is given)
+    let stick_points =
+        super::stick_part::build(r, &mut fails, ctx.g_mps2.unwrap_or(10.0), ctx.quick);
+    let mut all_points = points.clone();
+    all_points.extend(stick_points.iter().cloned());
+    r.result(
+        "work_precision",
+        Value::Array(all_points.iter().map(WpPoint::json).collect()),
+    );
     r.result(
         "failures",
         Value::Array(fails.iter().map(Failure::json).collect()),
@@ -429,13 +434,19 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         map_err < 0.01,
         Verdict::Approximation,
     ));
-    super::tables::tables(r, &points, &fails, &sweep);
+    super::tables::tables(r, &all_points, &fails, &sweep);
     if let Some(dir) = ctx.figure_dir("speed-vs-accuracy") {
         r.figures.extend(super::figures::work_precision(
             &dir,
             &points,
             "block-drift",
             "Block drift",
+        )?);
+        r.figures.extend(super::figures::work_precision(
+            &dir,
+            &stick_points,
+            "stick-speed",
+            "Stick mean speed",
         )?);
         r.figures.extend(super::figures::economy(&dir, &sweep)?);
     }
