@@ -1,6 +1,7 @@
-//! Criterion benchmarks of the simulators: work per second of each method on the
-//! block benchmark scene (section 3.1.2: block on a vertically vibrating plate,
-//! Gamma = 2.5, f = 30 Hz, mu = 0.4, bias 0.02), 20 drive periods per iteration.
+//! Criterion benchmarks of the simulators: work per second of each method on the stick
+//! (authors' scene, 10 drive cycles per iteration) and on the block benchmark scene
+//! (section 3.1.2: block on a vertically vibrating plate, Gamma = 2.5, f = 30 Hz,
+//! mu = 0.4, bias 0.02), 20 drive periods per iteration.
 //!
 //! `cargo bench --bench numerics` (add `-- --quick` for a short run).
 
@@ -56,5 +57,19 @@ fn block(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, block);
+fn stick(c: &mut Criterion) {
+    use locomotion_workbook::chapters::speed_vs_accuracy::measure::stick_speed;
+    use locomotion_workbook::physics::stick::{authors_scene, StickModel};
+    let m = StickModel::new(authors_scene(10.0));
+    let mut g = c.benchmark_group("stick_10_cycles");
+    for tol in [1e-6, 1e-10] {
+        let o = Options { control: StepControl::tol(tol, tol), ..Options::default() };
+        g.bench_function(format!("dopri5_{tol:e}_located"), |b| b.iter(|| stick_speed(black_box(&m), 10.0, &o)));
+    }
+    let o = Options { method: Method::Rk4, control: StepControl::Fixed { h_s: m.period_s / 256.0 }, ..Options::default() };
+    g.bench_function("rk4_T/256_located", |b| b.iter(|| stick_speed(black_box(&m), 10.0, &o)));
+    g.finish();
+}
+
+criterion_group!(benches, block, stick);
 criterion_main!(benches);
