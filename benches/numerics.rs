@@ -63,11 +63,24 @@ fn stick(c: &mut Criterion) {
     let m = StickModel::new(authors_scene(10.0));
     let mut g = c.benchmark_group("stick_10_cycles");
     for tol in [1e-6, 1e-10] {
-        let o = Options { control: StepControl::tol(tol, tol), ..Options::default() };
-        g.bench_function(format!("dopri5_{tol:e}_located"), |b| b.iter(|| stick_speed(black_box(&m), 10.0, &o)));
+        let o = Options {
+            control: StepControl::tol(tol, tol),
+            ..Options::default()
+        };
+        g.bench_function(format!("dopri5_{tol:e}_located"), |b| {
+            b.iter(|| stick_speed(black_box(&m), 10.0, &o))
+        });
     }
-    let o = Options { method: Method::Rk4, control: StepControl::Fixed { h_s: m.period_s / 256.0 }, ..Options::default() };
-    g.bench_function("rk4_T/256_located", |b| b.iter(|| stick_speed(black_box(&m), 10.0, &o)));
+    let o = Options {
+        method: Method::Rk4,
+        control: StepControl::Fixed {
+            h_s: m.period_s / 256.0,
+        },
+        ..Options::default()
+    };
+    g.bench_function("rk4_T/256_located", |b| {
+        b.iter(|| stick_speed(black_box(&m), 10.0, &o))
+    });
     g.finish();
 }
 

@@ -27,9 +27,10 @@
 //! |P_t| <= mu P_n,   u_t,{k+1} != 0  =>  P_t = -mu P_n sign(u_t,{k+1})
 //! ```
 //!
-//! With the Delassus matrix `W = [w_n w_t]^T M^-1 [w_n w_t]` (2 x 2), `u_{k+1} = u_free
-//! + W P` and the problem is a small LCP that [`solve_contact`] solves exactly by
-//! enumerating its four cases: open, stick, slide towards +t, slide towards -t.
+//! With the Delassus matrix `W = [w_n w_t]^T M^-1 [w_n w_t]` (2 x 2), the new velocities
+//! are `u_{k+1} = u_free + W P` and the problem is a small LCP that [`solve_contact`]
+//! solves exactly by enumerating its four cases: open, stick, slide towards +t, slide
+//! towards -t.
 //!
 //! The model supplies its contact data through [`ContactModel`]; this module knows
 //! nothing of blocks, balls or sticks.

@@ -14,6 +14,10 @@ use super::block_scene::BlockScene;
 use crate::numerics::events::{illinois, time_tolerance};
 use crate::physics::plate::PlateMotion;
 
+/// One row of the economy sweep: (Gamma, exact drift m/s, flight-map drift m/s if any,
+/// mu_eff-law drift m/s).
+pub type SweepRow = (f64, f64, Option<f64>, f64);
+
 /// The document's averaged law: `v_ave = b v_z`, `v_z = delta omega` (m/s).
 pub fn law_drift(scene: &BlockScene) -> f64 {
     scene.bias * scene.plate.peak_velocity_mps() // formula: v_ave = F v_z / (m g)

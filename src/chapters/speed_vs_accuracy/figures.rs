@@ -1,5 +1,6 @@
 //! The chapter's figures: work-precision diagrams and the economy chart.
 
+use super::economy::SweepRow;
 use super::work_precision::WpPoint;
 use crate::error::Result;
 use crate::plot::{save_chart, save_panels, Chart, Legend, Series};
@@ -84,7 +85,7 @@ pub fn work_precision(
 }
 
 /// The economy chart: relative error of the averaged laws against Gamma.
-pub fn economy(dir: &Path, sweep: &[(f64, f64, Option<f64>, f64)]) -> Result<Vec<String>> {
+pub fn economy(dir: &Path, sweep: &[SweepRow]) -> Result<Vec<String>> {
     let rel = |m: f64, ex: f64| ((m - ex) / ex).abs().max(1e-6);
     let map: Vec<(f64, f64)> = sweep
         .iter()

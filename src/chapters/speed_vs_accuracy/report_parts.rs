@@ -1,7 +1,7 @@
 //! The chapter's computations turned into claims, results and tables.
 
 use super::block_scene::BlockScene;
-use super::economy::{flight_map_drift, law_drift};
+use super::economy::{flight_map_drift, law_drift, SweepRow};
 use super::failures::{stiff, zeno, Failure};
 use super::measure::{drift_block_model, drift_hybrid, timed, window};
 use super::work_precision::{cheapest_below, ladder, measure, Solver, WpPoint};
@@ -400,7 +400,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
             "cost_ratio_exact_over_flight_map": wall_exact / wall_map.max(1e-9),
         }),
     );
-    let sweep: Vec<(f64, f64, Option<f64>, f64)> = plan
+    let sweep: Vec<SweepRow> = plan
         .gammas
         .iter()
         .map(|&gm| {
@@ -409,7 +409,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
             (gm, ex, flight_map_drift(&s), law_drift(&s))
         })
         .collect();
-    let within = |f: &dyn Fn(&(f64, f64, Option<f64>, f64)) -> Option<f64>| -> Vec<f64> {
+    let within = |f: &dyn Fn(&SweepRow) -> Option<f64>| -> Vec<f64> {
         sweep
             .iter()
             .filter(|row| f(row).is_some_and(|m| ((m - row.1) / row.1).abs() < 0.01))

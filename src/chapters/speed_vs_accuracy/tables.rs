@@ -1,6 +1,7 @@
 //! Markdown tables of the course text. Wall times vary from run to run, so no table
 //! holds one: `workbook render --check` must see the same text every time.
 
+use super::economy::SweepRow;
 use super::failures::Failure;
 use super::report_parts::fmt_err;
 use super::work_precision::WpPoint;
@@ -8,12 +9,7 @@ use crate::report::{fmt_num, ChapterReport};
 use std::fmt::Write as _;
 
 /// Adds the tables `work_precision`, `failures`, `economy` and `results_stable`.
-pub fn tables(
-    r: &mut ChapterReport,
-    points: &[WpPoint],
-    fails: &[Failure],
-    sweep: &[(f64, f64, Option<f64>, f64)],
-) {
+pub fn tables(r: &mut ChapterReport, points: &[WpPoint], fails: &[Failure], sweep: &[SweepRow]) {
     let mut t = String::from("| problem | method | step (s) or tolerance | relative error | rhs evaluations |\n|---|---|---|---|---|\n");
     for p in points {
         let _ = writeln!(
