@@ -214,8 +214,9 @@ fn near_degenerate_instances_are_exact_where_naive_floating_point_fails() {
             );
         }
     }
-    // The family has teeth: the naive determinant gets many signs wrong.
-    assert!(naive_wrong > 100, "naive wrong only {naive_wrong} times");
+    // The family has teeth: the naive determinant gets more than half of the 2401
+    // signs wrong (1366 with IEEE double arithmetic without fused operations).
+    assert!(naive_wrong > 1000, "naive wrong only {naive_wrong} times");
 }
 
 #[test]
