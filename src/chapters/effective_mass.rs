@@ -399,8 +399,7 @@ fn self_locking_claim(r: &mut ChapterReport, mu: f64) {
         ),
     };
     let statement = format!(
-        "As printed (Fig. 1): theta < atan(mu) puts the stick in the self-locking regime. This is exact for a force along the stick (the point-mass model, the limit I_G -> 0: ratio gap {} at I_G = 1e-6 m L^2). For the uniform rod a vertical impulse has |J_l|/J_v = 3q/(4+q^2) <= q, so C holds whenever 3q/(4+q^2) <= mu: tan(theta) < mu is sufficient, not necessary ({detail}).",
-        format!("{limit_gap:.1e}")
+        "As printed (Fig. 1): theta < atan(mu) puts the stick in the self-locking regime. This is exact for a force along the stick (the point-mass model, the limit I_G -> 0: ratio gap {limit_gap:.1e} at I_G = 1e-6 m L^2). For the uniform rod a vertical impulse has |J_l|/J_v = 3q/(4+q^2) <= q, so C holds whenever 3q/(4+q^2) <= mu: tan(theta) < mu is sufficient, not necessary ({detail})."
     );
     let holds = holds && limit_gap < 1e-5;
     r.claim(Claim::judged(
