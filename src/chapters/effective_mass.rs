@@ -327,6 +327,15 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
             )
             .color(2),
         )
+        .series(
+            Series::points(
+                "rod jams up to / beyond: 3q/(4+q^2) = mu",
+                rod_lock_angles_closed_form(mu)
+                    .map(|(a, b)| vec![(a.to_degrees(), mu), (b.to_degrees(), mu)])
+                    .unwrap_or_default(),
+            )
+            .color(4),
+        )
         .hline(mu, &format!("mu = {}", fmt_num(mu)))
         .vline(lock, "")
         .x_range(0.0, 90.0)
