@@ -8,13 +8,15 @@
 //! linear system) checks every impulse ratio; the document's closed forms are checked
 //! against both.
 
+mod sketch;
+
 use super::{info, Context};
 use crate::error::{non_negative, open_interval, Result};
 use crate::physics::rigid::{
     contact_acceleration, effective_mass, impulse_for_velocity_change, in_stick_frame, jam_ratio,
     rod_contact_offset, stick_normal, tip_contact_offset, RigidBody,
 };
-use crate::plot::{save_chart, Chart, Legend, Series};
+use crate::plot::{save_chart, save_drawing, Chart, Legend, Series};
 use crate::report::{fmt_num, ChapterReport, Claim, Verdict};
 use nalgebra::{Matrix2, Vector2};
 
@@ -342,6 +344,14 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
         .y_range(0.0, 2.0)
         .legend(Legend::UpperLeft);
         r.figures.extend(save_chart(&chart, &dir, "impulse-ratio")?);
+        let sketch = sketch::Sketch {
+            theta_rad: theta,
+            mu,
+            ratio_point_mass: ratio_pm,
+            ratio_rod,
+        };
+        r.figures
+            .extend(save_drawing(&sketch, &dir, "impulse-sketch", (900, 700))?);
     }
     Ok(r)
 }

@@ -19,8 +19,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 /// Flags of the chapter.
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Average velocity of the object as X,Y in m/s (horizontal plane; write negative
-    /// values as --object-velocity=-2,0). Default 1,3: a boat reaching across the wind.
+    /// Average velocity of the object as X,Y in m/s (horizontal plane; negative parts
+    /// are fine: --object-velocity -2,0). Default 1,3: a boat reaching across the wind.
     #[arg(long, value_parser = parse_pair, default_value = "1,3", allow_hyphen_values = true)]
     pub object_velocity: V2,
     /// Average velocity of one medium as X,Y in m/s; repeat the flag for several media.
