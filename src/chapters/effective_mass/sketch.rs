@@ -19,8 +19,11 @@ pub struct Sketch {
     pub ratio_rod: f64,
 }
 
+/// A polyline in data units.
+type Path = Vec<(f64, f64)>;
+
 /// An arrow from `from` along the unit direction `u` with length `len` (data units).
-fn arrow(from: (f64, f64), u: (f64, f64), len: f64) -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+fn arrow(from: (f64, f64), u: (f64, f64), len: f64) -> (Path, Path) {
     let tip = (from.0 + len * u.0, from.1 + len * u.1);
     let (h, w) = (0.07, 0.035);
     let base = (tip.0 - h * u.0, tip.1 - h * u.1);
