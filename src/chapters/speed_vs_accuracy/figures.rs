@@ -3,7 +3,7 @@
 use super::economy::SweepRow;
 use super::work_precision::WpPoint;
 use crate::error::Result;
-use crate::plot::{save_chart, save_panels, Chart, Legend, Series};
+use crate::plot::{save_panels, Chart, Legend, Series};
 use std::path::Path;
 
 /// Method labels in drawing order with (palette colour, dashed).
@@ -84,8 +84,13 @@ pub fn work_precision(
     )
 }
 
-/// The economy chart: relative error of the averaged laws against Gamma.
-pub fn economy(dir: &Path, sweep: &[SweepRow]) -> Result<Vec<String>> {
+/// The economy charts: relative error of the averaged laws against Gamma (vertical
+/// shaking) and against the dither acceleration ratio K (horizontal shaking).
+pub fn economy(
+    dir: &Path,
+    sweep: &[SweepRow],
+    horizontal: &[super::economy::HorizontalRow],
+) -> Result<Vec<String>> {
     let rel = |m: f64, ex: f64| ((m - ex) / ex).abs().max(1e-6);
     let map: Vec<(f64, f64)> = sweep
         .iter()
@@ -93,7 +98,7 @@ pub fn economy(dir: &Path, sweep: &[SweepRow]) -> Result<Vec<String>> {
         .collect();
     let law: Vec<(f64, f64)> = sweep.iter().map(|r| (r.0, rel(r.3, r.1))).collect();
     let c = Chart::new(
-        "Averaged laws against the exact drift",
+        "Vertical shaking: averaged laws",
         "Gamma = delta omega^2 / g",
         "relative error of the drift",
     )
@@ -102,5 +107,18 @@ pub fn economy(dir: &Path, sweep: &[SweepRow]) -> Result<Vec<String>> {
     .series(Series::points("mu_eff law b delta omega", law).color(1))
     .hline(0.01, "1 %")
     .legend(Legend::UpperRight);
-    save_chart(&c, dir, "economy")
+    let arcsin: Vec<(f64, f64)> = horizontal.iter().map(|r| (r.0, rel(r.2, r.1))).collect();
+    let viscous: Vec<(f64, f64)> = horizontal.iter().map(|r| (r.0, rel(r.3, r.1))).collect();
+    let h = Chart::new(
+        "Horizontal dither: averaged laws",
+        "K = delta omega^2 / (mu g)",
+        "relative error of the drift",
+    )
+    .log_x()
+    .log_y()
+    .series(Series::line("arcsin law V sin(pi beta/2)", arcsin).color(0))
+    .series(Series::dashed("viscous law F/c, c = 2 mu g/(pi V)", viscous).color(1))
+    .hline(0.01, "1 %")
+    .legend(Legend::UpperRight);
+    save_panels(&[c, h], 2, dir, "economy")
 }

@@ -434,7 +434,10 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         map_err < 0.01,
         Verdict::Approximation,
     ));
+    let horizontal =
+        super::economy::horizontal_section(r, args.frequency_hz, args.mu, args.bias, g, ctx.quick);
     super::tables::tables(r, &all_points, &fails, &sweep);
+    super::tables::horizontal(r, &horizontal);
     if let Some(dir) = ctx.figure_dir("speed-vs-accuracy") {
         r.figures.extend(super::figures::work_precision(
             &dir,
@@ -448,7 +451,8 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
             "stick-speed",
             "Stick mean speed",
         )?);
-        r.figures.extend(super::figures::economy(&dir, &sweep)?);
+        r.figures
+            .extend(super::figures::economy(&dir, &sweep, &horizontal)?);
     }
     Ok(())
 }

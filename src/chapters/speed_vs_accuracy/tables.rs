@@ -59,3 +59,21 @@ pub fn tables(r: &mut ChapterReport, points: &[WpPoint], fails: &[Failure], swee
     }
     r.table("results_stable", t);
 }
+
+/// Adds the table `economy_horizontal`.
+pub fn horizontal(r: &mut ChapterReport, rows: &[super::economy::HorizontalRow]) {
+    let mut t = String::from("| K = delta omega^2/(mu g) | exact drift (m/s) | arcsin law: error | viscous law: error |\n|---|---|---|---|\n");
+    let stride = (rows.len() / 8).max(1);
+    for row in rows.iter().step_by(stride) {
+        let rel = |m: f64| format!("{:+.2} %", 100.0 * (m - row.1) / row.1);
+        let _ = writeln!(
+            t,
+            "| {} | {} | {} | {} |",
+            fmt_num(row.0),
+            fmt_num(row.1),
+            rel(row.2),
+            rel(row.3)
+        );
+    }
+    r.table("economy_horizontal", t);
+}
