@@ -243,12 +243,16 @@ fn bad_input_names_the_flag() {
     for (flag, bad) in [
         ("--frequency-hz", "NaN"),
         ("--frequency-hz", "-30"),
+        ("--frequency-hz", "150"),
         ("--gamma", "0.9"),
+        ("--gamma", "1.2"),
         ("--gamma", "inf"),
         ("--mu", "-0.1"),
         ("--bias", "0.5"),
         ("--bias", "-0.01"),
+        ("--bias", "0"),
         ("--restitution", "1"),
+        ("--restitution", "0.9"),
         ("--restitution", "NaN"),
     ] {
         let (code, out, err) = run(&[flag, bad, "--quick", "--no-figures"]);

@@ -203,31 +203,25 @@ pub fn zeno(
     mj_steps_per_period: u32,
 ) -> ZenoOutcome {
     let ball = Ball { e, g: scene.g };
-    let run = simulate(
-        &ball,
-        (),
-        0.0,
-        [1.0, 0.0],
-        10.0,
-        &Options {
-            record_events: false,
-            ..Options::default()
-        },
-        &mut (),
-    );
+    let t1 = (2.0 / scene.g).sqrt(); // formula: first impact from 1 m at sqrt(2 h/g)
+    let ball_t_inf_s = t1 * (1.0 + e) / (1.0 - e); // formula: t_inf = t1 (1 + e)/(1 - e)
+    let t_run = ball_t_inf_s + 1.0;
+    let opts = Options {
+        record_events: false,
+        ..Options::default()
+    };
+    let run = simulate(&ball, (), 0.0, [1.0, 0.0], t_run, &opts, &mut ());
     let ball_zeno_at_s = match run.outcome {
         Outcome::Zeno { t_s, .. } => Some(t_s),
         _ => None,
     };
-    let t1 = (2.0 / scene.g).sqrt(); // formula: first impact from 1 m at sqrt(2 h/g)
-    let ball_t_inf_s = t1 * (1.0 + e) / (1.0 - e); // formula: t_inf = t1 (1 + e)/(1 - e)
     let mut rest = f64::NAN;
     let _ = mj::simulate(
         &ball,
         0.0,
         [0.0, 1.0],
         [0.0, 0.0],
-        10.0,
+        t_run,
         &MjOptions::midpoint(1e-3),
         |s| {
             let resting = s.impulse.status == ContactStatus::Stick && s.v1[1].abs() < 1e-12;

@@ -163,7 +163,38 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
             other => block(&other.options(0).expect("hybrid"), false),
         },
     );
-    // Observed orders: least-squares slopes of log error against log step.
+    // Observed orders: least-squares slopes of log error against log step, measured on
+    // the default benchmark scene whatever the flags (the order a method shows on an
+    // observable with events depends on the scene: near Gamma = 1 or at small mu the
+    // events crowd and the asymptotic range starts beyond the ladder).
+    let bench = BlockScene::new(30.0, 2.5, 0.4, 0.02, g);
+    let order_points: Vec<WpPoint> = if bench == scene {
+        points.clone()
+    } else {
+        let bref = drift_block_model(&bench, &Options::default(), true, 64, tr, cy).value;
+        let bench_solvers = ladder(bench.period_s(), &plan.steps, &plan.tols, &plan.mj_steps);
+        measure(
+            "block-drift-default",
+            &bench_solvers,
+            bref,
+            1,
+            |s| match s {
+                Solver::MoreauJean {
+                    steps_per_period, ..
+                } => super::measure::drift_mj(&bench, *steps_per_period, window(&bench, tr, cy)),
+                other => drift_block_model(
+                    &bench,
+                    &other.options(0).expect("hybrid"),
+                    false,
+                    20,
+                    tr,
+                    cy,
+                ),
+            },
+        )
+    };
+    let points_all = points;
+    let points = order_points;
     // RK4 with events located on its cubic Hermite interpolant: order 4, +-1 because the
     // phase of the events inside the steps varies from one step size to the next; its
     // error reaches the round-off floor (~1e-12) near T/640, so it is fitted over the
@@ -174,7 +205,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     r.claim(Claim::close(
         "rk4-located-order",
         "numerics",
-        "RK4 with located events converges at order 4 on the drift (least-squares slope of log error against log step, errors above 1e-10)",
+        "RK4 with located events converges at order 4 on the drift of the default scene (least-squares slope of log error against log step, errors above 1e-10)",
         4.0,
         o_rk4,
         1.0,
@@ -185,7 +216,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     // 1.8). The check is "at least 0.7": Euler over its asymptotic range h <= T/320 (at
     // coarser steps a takeoff seen a step late adds an error that does not shrink
     // smoothly), Moreau-Jean over the whole ladder.
-    let h_asym = period / 320.0 * (1.0 + 1e-9);
+    let h_asym = bench.period_s() / 320.0 * (1.0 + 1e-9);
     let asym: Vec<WpPoint> = points
         .iter()
         .filter(|p| p.solver.knob() <= h_asym)
@@ -200,7 +231,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         r.claim(Claim::judged(
             &format!("{label}-order"),
             "numerics",
-            &format!("{name} converges on the drift at least at first order (least-squares slope of log error against log step >= 0.7)"),
+            &format!("{name} converges on the drift of the default scene at least at first order (least-squares slope of log error against log step >= 0.7)"),
             ">= 1",
             o,
             0.3,
@@ -209,6 +240,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         ));
     }
     r.result("observed_orders", Value::Object(order_json));
+    let points = points_all;
     let err_of = |label: &str, knob: f64| {
         points
             .iter()
@@ -340,14 +372,16 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     ));
     // Moreau-Jean at h = 1 ms loses bounces shorter than a step: it settles within a few
     // steps of the last resolved bounce, itself within ~2 v_min/(g (1-e)) of t_inf with
-    // v_min ~ g h: a few tens of ms at most; 0.05 s is the bound.
+    // v_min ~ g h, i.e. ~2 h/(1 - e): a few ms at e = 0.5; the bound is 10 h/(1 - e), at
+    // least 0.05 s.
+    let mj_rest_tol = (10.0 * 1e-3 / (1.0 - e)).max(0.05);
     r.claim(Claim::close(
         "zeno-ball-moreau-jean-rest",
         "numerics",
         "Moreau-Jean (h = 1 ms) passes through the same accumulation and keeps the ball at rest from about t_inf on (s)",
         z.ball_t_inf_s,
         z.ball_mj_rest_s,
-        0.05,
+        mj_rest_tol,
     ));
     // Moreau-Jean at T/1000..T/4000 is first order with an error of ~1e-3 relative on
     // the drift (the ladder above); the sticking threshold of 0.1 mm/s changes the drift
@@ -388,8 +422,8 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     let (law, map) = (law_drift(&scene), flight_map_drift(&scene));
     let (_, wall_exact) = timed(plan.repeats.max(3), || block(&Options::default(), true));
     let (_, wall_map) = timed(plan.repeats.max(3) * 100, || flight_map_drift(&scene));
-    let map_err = map.map_or(f64::NAN, |m| {
-        ((m - reference.value) / reference.value).abs()
+    let map_err = map.map_or(json!("no sticking orbit"), |m| {
+        json!(((m - reference.value) / reference.value).abs())
     });
     let law_err = ((law - reference.value) / reference.value).abs();
     r.result(
@@ -422,16 +456,21 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         "economy_within_1pct_gammas",
         json!({"flight_map": map_ok, "mu_eff_law": law_ok, "of": plan.gammas.len()}),
     );
-    // The flight map neglects the slip before takeoff, of relative size ~ b/mu
-    // (bias 0.02, mu 0.4: 5 % of the contact-phase slip, well under 1 % of the drift).
+    // The claim is checked inside the limit it names, whatever the flags: Gamma = 2.5
+    // (a period-one sticking orbit) and b = mu/80. The flight map neglects the slip
+    // before takeoff, whose share of the drift scales with b/mu (measured 0.4 % at
+    // b/mu = 1/20): at b/mu = 1/80 it is well under 1 %.
+    let lim = BlockScene::new(args.frequency_hz, 2.5, args.mu, args.mu / 80.0, g);
+    let lim_exact = drift_block_model(&lim, &Options::default(), true, 64, tr, cy).value;
+    let lim_err = flight_map_drift(&lim).map_or(f64::NAN, |m| ((m - lim_exact) / lim_exact).abs());
     r.claim(Claim::judged(
         "flight-map-economy",
         "3.1.2",
-        "Approximation: the flight-map law v_ave = b g t_f^2/(2 n T) (sticking landings, no slip before takeoff) reproduces the exact drift within 1 % in the limit b << mu of period-n sticking orbits; at the scene",
+        "Approximation: the flight-map law v_ave = b g t_f^2/(2 n T) (sticking landings, no slip before takeoff) reproduces the exact drift within 1 % in the limit b << mu of period-n sticking orbits; at Gamma = 2.5, b = mu/80 (relative error)",
         0.0,
-        map_err,
+        lim_err,
         0.01,
-        map_err < 0.01,
+        lim_err < 0.01,
         Verdict::Approximation,
     ));
     let horizontal =
