@@ -64,12 +64,14 @@ fn validate(a: &Args) -> Result<()> {
         |f| f > 0.0 && f <= 100.0,
         "0 < value <= 100 (Hz)",
     )?;
+    // Flight needs Gamma > 1; below 1.5 the flights are shorter than the guard sampling
+    // interval T/20 of the integrated runs, which then miss landings.
     open_interval(
         "--gamma",
         a.gamma,
-        1.0,
+        1.5,
         50.0,
-        "dimensionless; flight needs Gamma > 1",
+        "dimensionless; flights long enough to sample need Gamma > 1.5",
     )?;
     open_interval("--mu", a.mu, 0.0, 2.0, "dimensionless")?;
     open_interval(
