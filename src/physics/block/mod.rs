@@ -366,6 +366,46 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
         [u, w, 0.0, 0.0]
     }
 
+    /// The sampling step, shortened so that a guard dipping towards zero and back (a
+    /// grazing take-off at Gamma just above 1, a grazing landing, a velocity that just
+    /// touches the plate's) is sampled at its minimum: from the guard's slope and
+    /// curvature (forward differences on the mode's closed form, or on time for the
+    /// guards that depend on time only), the step ends at the predicted minimum when the
+    /// predicted minimum value is below half the current value; never below
+    /// `sample_s / 1024`.
+    fn graze_step(&self, mode: BlockMode, t: f64, y: &[f64; 4]) -> f64 {
+        let mut step = self.sample_s;
+        let h = self.sample_s / 64.0;
+        let time_only =
+            |i: usize| mode != BlockMode::Flight && (i == 0 || mode == BlockMode::Stick);
+        for i in 0..self.guard_count(mode) {
+            if !time_only(i) && !self.closed_forms {
+                continue;
+            }
+            let at = |s: f64| {
+                let ys = if s == t {
+                    *y
+                } else {
+                    self.exact(mode, t, y, s).unwrap_or(*y)
+                };
+                self.guard(mode, i, s, &ys)
+            };
+            let (f0, f1, f2) = (at(t), at(t + h), at(t + 2.0 * h));
+            let d1 = (-3.0 * f0 + 4.0 * f1 - f2) / (2.0 * h); // formula: forward-difference slope
+            let d2 = (f0 - 2.0 * f1 + f2) / (h * h); // formula: forward-difference curvature
+            let decreasing_to_min =
+                (f0 > 0.0 && d1 < 0.0 && d2 > 0.0) || (f0 < 0.0 && d1 > 0.0 && d2 < 0.0);
+            if decreasing_to_min {
+                let s_min = -d1 / d2; // formula: time of the parabola's extremum
+                let f_min = f0 - d1 * d1 / (2.0 * d2);
+                if f_min.abs() < 0.5 * f0.abs() || f_min.signum() != f0.signum() {
+                    step = step.min(s_min.max(self.sample_s / 1024.0));
+                }
+            }
+        }
+        step
+    }
+
     /// First step of a flight that starts at the plate (`h = 0`): short enough that the
     /// height is seen positive before the block can come back (the relative apex bound).
     fn first_flight_step(&self, t: f64, y: &[f64; 4]) -> f64 {
@@ -505,7 +545,7 @@ impl<P: PlateMotion + ?Sized> HybridSystem<4> for BlockSystem<'_, P> {
         if mode == BlockMode::Flight && y[2] <= 0.0 {
             self.first_flight_step(t, y)
         } else {
-            self.sample_s
+            self.graze_step(mode, t, y)
         }
     }
 
