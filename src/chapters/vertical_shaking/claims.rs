@@ -211,6 +211,19 @@ pub fn add(
         Verdict::Approximation,
     ));
 
+    // 8. Period doublings from the multiplier, checked by the classifier.
+    let (pd_ok, pd_n) = check_period_doublings(scene, quick);
+    r.claim(Claim::judged(
+        "period-doubling-multiplier",
+        "3.1.2 (derived)",
+        "Beyond Gamma_n the block never rests and flies exactly n periods per flight (touch-and-go at cos(phi) = n pi/Gamma); this orbit period-doubles where the multiplier of the one-flight map reaches -1 (Gamma = 3.7242, 6.5938, 9.6346 for n = 1, 2, 3). Check: after a long transient the classifier finds P1 just below and P2 just above each located value.",
+        true,
+        pd_ok && pd_n > 0,
+        "exact",
+        pd_ok && pd_n > 0,
+        Verdict::Confirmed,
+    ));
+
     // 7. The located boundaries at Gamma_n.
     let mut worst = 0.0f64;
     let mut found = 0;
@@ -238,6 +251,24 @@ pub fn add(
         found == 3 && worst <= tol,
         Verdict::Confirmed,
     ));
+}
+
+/// Checks the multiplier-located period doublings (n = 1, 2, 3) with the classifier
+/// after a long transient just below and above; returns `(all consistent, count)`.
+fn check_period_doublings(scene: &Scene, quick: bool) -> (bool, usize) {
+    // Near the doubling the multiplier falls like ~5 per unit Gamma, so at 0.01 away
+    // |lambda| < 0.96 and 2000 flights-worth of transient leave < 1e-30 of a deviation.
+    let (d, long) = if quick { (0.01, 2000) } else { (0.005, 4000) };
+    let mut ok = true;
+    let mut n = 0;
+    for k in 1..=3u32 {
+        let pd = super::regimes::period_doubling_gamma(f64::from(k));
+        let below = super::regimes::regime_at(scene, pd - d, long, 60).label();
+        let above = super::regimes::regime_at(scene, pd + d, long, 60).label();
+        ok &= below == format!("no-rest P1/{k}T") && above == format!("no-rest P2/{}T", 2 * k);
+        n += 1;
+    }
+    (ok, n)
 }
 
 /// The law's error taken apart: each approximation switched on in turn.

@@ -112,13 +112,21 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     let located: Vec<f64> = bounds.iter().map(|b| b.gamma).collect();
     r.result("regime_boundaries_gamma", located.clone());
     r.result("regime_at_gamma", regimes::classify(&st).label());
-    let mut t = String::from("| Gamma | below | above | bracket | shift with 4x transient | accuracy |\n|---|---|---|---|---|---|\n");
+    let pd: Vec<f64> = (1..=3)
+        .map(|n| regimes::period_doubling_gamma(f64::from(n)))
+        .collect();
+    r.result("period_doubling_gamma", pd);
+    let mut t = String::from("| Gamma | below | above | located by | bracket | shift with 4x transient | accuracy |\n|---|---|---|---|---|---|---|\n");
     for b in &bounds {
         t.push_str(&format!(
-            "| {:.6} | {} | {} | {:.1e} | {:.1e} | {:.1e} |\n",
+            "| {:.6} | {} | {} | {} | {:.1e} | {:.1e} | {:.1e} |\n",
             b.gamma,
             b.below,
             b.above,
+            match b.band {
+                Some((lo, hi)) => format!("multiplier = -1 (classifier band {lo:.3} to {hi:.3})"),
+                None => "classifier".to_string(),
+            },
             b.bracket,
             (b.gamma - b.gamma_long).abs(),
             b.accuracy()

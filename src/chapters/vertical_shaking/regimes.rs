@@ -121,6 +121,11 @@ pub struct Boundary {
     pub bracket: f64,
     /// The same boundary located after a transient four times longer.
     pub gamma_long: f64,
+    /// How it was located: `classifier` (bisection on the regime label) or
+    /// `multiplier` (bisection on the one-flight map's multiplier reaching -1).
+    pub method: &'static str,
+    /// For a period doubling: the classifier's band (last P1, first P2) it must lie in.
+    pub band: Option<(f64, f64)>,
 }
 
 impl Boundary {
@@ -165,7 +170,7 @@ pub fn boundaries(
         .filter(|w| w[0].regime != w[1].regime)
         .map(|w| (w[0].gamma, w[1].gamma, w[0].regime, w[1].regime))
         .collect();
-    par_map(&pairs, "regime boundaries", |&(a, b, left, right)| {
+    let found = par_map(&pairs, "regime boundaries", |&(a, b, left, right)| {
         let (g, width) = bisect(scene, a, b, left, transient, observe, iters);
         // Check the final bracket after a 4x longer transient; where the label moves
         // (slow convergence near a period doubling) locate the boundary again with it.
@@ -184,6 +189,131 @@ pub fn boundaries(
             above: right.label(),
             bracket: width,
             gamma_long: g_long,
+            method: "classifier",
+            band: None,
         }
-    })
+    });
+    merge_period_doublings(found)
+}
+
+/// Replaces each period doubling of an n-period touch-and-go orbit (`no-rest P1/nT` to
+/// `no-rest P2/2nT`, possibly through a thin `aperiodic` band that is only the slow
+/// convergence near the bifurcation) by the Gamma where the one-flight map's multiplier
+/// reaches -1; the classifier's band is kept as a check.
+fn merge_period_doublings(found: Vec<Boundary>) -> Vec<Boundary> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < found.len() {
+        let b = &found[i];
+        let n = b
+            .below
+            .strip_prefix("no-rest P1/")
+            .and_then(|r| r.strip_suffix('T'))
+            .and_then(|r| r.parse::<u32>().ok());
+        if let Some(n) = n {
+            let p2 = format!("no-rest P2/{}T", 2 * n);
+            let j = if b.above == p2 {
+                Some(i)
+            } else if b.above == "aperiodic" && found.get(i + 1).is_some_and(|c| c.above == p2) {
+                Some(i + 1)
+            } else {
+                None
+            };
+            if let Some(j) = j {
+                let pd = period_doubling_gamma(f64::from(n));
+                if pd.is_finite() {
+                    let lo = b.gamma - b.accuracy();
+                    let hi = found[j].gamma + found[j].accuracy();
+                    // Accuracy: the multiplier's central difference is good to ~1e-9 and
+                    // it falls ~5 per unit Gamma there, so Gamma to ~1e-9 (bisection 1e-12).
+                    out.push(Boundary {
+                        gamma: pd,
+                        below: b.below.clone(),
+                        above: p2,
+                        bracket: 1e-9,
+                        gamma_long: pd,
+                        method: "multiplier",
+                        band: Some((lo, hi)),
+                    });
+                    i = j + 1;
+                    continue;
+                }
+            }
+        }
+        out.push(b.clone());
+        i += 1;
+    }
+    out
+}
+
+/// The one-flight map of a touch-and-go block, in units g = omega = 1 (plate
+/// `z = Gamma sin(phi)`): leaving at phase `phi` with the plate's velocity, the phase of
+/// the next landing minus `2 pi n`. Landing is the first root of the gap
+/// `Gamma sin(phi) + Gamma cos(phi) s - s^2/2 - Gamma sin(phi + s)` after `s = 0`,
+/// found by a scan (step 1e-3) and bisection to 1e-15.
+fn landing_phase(gamma: f64, phi: f64, n: f64) -> f64 {
+    let gap =
+        |s: f64| gamma * phi.sin() + gamma * phi.cos() * s - 0.5 * s * s - gamma * (phi + s).sin(); // formula: ballistic gap
+    let ds = 1e-3;
+    let mut a = ds;
+    while gap(a + ds) > 0.0 && a < 1e3 {
+        a += ds;
+    }
+    let mut b = a + ds;
+    for _ in 0..80 {
+        let m = 0.5 * (a + b);
+        if gap(m) > 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    phi + b - std::f64::consts::TAU * n
+}
+
+/// Multiplier `dF/dphi` of the one-flight map at the touch-and-go orbit whose flights
+/// last exactly `n` periods (`cos(phi*) = n pi / Gamma`, Gamma > Gamma_n), by central
+/// differences (step 1e-5: truncation ~1e-10, round-off ~1e-10).
+pub fn touch_and_go_multiplier(gamma: f64, n: f64) -> f64 {
+    let phi = (n * std::f64::consts::PI / gamma).acos(); // formula: Gamma cos(phi*) = n pi
+    let h = 1e-5;
+    (landing_phase(gamma, phi + h, n) - landing_phase(gamma, phi - h, n)) / (2.0 * h)
+}
+
+/// Gamma at which the n-period touch-and-go orbit period-doubles (multiplier -1),
+/// by bisection on `[Gamma_n (1 + 1e-9), Gamma_n + 2]` to 1e-12.
+pub fn period_doubling_gamma(n: f64) -> f64 {
+    let gn = (1.0 + (n * std::f64::consts::PI).powi(2)).sqrt();
+    let (mut a, mut b) = (gn * (1.0 + 1e-9), gn + 2.0);
+    if touch_and_go_multiplier(a, n) < -1.0 || touch_and_go_multiplier(b, n) > -1.0 {
+        return f64::NAN;
+    }
+    while b - a > 1e-12 {
+        let m = 0.5 * (a + b);
+        if touch_and_go_multiplier(m, n) > -1.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn touch_and_go_orbit_is_superstable_at_gamma_n_and_doubles_before_gamma_n_plus_1() {
+        // At Gamma_n the n-period flight lands exactly at the take-off phase where the
+        // plate's acceleration is -g: the multiplier starts at 0 and falls through -1.
+        for n in [1.0, 2.0] {
+            let gn = (1.0 + (n * std::f64::consts::PI).powi(2)).sqrt();
+            let m = touch_and_go_multiplier(gn * (1.0 + 1e-6), n);
+            assert!(m < 0.0 && m > -1e-3, "n {n}: {m}");
+            let pd = period_doubling_gamma(n);
+            assert!(pd > gn && pd < gn + 1.0, "n {n}: {pd}");
+            assert!((touch_and_go_multiplier(pd, n) + 1.0).abs() < 1e-6);
+        }
+    }
 }
