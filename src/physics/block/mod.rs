@@ -60,6 +60,7 @@ use crate::physics::friction::{
 };
 use crate::physics::plate::PlateMotion;
 
+pub mod contact_form;
 mod hybrid_impl;
 mod run;
 #[cfg(test)]
