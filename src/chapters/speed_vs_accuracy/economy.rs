@@ -28,7 +28,7 @@ pub fn law_drift(scene: &BlockScene) -> f64 {
 /// faster than g (then the motion is not a sticking period-n orbit).
 pub fn flight_map_drift(scene: &BlockScene) -> Option<f64> {
     let p = &scene.plate;
-    let (w, g) = (p.omega_rad_s, scene.g);
+    let (w, g) = (p.omega_rad_s, scene.g());
     let gamma = p.peak_acceleration_mps2() / g;
     if gamma <= 1.0 {
         return None;
@@ -56,7 +56,7 @@ pub fn flight_map_drift(scene: &BlockScene) -> Option<f64> {
     }
     let (t_f, _) = illinois(gap, a, b, gap(a), gb, time_tolerance(b));
     let t_land = t_to + t_f;
-    if scene.g + p.az_mps2(t_land) <= 0.0 {
+    if scene.g() + p.az_mps2(t_land) <= 0.0 {
         return None; // landing in the takeoff window: not a sticking orbit
     }
     let n = (t_f / period).ceil(); // next takeoff: the first takeoff phase after landing

@@ -2,11 +2,12 @@
 
 use super::block_scene::BlockScene;
 use super::measure::{drift_block_model, drift_mj, window};
-use crate::numerics::events::Direction;
-use crate::numerics::hybrid::{simulate, HybridSystem, Transition};
 use crate::numerics::hybrid::{Options, Outcome};
 use crate::numerics::ode::{Integrator, Method, OdeError, StepControl};
-use crate::numerics::timestepping::{self as mj, ContactModel, ContactStatus, MjOptions};
+use crate::numerics::timestepping::{self as mj, ContactStatus, MjOptions};
+use crate::physics::block::contact_form::BlockContact;
+use crate::physics::block::{simulate_block, BlockOptions};
+use crate::physics::plate::{Axis, Harmonic};
 use serde_json::{json, Value};
 
 /// One observed failure: `{method, scene, symptom}`.
@@ -128,73 +129,13 @@ pub struct ZenoOutcome {
     pub drift_mj_mps: f64,
 }
 
-/// A ball above a fixed floor, `y = [height m, velocity m/s]`, restitution `e`.
-struct Ball {
-    e: f64,
-    g: f64,
-}
-
-impl HybridSystem<2> for Ball {
-    type Mode = ();
-    type Stop = ();
-    fn flow(&self, _m: (), _t: f64, y: &[f64; 2]) -> [f64; 2] {
-        [y[1], -self.g]
-    }
-    fn exact(&self, _m: (), t0: f64, y0: &[f64; 2], t: f64) -> Option<[f64; 2]> {
-        let s = t - t0;
-        Some([y0[0] + y0[1] * s - 0.5 * self.g * s * s, y0[1] - self.g * s]) // formula: ballistic flight
-    }
-    fn max_step(&self, _m: (), _t: f64, y: &[f64; 2]) -> f64 {
-        if y[0] <= 0.0 && y[1] > 0.0 {
-            y[1] / self.g // leaving the floor: sample at the apex first
-        } else {
-            0.01
-        }
-    }
-    fn guard_count(&self, _m: ()) -> usize {
-        1
-    }
-    fn guard(&self, _m: (), _i: usize, _t: f64, y: &[f64; 2]) -> f64 {
-        y[0]
-    }
-    fn direction(&self, _m: (), _i: usize) -> Direction {
-        Direction::Falling
-    }
-    fn on_event(&self, _m: (), _i: usize, _t: f64, y: &[f64; 2]) -> Transition<(), (), 2> {
-        Transition::To {
-            mode: (),
-            state: [0.0, -self.e * y[1]],
-        } // formula: v+ = -e v-
-    }
-}
-
-impl ContactModel<2> for Ball {
-    fn inv_mass(&self, _t: f64, _q: &[f64; 2], _h: f64) -> [[f64; 2]; 2] {
-        [[1.0, 0.0], [0.0, 1.0]]
-    }
-    fn free_velocity(&self, _t: f64, _q: &[f64; 2], v: &[f64; 2], h: f64) -> [f64; 2] {
-        [v[0], v[1] - self.g * h]
-    }
-    fn gap(&self, _t: f64, q: &[f64; 2]) -> f64 {
-        q[1]
-    }
-    fn jacobians(&self, _t: f64, _q: &[f64; 2]) -> ([f64; 2], [f64; 2]) {
-        ([0.0, 1.0], [1.0, 0.0])
-    }
-    fn restitution(&self) -> f64 {
-        self.e
-    }
-    fn mu(&self) -> f64 {
-        0.5
-    }
-}
-
-/// The Zeno scenes with restitution `e`: (1) a ball dropped from 1 m on a fixed floor,
-/// event-driven (stops with `Outcome::Zeno`) and Moreau-Jean at h = 1 ms (comes to
-/// rest); (2) the block on the plate with peak acceleration `gamma_zeno` g, by the
-/// workbook's block model without a rest threshold (each chattering sequence is ended
-/// only by round-off) and with the sticking transition (rebounds below 0.1 mm/s end in
-/// contact), and by Moreau-Jean, over `cycles` periods after `transient`.
+/// The Zeno scenes with restitution `e`: (1) a ball (the point-mass block, no bias)
+/// dropped from 1 m on a fixed floor (a plate at rest), event-driven (stops with
+/// `Outcome::Zeno`) and Moreau-Jean at h = 1 ms (comes to rest); (2) the block on the
+/// plate with peak acceleration `gamma_zeno` g, by the workbook's block model without a
+/// rest threshold (each chattering sequence is ended only by round-off) and with the
+/// sticking transition (rebounds below 0.1 mm/s end in contact), and by Moreau-Jean,
+/// over `cycles` periods after `transient`.
 pub fn zeno(
     scene: &BlockScene,
     e: f64,
@@ -202,43 +143,51 @@ pub fn zeno(
     cycles: u32,
     mj_steps_per_period: u32,
 ) -> ZenoOutcome {
-    let ball = Ball { e, g: scene.g };
-    let t1 = (2.0 / scene.g).sqrt(); // formula: first impact from 1 m at sqrt(2 h/g)
+    let g = scene.g();
+    let t1 = (2.0 / g).sqrt(); // formula: first impact from 1 m at sqrt(2 h/g)
     let ball_t_inf_s = t1 * (1.0 + e) / (1.0 - e); // formula: t_inf = t1 (1 + e)/(1 - e)
     let t_run = ball_t_inf_s + 1.0;
-    let opts = Options {
+    let floor = Harmonic::sine(Axis::Z, 0.0, 1.0); // a plate at rest
+    let mut ball = scene.params;
+    ball.bias_mps2 = 0.0;
+    ball.restitution = e;
+    ball.rest_velocity_mps = 0.0;
+    let opts = BlockOptions {
+        hybrid: Options {
+            record_events: false,
+            ..Options::default()
+        },
         record_events: false,
-        ..Options::default()
+        start: (0.0, [0.0, 0.0, 1.0, 0.0]),
+        ..BlockOptions::default()
     };
-    let run = simulate(&ball, (), 0.0, [1.0, 0.0], t_run, &opts, &mut ());
+    let run = simulate_block(&ball, &floor, t_run, &opts);
     let ball_zeno_at_s = match run.outcome {
         Outcome::Zeno { t_s, .. } => Some(t_s),
         _ => None,
     };
     let mut rest = f64::NAN;
-    let _ = mj::simulate(
-        &ball,
-        0.0,
-        [0.0, 1.0],
-        [0.0, 0.0],
-        t_run,
-        &MjOptions::midpoint(1e-3),
-        |s| {
-            let resting = s.impulse.status == ContactStatus::Stick && s.v1[1].abs() < 1e-12;
-            if !resting {
-                rest = f64::NAN;
-            } else if rest.is_nan() {
-                rest = s.t1;
-            }
-        },
-    );
-    let mut s = BlockScene {
-        e,
-        stick_below_mps: 0.0,
-        ..*scene
-    };
+    if let Some(contact) = BlockContact::new(ball, &floor) {
+        let _ = mj::simulate(
+            &contact,
+            0.0,
+            [0.0, 1.0],
+            [0.0, 0.0],
+            t_run,
+            &MjOptions::midpoint(1e-3),
+            |s| {
+                let resting = s.impulse.status == ContactStatus::Stick && s.v1[1].abs() < 1e-12;
+                if !resting {
+                    rest = f64::NAN;
+                } else if rest.is_nan() {
+                    rest = s.t1;
+                }
+            },
+        );
+    }
+    let s = scene.with_restitution(e, 0.0);
     let chattering = drift_block_model(&s, &Options::default(), true, 64, transient, cycles);
-    s.stick_below_mps = 1e-4;
+    let s = scene.with_restitution(e, 1e-4);
     let sticking = drift_block_model(&s, &Options::default(), true, 64, transient, cycles);
     let mj = drift_mj(&s, mj_steps_per_period, window(&s, transient, cycles));
     ZenoOutcome {

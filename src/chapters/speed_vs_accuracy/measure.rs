@@ -1,14 +1,16 @@
 //! Observables and timed runs: the block's steady drift by every method.
 //!
 //! The drift is the mean horizontal velocity `(x(t_b) - x(t_a)) / (t_b - t_a)` over
-//! whole drive periods after a transient. The event-driven runs read `x(t_a)` from the
-//! dense output of the segment that contains `t_a`; Moreau-Jean runs use a step that
-//! divides the period, so `t_a` and `t_b` are step boundaries.
+//! whole drive periods after a transient. Every run is the workbook's block model
+//! ([`crate::physics::block`]): event-driven runs take `x` at whole periods from
+//! [`crate::physics::block::BlockRun`]; Moreau-Jean runs (its contact form) use a step
+//! that divides the period, so `t_a` and `t_b` are step boundaries.
 
-use super::block_scene::{BlockMode, BlockScene};
-use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment};
+use super::block_scene::BlockScene;
+use crate::numerics::hybrid::{Options, Outcome};
 use crate::numerics::timestepping::{self as mj, MjOptions};
-use crate::physics::plate::PlateMotion;
+use crate::physics::block::contact_form::BlockContact;
+use crate::physics::block::{simulate_block, BlockOptions};
 use crate::physics::stick::run::{initial_state, simulate_stick, Recording, StickOutcome};
 use crate::physics::stick::StickModel;
 use std::time::Instant;
@@ -29,53 +31,10 @@ pub struct Measured {
     pub note: &'static str,
 }
 
-/// Records `x(t)` from the segment containing `t`.
-struct XAt {
-    t: f64,
-    x: Option<f64>,
-}
-
-impl Observer<BlockMode, 4> for XAt {
-    fn segment(&mut self, _m: BlockMode, s: &Segment<'_, 4>) {
-        if self.x.is_none() && s.t0 <= self.t && self.t <= s.t1 {
-            self.x = Some(s.eval(self.t)[0]);
-        }
-    }
-}
-
 /// The drift window: `(t_a, t_b)` after `transient` periods, `cycles` periods long (s).
 pub fn window(scene: &BlockScene, transient: u32, cycles: u32) -> (f64, f64) {
     let t = scene.period_s();
     (f64::from(transient) * t, f64::from(transient + cycles) * t)
-}
-
-/// The block's drift with the event-driven driver and `opts`.
-pub fn drift_hybrid(scene: &BlockScene, opts: &Options, (t_a, t_b): (f64, f64)) -> Measured {
-    let mut obs = XAt { t: t_a, x: None };
-    let y0 = [0.0, 0.0, scene.plate.z_m(0.0), scene.plate.vz_mps(0.0)];
-    let run = simulate(
-        scene,
-        BlockMode::Stick,
-        0.0,
-        y0,
-        t_b,
-        &Options {
-            record_events: false,
-            ..*opts
-        },
-        &mut obs,
-    );
-    let value = match obs.x {
-        Some(xa) => (run.y_end[0] - xa) / (t_b - t_a), // formula: v_drift = (x(t_b) - x(t_a)) / (t_b - t_a)
-        None => f64::NAN,
-    };
-    Measured {
-        value,
-        rhs_evals: run.stats.rhs_evals,
-        events: run.event_count as u64,
-        completed: run.outcome == Outcome::Completed && value.is_finite(),
-        note: outcome_label(&run.outcome),
-    }
 }
 
 fn outcome_label<X>(o: &Outcome<X>) -> &'static str {
@@ -90,12 +49,20 @@ fn outcome_label<X>(o: &Outcome<X>) -> &'static str {
 /// The block's drift with Moreau-Jean, `steps_per_period` steps per drive period.
 pub fn drift_mj(scene: &BlockScene, steps_per_period: u32, (t_a, t_b): (f64, f64)) -> Measured {
     let h = scene.period_s() / f64::from(steps_per_period);
-    let q0 = [0.0, scene.plate.z_m(0.0)];
-    let v0 = [0.0, scene.plate.vz_mps(0.0)];
+    let Some(contact) = BlockContact::new(scene.params, &scene.plate) else {
+        return Measured {
+            value: f64::NAN,
+            rhs_evals: 0,
+            events: 0,
+            completed: false,
+            note: "invalid",
+        };
+    };
+    let (q0, v0) = contact.on_plate(0.0, 0.0, 0.0);
     let n_a = (t_a / h).round() as u64;
     let mut k = 0u64;
     let mut xa = f64::NAN;
-    let run = mj::simulate(scene, 0.0, q0, v0, t_b, &MjOptions::midpoint(h), |s| {
+    let run = mj::simulate(&contact, 0.0, q0, v0, t_b, &MjOptions::midpoint(h), |s| {
         k += 1;
         if k == n_a {
             xa = s.q1[0];
@@ -150,10 +117,6 @@ pub fn drift_block_model(
     transient: u32,
     cycles: u32,
 ) -> Measured {
-    use crate::physics::block::{simulate_block, BlockOptions, BlockParams};
-    let mut params = BlockParams::coulomb(scene.g, scene.mu, scene.bias * scene.g); // b = F/m = bias g
-    params.restitution = scene.e;
-    params.rest_velocity_mps = scene.stick_below_mps;
     let bo = BlockOptions {
         hybrid: Options {
             record_events: false,
@@ -166,7 +129,7 @@ pub fn drift_block_model(
         start: (0.0, [0.0; 4]),
     };
     let run = simulate_block(
-        &params,
+        &scene.params,
         &scene.plate,
         f64::from(transient + cycles) * scene.period_s(),
         &bo,
