@@ -80,28 +80,77 @@ fn closed_form_and_integrated_block_model_give_the_same_drift() {
 #[test]
 fn drift_unchanged_by_the_move_to_the_block_model() {
     // Expected values: the drifts (15 periods, window after 5) by the chapter's former
-    // second implementation of the scene in absolute coordinates (its own closed forms
-    // and event location; removed when the chapter moved to physics::block), printed to
-    // 13 digits before its removal. It agreed with physics::block to 1e-14 relative; the
-    // chapter claimed 1e-10 for that cross-check, the bound here. Scenes: the default,
-    // two biases, another frequency/Gamma/mu, and the chattering scene with e = 0.5 and
-    // the 0.1 mm/s rest velocity.
+    // second implementation of the scene in absolute coordinates (its own closed forms,
+    // event location and Moreau-Jean contact model; removed when the chapter moved to
+    // physics::block and its contact form), printed to 13 digits before its removal.
+    // Event-driven: it agreed with physics::block to 1e-14 relative; the chapter claimed
+    // 1e-10 for that cross-check, the bound here. Moreau-Jean (T/40 and T/4000): the same
+    // scheme on the same data, differing only in the rounding of h b g, so also 1e-10.
+    // Scenes: the default, two biases, another frequency/Gamma/mu, and the chattering
+    // scene with e = 0.5 and the 0.1 mm/s rest velocity.
     for (f, gamma, mu, b, e, rest, expected) in [
-        (30.0, 2.5, 0.4, 0.02, 0.0, 0.0, 2.413104131411e-03),
-        (30.0, 2.5, 0.4, 0.04, 0.0, 0.0, 4.845581384650e-03),
-        (30.0, 2.5, 0.4, 0.005, 0.0, 0.0, 6.014545059466e-04),
-        (20.0, 4.0, 0.3, 0.05, 0.0, 0.0, 1.218137621274e-02),
-        (30.0, 1.2, 0.4, 0.02, 0.5, 1e-4, 5.092467185956e-04),
+        (
+            30.0,
+            2.5,
+            0.4,
+            0.02,
+            0.0,
+            0.0,
+            [2.413104131411e-03, 2.364778210152e-03, 2.413076230943e-03],
+        ),
+        (
+            30.0,
+            2.5,
+            0.4,
+            0.04,
+            0.0,
+            0.0,
+            [4.845581384650e-03, 4.854065710152e-03, 4.845517491688e-03],
+        ),
+        (
+            30.0,
+            2.5,
+            0.4,
+            0.005,
+            0.0,
+            0.0,
+            [6.014545059466e-04, 5.871693750000e-04, 6.014357401374e-04],
+        ),
+        (
+            20.0,
+            4.0,
+            0.3,
+            0.05,
+            0.0,
+            0.0,
+            [1.218137621274e-02, 1.193731467897e-02, 1.218131788096e-02],
+        ),
+        (
+            30.0,
+            1.2,
+            0.4,
+            0.02,
+            0.5,
+            1e-4,
+            [5.092467185956e-04, 5.080762500000e-04, 5.092678831459e-04],
+        ),
     ] {
         let s = BlockScene::new(f, gamma, mu, b, 9.81).with_restitution(e, rest);
-        let m = drift_block_model(&s, &Options::default(), true, 64, 5, 10);
-        assert!(m.completed);
-        let rel = ((m.value - expected) / expected).abs();
-        assert!(
-            rel < 1e-10,
-            "f {f} Gamma {gamma} b {b} e {e}: {} vs {expected}: {rel:e}",
-            m.value
-        );
+        let w = window(&s, 5, 10);
+        let runs = [
+            drift_block_model(&s, &Options::default(), true, 64, 5, 10),
+            drift_mj(&s, 40, w),
+            drift_mj(&s, 4000, w),
+        ];
+        for (m, x) in runs.iter().zip(expected) {
+            assert!(m.completed);
+            let rel = ((m.value - x) / x).abs();
+            assert!(
+                rel < 1e-10,
+                "f {f} Gamma {gamma} b {b} e {e}: {} vs {x}: {rel:e}",
+                m.value
+            );
+        }
     }
 }
 

@@ -77,3 +77,63 @@ impl<P: PlateMotion + ?Sized> ContactModel<2> for BlockContact<'_, P> {
         self.mu
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numerics::timestepping::{simulate, MjOptions};
+    use crate::physics::plate::{Axis, Harmonic};
+
+    #[test]
+    fn only_coulomb_friction_has_a_contact_form() {
+        let plate = Harmonic::sine(Axis::Z, 0.0, 1.0);
+        assert!(BlockContact::new(BlockParams::viscous(9.81, 2.0, 0.0), &plate).is_none());
+        assert!(BlockContact::new(BlockParams::coulomb(9.81, 0.3, 0.0), &plate).is_some());
+    }
+
+    #[test]
+    fn a_block_sliding_on_a_plate_at_rest_stops_after_v0_squared_over_2_mu_g() {
+        // Closed form: constant deceleration mu g from v0 = 1 m/s, mu = 0.5: it stops
+        // after v0^2/(2 mu g) = 0.1019 m. Moreau-Jean at h = 1e-4 s is first order: the
+        // distance is off by O(v0 h) = 1e-4 m; the bound is 5e-4 m.
+        let (g, mu) = (9.81, 0.5);
+        let plate = Harmonic::sine(Axis::Z, 0.0, 1.0);
+        let c = BlockContact::new(BlockParams::coulomb(g, mu, 0.0), &plate).unwrap();
+        let (q0, mut v0) = c.on_plate(0.0, 0.0, 0.0);
+        v0[0] = 1.0;
+        let run = simulate(&c, 0.0, q0, v0, 0.5, &MjOptions::midpoint(1e-4), |_| {}).unwrap();
+        let expected = 1.0 / (2.0 * mu * g); // formula: d = v0^2 / (2 mu g)
+        assert!(
+            (run.q[0] - expected).abs() < 5e-4,
+            "{} vs {expected}",
+            run.q[0]
+        );
+        assert_eq!(run.v[0], 0.0, "stuck");
+        assert!(
+            run.q[1].abs() < 1e-9 && run.v[1].abs() < 1e-12,
+            "stays on the floor"
+        );
+    }
+
+    #[test]
+    fn a_block_within_the_friction_cone_follows_a_horizontally_shaken_plate() {
+        // Plate x_p = delta sin(omega t) with peak acceleration 0.5 g and mu = 1: the
+        // needed friction stays inside the cone, so the block sticks: its velocity is the
+        // plate's (the tangential obstacle velocity) and it never drifts. Moreau-Jean
+        // matches the plate velocity at each step's midpoint, so the block's position
+        // stays within O(h delta omega) = 2e-6 m of the plate's; the bound is 1e-5 m.
+        let (g, f) = (9.81, 5.0);
+        let omega = std::f64::consts::TAU * f;
+        let plate = Harmonic::sine(Axis::X, 0.5 * g / (omega * omega), f);
+        let c = BlockContact::new(BlockParams::coulomb(g, 1.0, 0.0), &plate).unwrap();
+        let (q0, v0) = c.on_plate(0.0, 0.0, 0.0);
+        let mut worst: f64 = 0.0;
+        let t_end = 10.0 / f;
+        let run = simulate(&c, 0.0, q0, v0, t_end, &MjOptions::midpoint(1e-4), |s| {
+            worst = worst.max((s.q1[0] - plate.x_m(s.t1)).abs());
+        })
+        .unwrap();
+        assert!(worst < 1e-5, "{worst}");
+        assert!(run.stats.slide_steps == 0, "{:?}", run.stats);
+    }
+}
