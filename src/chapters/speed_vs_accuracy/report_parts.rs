@@ -4,7 +4,7 @@ use super::block_scene::BlockScene;
 use super::economy::{flight_map_drift, law_drift, SweepRow};
 use super::failures::{stiff, zeno, Failure};
 use super::measure::{drift_block_model, timed, window};
-use super::work_precision::{cheapest_below, ladder, measure, Solver, WpPoint};
+use super::work_precision::{cheapest_json, ladder, measure, Solver, WpPoint, EVENT_DRIVEN_LABELS};
 use super::Args;
 use crate::chapters::Context;
 use crate::error::Result;
@@ -240,23 +240,12 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         true,
         unloc > 100.0 * loc.max(1e-15),
     ));
-    let mut cheapest = serde_json::Map::new();
-    for label in [
-        "euler-located",
-        "euler-unlocated",
-        "rk4-located",
-        "rk4-unlocated",
-        "dopri5-located",
-        "dopri5-unlocated",
-        "moreau-jean",
-    ] {
-        cheapest.insert(
-            label.to_string(),
-            cheapest_below(&points, label, 1e-6)
-                .map_or(json!("not reached"), |p| json!(p.rhs_evals)),
-        );
-    }
-    r.result("rhs_evals_to_reach_1e-6", Value::Object(cheapest));
+    let mut labels = EVENT_DRIVEN_LABELS.to_vec();
+    labels.push("moreau-jean");
+    r.result(
+        "rhs_evals_to_reach_1e-6",
+        cheapest_json(&points, &labels, 1e-6),
+    );
 
     // ---- failures
     let mut fails: Vec<Failure> = Vec::new();

@@ -4,7 +4,7 @@
 use super::failures::Failure;
 use super::measure::{stick_speed, timed};
 use super::report_parts::{fmt_err, observed_order};
-use super::work_precision::{ladder, measure, Solver, WpPoint};
+use super::work_precision::{cheapest_json, ladder, measure, Solver, WpPoint, EVENT_DRIVEN_LABELS};
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::StepControl;
 use crate::physics::stick::{authors_scene, StickModel};
@@ -132,27 +132,9 @@ pub fn build(
             f64::NAN
         },
     );
-    let mut cheapest = serde_json::Map::new();
-    for label in [
-        "euler-located",
-        "euler-unlocated",
-        "rk4-located",
-        "rk4-unlocated",
-        "dopri5-located",
-        "dopri5-unlocated",
-    ] {
-        let best = points
-            .iter()
-            .filter(|p| p.solver.label() == label && p.completed && p.error <= 1e-6)
-            .min_by_key(|p| p.rhs_evals);
-        cheapest.insert(
-            label.to_string(),
-            best.map_or(json!("not reached"), |p| json!(p.rhs_evals)),
-        );
-    }
     r.result(
         "stick_rhs_evals_to_reach_1e-6",
-        serde_json::Value::Object(cheapest),
+        cheapest_json(&points, &EVENT_DRIVEN_LABELS, 1e-6),
     );
     points
 }

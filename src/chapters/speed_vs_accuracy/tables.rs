@@ -28,19 +28,13 @@ pub fn tables(r: &mut ChapterReport, points: &[WpPoint], fails: &[Failure], swee
         let _ = writeln!(t, "| {} | {} | {} |", f.method, f.scene, f.symptom);
     }
     r.table("failures", t);
-    let mut t = String::from("| Gamma | exact drift (m/s) | flight map: error | mu_eff law: error |\n|---|---|---|---|\n");
-    let stride = (sweep.len() / 12).max(1);
-    for row in sweep.iter().step_by(stride) {
-        let rel = |m: f64| format!("{:+.2} %", 100.0 * (m - row.1) / row.1);
-        let _ = writeln!(
-            t,
-            "| {} | {} | {} | {} |",
-            fmt_num(row.0),
-            fmt_num(row.1),
-            row.2.map_or("no sticking orbit".into(), rel),
-            rel(row.3)
-        );
-    }
+    let rows: Vec<LawRow> = sweep.iter().map(|r| (r.0, r.1, r.2, Some(r.3))).collect();
+    let t = law_table(
+        "| Gamma | exact drift (m/s) | flight map: error | mu_eff law: error |",
+        &rows,
+        12,
+        "no sticking orbit",
+    );
     r.table("economy", t);
     let mut t = String::from("| result | value |\n|---|---|\n");
     for (k, v) in &r.results {
@@ -62,10 +56,33 @@ pub fn tables(r: &mut ChapterReport, points: &[WpPoint], fails: &[Failure], swee
 
 /// Adds the table `economy_horizontal`.
 pub fn horizontal(r: &mut ChapterReport, rows: &[super::economy::HorizontalRow]) {
-    let mut t = String::from("| K = delta omega^2/(mu g) | exact drift (m/s) | arcsin law: error | viscous law: error |\n|---|---|---|---|\n");
-    let stride = (rows.len() / 8).max(1);
+    let rows: Vec<LawRow> = rows
+        .iter()
+        .map(|r| (r.0, r.1, Some(r.2), Some(r.3)))
+        .collect();
+    let t = law_table(
+        "| K = delta omega^2/(mu g) | exact drift (m/s) | arcsin law: error | viscous law: error |",
+        &rows,
+        8,
+        "none",
+    );
+    r.table("economy_horizontal", t);
+}
+
+/// A row of an averaged-law table: (parameter, exact drift m/s, law 1, law 2 drifts m/s).
+type LawRow = (f64, f64, Option<f64>, Option<f64>);
+
+/// A table of the laws' relative errors against the exact drift, at most about
+/// `max_rows` rows (every k-th of `rows`); `none` where a law has no value.
+fn law_table(header: &str, rows: &[LawRow], max_rows: usize, none: &str) -> String {
+    let mut t = format!("{header}\n|---|---|---|---|\n");
+    let stride = (rows.len() / max_rows).max(1);
     for row in rows.iter().step_by(stride) {
-        let rel = |m: f64| format!("{:+.2} %", 100.0 * (m - row.1) / row.1);
+        let rel = |m: Option<f64>| {
+            m.map_or(none.to_string(), |m| {
+                format!("{:+.2} %", 100.0 * (m - row.1) / row.1)
+            })
+        };
         let _ = writeln!(
             t,
             "| {} | {} | {} | {} |",
@@ -75,5 +92,5 @@ pub fn horizontal(r: &mut ChapterReport, rows: &[super::economy::HorizontalRow])
             rel(row.3)
         );
     }
-    r.table("economy_horizontal", t);
+    t
 }

@@ -190,3 +190,28 @@ pub fn cheapest_below<'a>(points: &'a [WpPoint], label: &str, target: f64) -> Op
         .filter(|p| p.solver.label() == label && p.completed && p.error <= target)
         .min_by_key(|p| p.rhs_evals)
 }
+
+/// The event-driven methods of the ladder, located and unlocated.
+pub const EVENT_DRIVEN_LABELS: [&str; 6] = [
+    "euler-located",
+    "euler-unlocated",
+    "rk4-located",
+    "rk4-unlocated",
+    "dopri5-located",
+    "dopri5-unlocated",
+];
+
+/// `{label: rhs evaluations of the cheapest run within target, or "not reached"}`.
+pub fn cheapest_json(points: &[WpPoint], labels: &[&str], target: f64) -> serde_json::Value {
+    let map = labels
+        .iter()
+        .map(|&label| {
+            let v = cheapest_below(points, label, target)
+                .map_or(serde_json::json!("not reached"), |p| {
+                    serde_json::json!(p.rhs_evals)
+                });
+            (label.to_string(), v)
+        })
+        .collect();
+    serde_json::Value::Object(map)
+}
