@@ -16,6 +16,15 @@ fn scene() -> BlockScene {
     BlockScene::new(30.0, 2.5, 0.4, 0.02, 9.81)
 }
 
+/// Driver options: `method` at the fixed step `h_s` (s), events located.
+fn fixed(method: Method, h_s: f64) -> Options {
+    Options {
+        method,
+        control: StepControl::Fixed { h_s },
+        ..Options::default()
+    }
+}
+
 fn block(c: &mut Criterion) {
     let s = scene();
     let period = s.period_s();
@@ -30,26 +39,12 @@ fn block(c: &mut Criterion) {
         };
         b.iter(|| drift_block_model(black_box(&s), &o, false, 20, 0, 20))
     });
-    g.bench_function("rk4_T/160_located", |b| {
-        let o = Options {
-            method: Method::Rk4,
-            control: StepControl::Fixed {
-                h_s: period / 160.0,
-            },
-            ..Options::default()
-        };
-        b.iter(|| drift_block_model(black_box(&s), &o, false, 20, 0, 20))
-    });
-    g.bench_function("euler_T/160_located", |b| {
-        let o = Options {
-            method: Method::Euler,
-            control: StepControl::Fixed {
-                h_s: period / 160.0,
-            },
-            ..Options::default()
-        };
-        b.iter(|| drift_block_model(black_box(&s), &o, false, 20, 0, 20))
-    });
+    for (name, method) in [("rk4", Method::Rk4), ("euler", Method::Euler)] {
+        let o = fixed(method, period / 160.0);
+        g.bench_function(format!("{name}_T/160_located"), |b| {
+            b.iter(|| drift_block_model(black_box(&s), &o, false, 20, 0, 20))
+        });
+    }
     let w = (0.0, 20.0 * period);
     g.bench_function("moreau_jean_T/160", |b| {
         b.iter(|| drift_mj(black_box(&s), 160, w))
@@ -71,13 +66,7 @@ fn stick(c: &mut Criterion) {
             b.iter(|| stick_speed(black_box(&m), 10.0, &o))
         });
     }
-    let o = Options {
-        method: Method::Rk4,
-        control: StepControl::Fixed {
-            h_s: m.period_s / 256.0,
-        },
-        ..Options::default()
-    };
+    let o = fixed(Method::Rk4, m.period_s / 256.0);
     g.bench_function("rk4_T/256_located", |b| {
         b.iter(|| stick_speed(black_box(&m), 10.0, &o))
     });
