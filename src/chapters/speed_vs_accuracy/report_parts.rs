@@ -4,7 +4,10 @@ use super::block_scene::BlockScene;
 use super::economy::{flight_map_drift, law_drift, SweepRow};
 use super::failures::{stiff, zeno, Failure};
 use super::measure::{drift_block_model, timed, window};
-use super::work_precision::{cheapest_json, ladder, measure, Solver, WpPoint, EVENT_DRIVEN_LABELS};
+use super::work_precision::{
+    cheapest_json, dopri5_errors_at, error_at, ladder, measure, Solver, WpPoint,
+    EVENT_DRIVEN_LABELS,
+};
 use super::Args;
 use crate::chapters::Context;
 use crate::error::Result;
@@ -222,17 +225,9 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     }
     r.result("observed_orders", Value::Object(order_json));
     let points = points_all;
-    let err_of = |label: &str, knob: f64| {
-        points
-            .iter()
-            .find(|p| p.solver.label() == label && p.solver.knob() == knob)
-            .map_or(f64::NAN, |p| p.error)
-    };
+    let err_of = |label: &str, knob: f64| error_at(&points, label, knob);
     let tight = *plan.tols.last().expect("tolerances");
-    let (loc, unloc) = (
-        err_of("dopri5-located", tight),
-        err_of("dopri5-unlocated", tight),
-    );
+    let (loc, unloc) = dopri5_errors_at(&points, tight);
     r.claim(Claim::exact(
         "unlocated-events-stall",
         "numerics",

@@ -4,7 +4,10 @@
 use super::failures::Failure;
 use super::measure::{stick_speed, timed};
 use super::report_parts::{fmt_err, observed_order};
-use super::work_precision::{cheapest_json, ladder, measure, Solver, WpPoint, EVENT_DRIVEN_LABELS};
+use super::work_precision::{
+    cheapest_json, dopri5_errors_at, error_at, ladder, measure, Solver, WpPoint,
+    EVENT_DRIVEN_LABELS,
+};
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::StepControl;
 use crate::physics::stick::{authors_scene, StickModel};
@@ -73,17 +76,9 @@ pub fn build(
         o,
         1.0,
     ));
-    let err_of = |label: &str, knob: f64| {
-        points
-            .iter()
-            .find(|p| p.solver.label() == label && p.solver.knob() == knob)
-            .map_or(f64::NAN, |p| p.error)
-    };
+    let err_of = |label: &str, knob: f64| error_at(&points, label, knob);
     let tight = *tols.last().expect("tolerances");
-    let (loc, unloc) = (
-        err_of("dopri5-located", tight),
-        err_of("dopri5-unlocated", tight),
-    );
+    let (loc, unloc) = dopri5_errors_at(&points, tight);
     r.claim(Claim::exact(
         "stick-unlocated-events-stall",
         "4, 5",

@@ -191,6 +191,22 @@ pub fn cheapest_below<'a>(points: &'a [WpPoint], label: &str, target: f64) -> Op
         .min_by_key(|p| p.rhs_evals)
 }
 
+/// The error of the run of `label` at `knob` (step or tolerance), NaN if none.
+pub fn error_at(points: &[WpPoint], label: &str, knob: f64) -> f64 {
+    points
+        .iter()
+        .find(|p| p.solver.label() == label && p.solver.knob() == knob)
+        .map_or(f64::NAN, |p| p.error)
+}
+
+/// Dormand-Prince's errors `(located, unlocated)` at the tolerance `tol`.
+pub fn dopri5_errors_at(points: &[WpPoint], tol: f64) -> (f64, f64) {
+    (
+        error_at(points, "dopri5-located", tol),
+        error_at(points, "dopri5-unlocated", tol),
+    )
+}
+
 /// The event-driven methods of the ladder, located and unlocated.
 pub const EVENT_DRIVEN_LABELS: [&str; 6] = [
     "euler-located",
