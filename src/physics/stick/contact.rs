@@ -121,7 +121,10 @@ mod tests {
         let t = 0.5 * (a + b);
         let pe = m.pivot_eval(t, &y);
         let se = m.slide_eval(1.0, t, &y);
-        assert!((pe.fz - se.fz).abs() < 1e-9 * pe.fz.abs().max(1.0), "{pe:?} {se:?}");
+        assert!(
+            (pe.fz - se.fz).abs() < 1e-9 * pe.fz.abs().max(1.0),
+            "{pe:?} {se:?}"
+        );
         assert!((pe.theta_dd - se.theta_dd).abs() < 1e-7 * pe.theta_dd.abs().max(1.0));
         assert!(se.xc_dd.abs() < 1e-7, "{se:?}");
     }

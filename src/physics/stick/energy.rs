@@ -54,7 +54,9 @@ impl StickModel {
         let p = &self.p;
         let [_, zp, vxp, vzp] = self.tip(y);
         let d = y[super::TH] - p.theta0_rad;
-        0.5 * p.mass_kg * (vxp * vxp + vzp * vzp) + p.mass_kg * p.g_mps2 * zp + 0.5 * p.stiffness_nm_per_rad * d * d
+        0.5 * p.mass_kg * (vxp * vxp + vzp * vzp)
+            + p.mass_kg * p.g_mps2 * zp
+            + 0.5 * p.stiffness_nm_per_rad * d * d
         // formula: E
     }
 

@@ -34,7 +34,9 @@ pub mod rules;
 pub mod run;
 mod system;
 
-pub use params::{authors_scene, jamming_scene, theta0_for_static_angle, CollisionAngle, StickParams};
+pub use params::{
+    authors_scene, jamming_scene, theta0_for_static_angle, CollisionAngle, StickParams,
+};
 
 /// State index: x of C (m).
 pub const XC: usize = 0;

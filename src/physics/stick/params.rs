@@ -96,7 +96,10 @@ impl StickParams {
     /// `k (theta - theta_0) = m g L sin(theta)` nearest `theta_0` (rad), or `None` when
     /// the spring cannot hold the stick up (no root below 90 degrees).
     pub fn static_angle(&self) -> Option<f64> {
-        let (k, w) = (self.stiffness_nm_per_rad, self.mass_kg * self.g_mps2 * self.length_m);
+        let (k, w) = (
+            self.stiffness_nm_per_rad,
+            self.mass_kg * self.g_mps2 * self.length_m,
+        );
         let f = |th: f64| k * (th - self.theta0_rad) - w * th.sin();
         let half = std::f64::consts::FRAC_PI_2;
         // bracket on the side theta_0 leans to, then bisect

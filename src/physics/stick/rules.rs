@@ -111,7 +111,8 @@ impl StickModel {
         let p = &self.p;
         if !self.rate.is_finite() {
             return Next::Stop(StickStop::Invalid(
-                "gamma = 0 with k > 0: the massless rod's angle in flight is undetermined".to_string(),
+                "gamma = 0 with k > 0: the massless rod's angle in flight is undetermined"
+                    .to_string(),
             ));
         }
         let l = p.length_m;

@@ -1,7 +1,7 @@
 //! One run of the stick through the hybrid driver, and its summary.
 
 use super::energy::Budget;
-use super::{Mode, State, StickModel, StickStop, NSTATE, VXC, W_PLATE, XC};
+use super::{Mode, State, StickModel, StickStop, NSTATE, TH, VXC, W_PLATE, XC};
 use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment};
 use crate::numerics::ode::Stats;
 
@@ -69,6 +69,28 @@ pub struct Sample {
     pub y: State,
 }
 
+/// One landing (flight ended on the plate).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Landing {
+    /// Time (s).
+    pub t_s: f64,
+    /// Angle at the landing (rad).
+    pub theta_rad: f64,
+    /// Height of C above the plate at the located event (m).
+    pub h_c_m: f64,
+    /// Along-rod approach velocity of P relative to the plate (m/s).
+    pub w_mps: f64,
+    /// A sticking impact (impulse along the rod inside the cone) took place.
+    pub sticking: bool,
+    /// Angular momentum about C per unit mass before and after, with the lever at the
+    /// angle after the impact (m^2/s); equal for a sticking impact.
+    pub h_before: f64,
+    /// See `h_before`.
+    pub h_after: f64,
+    /// The mode after.
+    pub to: Mode,
+}
+
 /// Summary of a run.
 #[derive(Debug, Clone)]
 pub struct RunSummary {
@@ -106,6 +128,8 @@ pub struct RunSummary {
     pub trace: Vec<Sample>,
     /// Events: (time s, from, to) with `to = None` for the stop.
     pub events: Vec<(f64, Mode, Option<Mode>)>,
+    /// Landings (when recording a sequence).
+    pub landings: Vec<Landing>,
     /// Final state.
     pub y_end: State,
     /// Final mode.
@@ -116,7 +140,8 @@ impl RunSummary {
     /// Fraction of the run's time spent in each mode (1), [`Mode::ALL`] order.
     pub fn phase_fractions(&self) -> [f64; 4] {
         let total: f64 = self.mode_time_s.iter().sum();
-        self.mode_time_s.map(|x| if total > 0.0 { x / total } else { 0.0 })
+        self.mode_time_s
+            .map(|x| if total > 0.0 { x / total } else { 0.0 })
     }
 }
 
@@ -195,7 +220,14 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
         }
     }
 
-    fn event(&mut self, t: f64, from: Mode, guard: usize, _before: &State, after: Option<(Mode, &State)>) {
+    fn event(
+        &mut self,
+        t: f64,
+        from: Mode,
+        guard: usize,
+        _before: &State,
+        after: Option<(Mode, &State)>,
+    ) {
         let to = after.map(|(m, _)| m);
         if self.rec.sequence_cap > 0 {
             self.sum.events.push((t, from, to));
@@ -206,9 +238,25 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
             }
             self.sum.transitions[from.index()][m.index()] += 1;
             if from == Mode::Flight && guard == 0 {
+                let md = self.model;
                 self.sum.hops += 1;
-                if y[VXC] == 0.0 {
+                let w = md.approach_velocity(t, _before);
+                let sticking = _before[TH].tan().abs() <= md.p.mu && w < 0.0;
+                if sticking {
                     self.sum.sticking_landings += 1;
+                }
+                if self.rec.sequence_cap > 0 {
+                    let lever = y[TH];
+                    self.sum.landings.push(Landing {
+                        t_s: t,
+                        theta_rad: _before[TH],
+                        h_c_m: md.h_c(t, _before),
+                        w_mps: w,
+                        sticking,
+                        h_before: md.angular_momentum_about_c(t, _before, lever),
+                        h_after: md.angular_momentum_about_c(t, &md.canonical(m, t, y), lever),
+                        to: m,
+                    });
                 }
             }
             if from != Mode::Flight && from != Mode::Pivot && guard == 0 {
@@ -258,6 +306,7 @@ pub fn simulate_stick(
             violations: Violations::default(),
             trace: Vec::new(),
             events: Vec::new(),
+            landings: Vec::new(),
             y_end: y0,
             mode_end: Mode::Pivot,
         },
@@ -295,7 +344,11 @@ pub fn simulate_stick(
         s.mode_time_s[m.index()] += dt;
     }
     let dur = run.t_end_s - t0;
-    s.mean_velocity_mps = if dur > 0.0 { (run.y_end[XC] - y0[XC]) / dur } else { 0.0 };
+    s.mean_velocity_mps = if dur > 0.0 {
+        (run.y_end[XC] - y0[XC]) / dur
+    } else {
+        0.0
+    };
     let mut y_end = model.canonical(run.mode_end, run.t_end_s, &run.y_end);
     for k in 0..4 {
         y_end[W_PLATE + k] += acc[k];

@@ -90,7 +90,8 @@ impl HybridSystem<NSTATE> for StickModel {
                 match i {
                     0 => self.slide_denominator(sigma, y[TH]),
                     1 => {
-                        let q = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * y[OM];
+                        let q = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad)
+                            + p.damping_nms_per_rad * y[OM];
                         q * self.slide_denominator(sigma, y[TH]).signum()
                     }
                     2 => -sigma * y[VXC],
@@ -111,7 +112,13 @@ impl HybridSystem<NSTATE> for StickModel {
         }
     }
 
-    fn on_event(&self, mode: Mode, i: usize, t: f64, y: &State) -> Transition<Mode, StickStop, NSTATE> {
+    fn on_event(
+        &self,
+        mode: Mode,
+        i: usize,
+        t: f64,
+        y: &State,
+    ) -> Transition<Mode, StickStop, NSTATE> {
         let y = &self.canonical(mode, t, y);
         let mut next = tr(match (mode, i) {
             (Mode::Flight, 0) => self.landing(t, y),
