@@ -257,14 +257,15 @@ fn table_1_holds_at_every_accepted_step() {
 
 #[test]
 fn energy_budget_closes() {
-    // Residual = W - dE - D_f - D_d - D_i. With rtol 1e-10 and a few thousand steps the
-    // accumulated integration error is ~1e-7 of the largest term; 1e-6 leaves margin.
+    // Residual = W - dE - D_f - D_d - D_i. It is integration error: local errors of
+    // order rtol = 1e-10 on each of ~5000 steps and hundreds of restarts accumulate to
+    // 1e-7 .. 2e-6 of the largest term (measured); the chapter's stated tolerance, 1e-5.
     // At 1e-8 it must be larger (the residual is integration error, not a model term).
     // The reset scene is excluded: the document's reset moves P at every landing.
     for (name, p) in scenes().into_iter().filter(|(n, _)| *n != "authors-reset") {
         let s = run(p, 2.0, 1e-10, Recording::default());
         let b = s.budget;
-        assert!(b.relative_residual() < 1e-6, "{name}: {b:?}");
+        assert!(b.relative_residual() < 1e-5, "{name}: {b:?}");
         assert!(
             b.plate_work_j > 0.0 && b.friction_j > 0.0 && b.damper_j > 0.0,
             "{name}: {b:?}"

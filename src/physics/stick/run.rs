@@ -124,7 +124,7 @@ pub struct RunSummary {
     pub sequence: String,
     /// Table 1 violations.
     pub violations: Violations,
-    /// Trace samples.
+    /// Trace samples (canonical states; energy accumulators are running totals).
     pub trace: Vec<Sample>,
     /// Events: (time s, from, to) with `to = None` for the stop.
     pub events: Vec<(f64, Mode, Option<Mode>)>,
@@ -184,6 +184,15 @@ impl Watch<'_> {
         }
     }
 
+    /// Canonical state with the energy accumulators as running totals since the start.
+    fn running(&self, mode: Mode, t: f64, y: &State) -> State {
+        let mut y = self.model.canonical(mode, t, y);
+        for k in 0..4 {
+            y[W_PLATE + k] += self.acc[k];
+        }
+        y
+    }
+
     fn enter(&mut self, mode: Mode) {
         if self.last_mode != Some(mode) && self.sum.sequence.len() < self.rec.sequence_cap {
             self.sum.sequence.push(mode.letter());
@@ -204,18 +213,16 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
         if self.rec.trace_dt_s > 0.0 {
             while self.next_sample_t <= seg.t1 {
                 let t = self.next_sample_t.max(seg.t0);
-                self.sum.trace.push(Sample {
-                    t_s: t,
-                    mode,
-                    y: self.model.canonical(mode, t, &seg.eval(t)),
-                });
+                let y = self.running(mode, t, &seg.eval(t));
+                self.sum.trace.push(Sample { t_s: t, mode, y });
                 self.next_sample_t += self.rec.trace_dt_s;
             }
             // keep the segment's end so that events are drawn sharply
+            let y = self.running(mode, seg.t1, &seg.y1);
             self.sum.trace.push(Sample {
                 t_s: seg.t1,
                 mode,
-                y: self.model.canonical(mode, seg.t1, &seg.y1),
+                y,
             });
         }
     }

@@ -5,7 +5,7 @@
 //! - Pivot: 0 `F_z` falling (lift-off); 1 `mu F_z - F_x` falling and 2 `mu F_z + F_x`
 //!   falling (friction cone's edges); 3 `pi/2 - |theta|` falling (fell).
 //! - Slides: 0 `theta - sigma atan(mu)`, the zero of the slide denominator (jam); 1 `Q sign(den)` falling, `Q = k (theta -
-//!   theta_0) + gamma theta'` (normal force reaching zero: lift-off); 2 `-sigma xdot_c`
+//!   theta_0) + gamma theta'` (normal force reaching zero: lift-off); 2 `-sigma xdot_c + 1e-12`
 //!   falling (slip stops); 3 `pi/2 - |theta|` falling (fell); 4 `theta` (C.14 singular:
 //!   invalid); 5 `sigma xdot_c - tol` rising (slip against friction: invalid).
 
@@ -96,7 +96,9 @@ impl HybridSystem<NSTATE> for StickModel {
                             + p.damping_nms_per_rad * y[OM];
                         q * (y[TH] - sigma * self.atan_mu).signum()
                     }
-                    2 => -sigma * y[VXC],
+                    // slip speed + 1e-12 m/s: a slide entered from rest starts at +1e-12, not at 0,
+                    // so a slip that reverses within the first step is still seen
+                    2 => -sigma * y[VXC] + 1e-12,
                     3 => FRAC_PI_2 - y[TH].abs(),
                     4 => y[TH],
                     _ => sigma * y[VXC] - 1e-9,
