@@ -386,3 +386,38 @@ fn bad_input_exits_2_with_one_line_naming_the_flag() {
         assert!(err.contains(flag), "{err}");
     }
 }
+
+#[test]
+fn edge_inputs_give_typed_outcomes() {
+    // Outcomes predicted by the physics, not by the program: without a damper the
+    // massless rod's flight angle is undetermined (invalid, with the reason); without a
+    // spring nothing holds the inverted pendulum up (fell); a still plate leaves the
+    // stick standing (completed, zero speed); the mirrored lean walks the other way.
+    let get = |args: &[&str]| {
+        let mut a = vec!["--json"];
+        a.extend_from_slice(args);
+        let (code, out, err) = cli(&a);
+        assert_eq!(code, 0, "{args:?}: {err}");
+        let v: Value = serde_json::from_str(&out).unwrap();
+        assert!(
+            !out.contains("NaN") && !out.contains("non-finite"),
+            "{args:?}"
+        );
+        v["results"].clone()
+    };
+    let r = get(&["--damping", "0"]);
+    assert_eq!(r["outcome"], "invalid");
+    assert!(r["outcome_reason"].as_str().unwrap().contains("gamma = 0"));
+    assert_eq!(get(&["--stiffness", "0"])["outcome"], "fell");
+    let still = get(&["--gamma", "0"]);
+    assert_eq!(still["outcome"], "completed");
+    assert_eq!(still["mean_velocity_mps"].as_f64().unwrap(), 0.0);
+    let right = get(&[])["mean_velocity_mps"].as_f64().unwrap();
+    let left = get(&["--theta0-rad=-0.3"])["mean_velocity_mps"]
+        .as_f64()
+        .unwrap();
+    assert!(
+        right > 0.1 && (left + right).abs() < 1e-6 * right,
+        "mirror: {right} vs {left}"
+    );
+}

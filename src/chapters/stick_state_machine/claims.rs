@@ -94,6 +94,14 @@ pub fn add_all(r: &mut ChapterReport, ev: &Evidence, main: &RunSummary, p: &Stic
     let c = counts(&runs);
     let both = [&ev.authors, &ev.jamming, main];
     let vmax = |f: &dyn Fn(&RunSummary) -> f64| both.iter().map(|s| f(s)).fold(0.0, f64::max);
+    // forces of each run in units of its weight m g (N / N)
+    let weighted = [(&ev.authors, pa), (&ev.jamming, pj), (main, p)];
+    let fmax = |f: &dyn Fn(&RunSummary) -> f64| {
+        weighted
+            .iter()
+            .map(|(s, q)| f(s) / (q.mass_kg * q.g_mps2))
+            .fold(0.0, f64::max)
+    };
     let e = |id: &str,
              sec: &str,
              st: &str,
@@ -210,18 +218,19 @@ pub fn add_all(r: &mut ChapterReport, ev: &Evidence, main: &RunSummary, p: &Stic
     // ---- Table 1 ---------------------------------------------------------------
     let pen = vmax(&|s| s.violations.penetration_m);
     r.claim(Claim::judged("t1-flight", "Table 1", "Flight: h_c > 0, F = 0. Largest penetration of C below the plate at accepted flight steps.", 0.0, pen, 1e-12, pen <= 1e-12, Verdict::Confirmed));
-    let nv = vmax(&|s| s.violations.normal_n);
-    let cv = vmax(&|s| s.violations.cone_n);
+    let nv = fmax(&|s| s.violations.normal_n);
+    let cv = fmax(&|s| s.violations.cone_n);
     let ps = vmax(&|s| s.violations.pivot_slip_mps);
-    // forces are located to the event tolerance: 1e-9 N on forces of order 10 N
+    // forces are located to the event tolerance and integrated to rtol: 1e-10 of the
+    // weight m g is far above both (measured ~1e-12)
     r.claim(Claim::judged(
         "t1-pivot",
         "Table 1",
-        "Pivot: h_c = 0, v_x = 0, F_z >= 0, |F_x| <= mu F_z. Largest violation (N) at accepted pivot steps.",
+        "Pivot: h_c = 0, v_x = 0, F_z >= 0, |F_x| <= mu F_z. Largest violation at accepted pivot steps, in units of the weight m g.",
         0.0,
-        nv.max(cv).max(ps),
-        1e-9,
-        nv.max(cv) <= 1e-9 && ps == 0.0 && c.pivot > 0,
+        nv.max(cv),
+        1e-10,
+        nv.max(cv) <= 1e-10 && ps == 0.0 && c.pivot > 0,
         Verdict::Confirmed,
     ));
     let sv = vmax(&|s| s.violations.slip_mps);
@@ -297,7 +306,7 @@ pub fn add_all(r: &mut ChapterReport, ev: &Evidence, main: &RunSummary, p: &Stic
         .chain(&ev.jamming.landings)
         .filter(|l| !l.sticking && l.to != Mode::Flight)
         .collect();
-    r.claim(Claim::judged("a2-impulse-free-landing", "Alg. 2", "tan(theta) > mu: theta' <- -(z_p' - z_s')/(L sin(theta)), x_c' <- x_p' + (z_p' - z_s') cot(theta), slide the way x_c' points: no impulse can act (it would lie along the rod, outside the cone), P keeps its velocity. Impulse-free landings whose slide then runs without violating Table 1.", free.len() as u64, if sv <= 1e-9 && nv <= 1e-9 { free.len() as u64 } else { 0 }, "exact", !free.is_empty() && sv <= 1e-9 && nv <= 1e-9, Verdict::Confirmed));
+    r.claim(Claim::judged("a2-impulse-free-landing", "Alg. 2", "tan(theta) > mu: theta' <- -(z_p' - z_s')/(L sin(theta)), x_c' <- x_p' + (z_p' - z_s') cot(theta), slide the way x_c' points: no impulse can act (it would lie along the rod, outside the cone), P keeps its velocity. Impulse-free landings whose slide then runs without violating Table 1.", free.len() as u64, if sv <= 1e-9 && nv <= 1e-10 { free.len() as u64 } else { 0 }, "exact", !free.is_empty() && sv <= 1e-9 && nv <= 1e-10, Verdict::Confirmed));
 
     // ---- Algorithms 3 and 4: SLIDE RIGHT / SLIDE LEFT ---------------------------
     for (i, alg, name, other) in [
