@@ -95,7 +95,8 @@ fn snapshots(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>> 
         "x_C - x_C(first) + 40 mm x frame (mm)",
         "z (mm)",
     )
-    .legend(Legend::Hidden);
+    .legend(Legend::LowerRight);
+    let mut named = [false; 4];
     let x_first = w.first().map(|s| s.y[XC]).unwrap_or(0.0);
     let t0 = w.first().map(|s| s.t_s).unwrap_or(0.0);
     for k in 0..=16 {
@@ -110,9 +111,15 @@ fn snapshots(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>> 
         let [xp, zp, _, _] = m.tip(&s.y);
         let xc = (s.y[XC] - x_first) * 1e3 + off;
         let zs = m.plate(s.t_s).0 * 1e3;
+        let label = if named[s.mode.index()] {
+            ""
+        } else {
+            s.mode.name()
+        };
+        named[s.mode.index()] = true;
         c = c.series(
             Series::line(
-                "",
+                label,
                 vec![(xc, s.y[ZC] * 1e3), ((xp - x_first) * 1e3 + off, zp * 1e3)],
             )
             .color(s.mode.index()),
