@@ -5,7 +5,7 @@ use crate::chapters::{self, Context, CHAPTERS};
 use crate::error::{self, WorkbookError};
 use crate::render;
 use crate::report::ChapterReport;
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use std::ffi::OsString;
 use std::io::Write;
 use std::path::PathBuf;
@@ -90,7 +90,11 @@ impl Cli {
         Ok(Context {
             quick: self.quick,
             g_mps2: self.g_mps2,
-            figures_root: if self.no_figures { None } else { Some(self.figures.clone()) },
+            figures_root: if self.no_figures {
+                None
+            } else {
+                Some(self.figures.clone())
+            },
         })
     }
 }
@@ -102,19 +106,31 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    let cli = match Cli::try_parse_from(args) {
+    let cli = match command()
+        .try_get_matches_from(args)
+        .and_then(|m| Cli::from_arg_matches(&m))
+    {
         Ok(c) => c,
         Err(e) => {
             use clap::error::ErrorKind;
             return match e.kind() {
-                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+                ErrorKind::DisplayHelp
+                | ErrorKind::DisplayVersion
+                | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
                     let _ = write!(out, "{}", e.render());
-                    if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand { 2 } else { 0 }
+                    if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                        2
+                    } else {
+                        0
+                    }
                 }
                 _ => {
                     // One line: clap's first line names the flag and the value.
                     let text = e.render().to_string();
-                    let first = text.lines().find(|l| !l.trim().is_empty()).unwrap_or("error: bad arguments");
+                    let first = text
+                        .lines()
+                        .find(|l| !l.trim().is_empty())
+                        .unwrap_or("error: bad arguments");
                     let _ = writeln!(err, "{first} (see --help)");
                     2
                 }
@@ -128,6 +144,22 @@ where
             e.exit_code()
         }
     }
+}
+
+/// The clap command with negative numbers accepted as values everywhere, so that
+/// `--angle-deg -30` works as well as `--angle-deg=-30`.
+pub fn command() -> clap::Command {
+    fn allow_negative(cmd: clap::Command) -> clap::Command {
+        cmd.mut_args(|a| {
+            if a.get_action().takes_values() {
+                a.allow_negative_numbers(true)
+            } else {
+                a
+            }
+        })
+        .mut_subcommands(allow_negative)
+    }
+    allow_negative(Cli::command())
 }
 
 fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
@@ -179,7 +211,11 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
         writeln!(out, "{}", serde_json::Value::Array(arr))?;
     } else {
         writeln!(out, "== summary of verdicts ==")?;
-        writeln!(out, "{:<22} {:>6} {:>9} {:>7} {:>13} {:>6}", "chapter", "claims", "confirmed", "erratum", "approximation", "failed")?;
+        writeln!(
+            out,
+            "{:<22} {:>6} {:>9} {:>7} {:>13} {:>6}",
+            "chapter", "claims", "confirmed", "erratum", "approximation", "failed"
+        )?;
         for r in &reports {
             use crate::report::Verdict::*;
             writeln!(
@@ -191,7 +227,11 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
                 r.count(Erratum),
                 r.count(Approximation),
                 r.count(Failed),
-                if r.status.is_some() { "  (not built yet)" } else { "" }
+                if r.status.is_some() {
+                    "  (not built yet)"
+                } else {
+                    ""
+                }
             )?;
         }
     }
@@ -207,11 +247,10 @@ impl From<std::fmt::Error> for WorkbookError {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::CommandFactory;
 
     #[test]
     fn clap_definition_is_consistent() {
-        Cli::command().debug_assert();
+        command().debug_assert();
     }
 
     #[test]

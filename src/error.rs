@@ -45,7 +45,10 @@ impl fmt::Display for WorkbookError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             WorkbookError::BadInput { flag, value, valid } => {
-                write!(f, "error: invalid value {value} for {flag}: valid range is {valid}")
+                write!(
+                    f,
+                    "error: invalid value {value} for {flag}: valid range is {valid}"
+                )
             }
             WorkbookError::Io(msg) => write!(f, "error: {msg}"),
         }
@@ -81,37 +84,61 @@ pub fn check(flag: &str, value: f64, ok: impl Fn(f64) -> bool, valid: &str) -> R
 
 /// `value > 0` and finite.
 pub fn positive(flag: &str, value: f64, unit: &str) -> Result<f64> {
-    check(flag, value, |v| v > 0.0, &format!("a finite number > 0 ({unit})"))
+    check(
+        flag,
+        value,
+        |v| v > 0.0,
+        &format!("a finite number > 0 ({unit})"),
+    )
 }
 
 /// `value >= 0` and finite.
 pub fn non_negative(flag: &str, value: f64, unit: &str) -> Result<f64> {
-    check(flag, value, |v| v >= 0.0, &format!("a finite number >= 0 ({unit})"))
+    check(
+        flag,
+        value,
+        |v| v >= 0.0,
+        &format!("a finite number >= 0 ({unit})"),
+    )
 }
 
 /// `lo < value < hi` and finite.
 pub fn open_interval(flag: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result<f64> {
-    check(flag, value, |v| v > lo && v < hi, &format!("{lo} < value < {hi} ({unit})"))
+    check(
+        flag,
+        value,
+        |v| v > lo && v < hi,
+        &format!("{lo} < value < {hi} ({unit})"),
+    )
 }
 
 /// `lo <= value < hi` and finite.
 pub fn half_open(flag: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result<f64> {
-    check(flag, value, |v| v >= lo && v < hi, &format!("{lo} <= value < {hi} ({unit})"))
+    check(
+        flag,
+        value,
+        |v| v >= lo && v < hi,
+        &format!("{lo} <= value < {hi} ({unit})"),
+    )
 }
 
 /// Parses a velocity pair `X,Y` (m/s) for clap; both parts must be finite numbers.
 pub fn parse_pair(s: &str) -> std::result::Result<[f64; 2], String> {
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
     if parts.len() != 2 {
-        return Err(format!("expected X,Y (two finite numbers in m/s, comma-separated), got '{s}'"));
+        return Err(format!(
+            "expected X,Y (two finite numbers in m/s, comma-separated), got '{s}'"
+        ));
     }
     let mut out = [0.0; 2];
     for (o, p) in out.iter_mut().zip(&parts) {
-        let v: f64 = p
-            .parse()
-            .map_err(|_| format!("expected X,Y (two finite numbers in m/s), '{p}' is not a number"))?;
+        let v: f64 = p.parse().map_err(|_| {
+            format!("expected X,Y (two finite numbers in m/s), '{p}' is not a number")
+        })?;
         if !v.is_finite() {
-            return Err(format!("expected X,Y (two finite numbers in m/s), '{p}' is not finite"));
+            return Err(format!(
+                "expected X,Y (two finite numbers in m/s), '{p}' is not finite"
+            ));
         }
         *o = v;
     }

@@ -40,7 +40,10 @@ pub fn block_names(text: &str) -> Vec<String> {
 
 /// Replaces the body of every generated block with `table(name)`. Errors on an
 /// unknown name or an unterminated block.
-pub fn fill_blocks(text: &str, table: &dyn Fn(&str) -> Option<String>) -> std::result::Result<String, String> {
+pub fn fill_blocks(
+    text: &str,
+    table: &dyn Fn(&str) -> Option<String>,
+) -> std::result::Result<String, String> {
     let mut out = String::with_capacity(text.len());
     let mut rest = text;
     while let Some(i) = rest.find(BEGIN) {
@@ -48,7 +51,9 @@ pub fn fill_blocks(text: &str, table: &dyn Fn(&str) -> Option<String>) -> std::r
         let j = after.find("-->").ok_or("unterminated BEGIN marker")?;
         let name = after[..j].trim();
         let body_start = i + BEGIN.len() + j + 3;
-        let end_rel = rest[body_start..].find(END).ok_or_else(|| format!("block '{name}' has no {END}"))?;
+        let end_rel = rest[body_start..]
+            .find(END)
+            .ok_or_else(|| format!("block '{name}' has no {END}"))?;
         let content = table(name).ok_or_else(|| format!("unknown generated block '{name}'"))?;
         out.push_str(&rest[..body_start]);
         out.push('\n');
@@ -66,7 +71,11 @@ pub fn table_of(report: &ChapterReport, name: &str) -> Option<String> {
     match name {
         "claims" => Some(report.claims_markdown()),
         "results" => Some(report.results_markdown()),
-        other => report.tables.iter().find(|(n, _)| n == other).map(|(_, t)| t.clone()),
+        other => report
+            .tables
+            .iter()
+            .find(|(n, _)| n == other)
+            .map(|(_, t)| t.clone()),
     }
 }
 
@@ -77,7 +86,9 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
     let mut stale = 0;
     for info in CHAPTERS.iter() {
         let path = dir.join(info.markdown_path().file_name().expect("file name"));
-        let Ok(text) = std::fs::read_to_string(&path) else { continue };
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            continue;
+        };
         if block_names(&text).is_empty() {
             continue;
         }
@@ -120,6 +131,9 @@ mod tests {
     fn unknown_and_unterminated_blocks_are_errors() {
         let none = |_: &str| None;
         assert!(fill_blocks("<!-- BEGIN generated:x -->\n<!-- END -->", &none).is_err());
-        assert!(fill_blocks("<!-- BEGIN generated:x -->\nno end", &|_| Some(String::new())).is_err());
+        assert!(fill_blocks("<!-- BEGIN generated:x -->\nno end", &|_| Some(
+            String::new()
+        ))
+        .is_err());
     }
 }

@@ -84,7 +84,11 @@ impl Claim {
             expected: finite_or_text(expected.into()),
             computed: finite_or_text(computed.into()),
             tolerance: finite_or_text(tolerance.into()),
-            verdict: if holds { verdict_if_holds } else { Verdict::Failed },
+            verdict: if holds {
+                verdict_if_holds
+            } else {
+                Verdict::Failed
+            },
         }
     }
 
@@ -99,7 +103,16 @@ impl Claim {
         tolerance: f64,
     ) -> Claim {
         let holds = is_close(expected, computed, tolerance);
-        Claim::judged(id, section, statement, expected, computed, tolerance, holds, Verdict::Confirmed)
+        Claim::judged(
+            id,
+            section,
+            statement,
+            expected,
+            computed,
+            tolerance,
+            holds,
+            Verdict::Confirmed,
+        )
     }
 
     /// An exact comparison of two discrete values (booleans, labels, counts):
@@ -112,7 +125,16 @@ impl Claim {
         computed: T,
     ) -> Claim {
         let holds = expected == computed;
-        Claim::judged(id, section, statement, expected, computed, "exact", holds, Verdict::Confirmed)
+        Claim::judged(
+            id,
+            section,
+            statement,
+            expected,
+            computed,
+            "exact",
+            holds,
+            Verdict::Confirmed,
+        )
     }
 }
 
@@ -231,12 +253,20 @@ impl ChapterReport {
     /// figures and a one-line summary.
     pub fn human(&self) -> String {
         let mut s = String::new();
-        let _ = writeln!(s, "== {} : {} (document section {}) ==", self.chapter, self.title, self.section);
+        let _ = writeln!(
+            s,
+            "== {} : {} (document section {}) ==",
+            self.chapter, self.title, self.section
+        );
         if let Some(status) = &self.status {
             let _ = writeln!(s, "{status}");
         }
         if !self.params.is_empty() {
-            let p: Vec<String> = self.params.iter().map(|(k, v)| format!("{k} = {}", fmt_value(v))).collect();
+            let p: Vec<String> = self
+                .params
+                .iter()
+                .map(|(k, v)| format!("{k} = {}", fmt_value(v)))
+                .collect();
             let _ = writeln!(s, "parameters: {}", p.join(", "));
         }
         if !self.claims.is_empty() {
@@ -274,7 +304,14 @@ impl ChapterReport {
             for (r, c) in rows.iter().zip(&self.claims) {
                 let cells: Vec<&str> = r.iter().map(String::as_str).collect();
                 let _ = writeln!(s, "{}", line(&cells));
-                let _ = writeln!(s, "{:indent$}[{}] {}", "", c.section, c.statement, indent = w[0] + 2);
+                let _ = writeln!(
+                    s,
+                    "{:indent$}[{}] {}",
+                    "",
+                    c.section,
+                    c.statement,
+                    indent = w[0] + 2
+                );
             }
         }
         if !self.results.is_empty() {
@@ -358,8 +395,16 @@ pub fn fmt_num(x: f64) -> String {
     if (1e-3..1e5).contains(&a) {
         let digits = (3 - a.log10().floor() as i32).max(0) as usize;
         let s = format!("{x:.digits$}");
-        let s = if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s };
-        if s == "-0" { "0".into() } else { s }
+        let s = if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        };
+        if s == "-0" {
+            "0".into()
+        } else {
+            s
+        }
     } else {
         format!("{x:.3e}")
     }
@@ -372,9 +417,15 @@ pub fn fmt_value(v: &Value) -> String {
         Value::String(s) => s.clone(),
         Value::Bool(b) => b.to_string(),
         Value::Null => "non-finite".into(),
-        Value::Array(a) => format!("[{}]", a.iter().map(fmt_value).collect::<Vec<_>>().join(", ")),
+        Value::Array(a) => format!(
+            "[{}]",
+            a.iter().map(fmt_value).collect::<Vec<_>>().join(", ")
+        ),
         Value::Object(o) => {
-            let parts: Vec<String> = o.iter().map(|(k, v)| format!("{k}: {}", fmt_value(v))).collect();
+            let parts: Vec<String> = o
+                .iter()
+                .map(|(k, v)| format!("{k}: {}", fmt_value(v)))
+                .collect();
             format!("{{{}}}", parts.join(", "))
         }
     }
@@ -406,9 +457,23 @@ mod tests {
         r.table("t", "|a|".into());
         let j = r.to_json();
         let keys: Vec<&String> = j.as_object().unwrap().keys().collect();
-        assert_eq!(keys, ["chapter", "title", "section", "params", "claims", "results", "figures"]);
+        assert_eq!(
+            keys,
+            ["chapter", "title", "section", "params", "claims", "results", "figures"]
+        );
         let ck: Vec<&String> = j["claims"][0].as_object().unwrap().keys().collect();
-        assert_eq!(ck, ["id", "section", "statement", "expected", "computed", "tolerance", "verdict"]);
+        assert_eq!(
+            ck,
+            [
+                "id",
+                "section",
+                "statement",
+                "expected",
+                "computed",
+                "tolerance",
+                "verdict"
+            ]
+        );
     }
 
     #[test]
@@ -428,6 +493,6 @@ mod tests {
         assert_eq!(fmt_num(1.23456e-7), "1.235e-7");
         assert_eq!(fmt_num(-0.00001), "-1.000e-5");
         assert_eq!(fmt_num(1234.5678), "1235");
-        assert_eq!(fmt_num(3.14159), "3.142");
+        assert_eq!(fmt_num(1.23456), "1.235");
     }
 }

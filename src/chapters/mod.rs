@@ -130,7 +130,11 @@ impl Context {
 
     /// A context for tests and `render`: quick as given, no figures, default g.
     pub fn headless(quick: bool) -> Self {
-        Context { quick, g_mps2: None, figures_root: None }
+        Context {
+            quick,
+            g_mps2: None,
+            figures_root: None,
+        }
     }
 }
 

@@ -42,7 +42,14 @@ pub fn time_tolerance(t: f64) -> f64 {
 /// end of a final bracket no wider than `t_tol`.
 ///
 /// Illinois: regula falsi, halving the weight of an end that is retained twice in a row.
-pub fn illinois(mut f: impl FnMut(f64) -> f64, a: f64, b: f64, fa: f64, fb: f64, t_tol: f64) -> (f64, u32) {
+pub fn illinois(
+    mut f: impl FnMut(f64) -> f64,
+    a: f64,
+    b: f64,
+    fa: f64,
+    fb: f64,
+    t_tol: f64,
+) -> (f64, u32) {
     // Invariant: fa != 0 (a lies before the crossing) and b lies at or past it.
     let (mut a, mut b, mut fa, mut fb) = (a, b, fa, fb);
     let mut evals = 0;

@@ -62,7 +62,13 @@ pub trait HybridSystem<const N: usize> {
     fn direction(&self, mode: Self::Mode, i: usize) -> Direction;
 
     /// The transition when guard `i` of `mode` fires at `(t, y)`.
-    fn on_event(&self, mode: Self::Mode, i: usize, t: f64, y: &[f64; N]) -> Transition<Self::Mode, Self::Stop, N>;
+    fn on_event(
+        &self,
+        mode: Self::Mode,
+        i: usize,
+        t: f64,
+        y: &[f64; N],
+    ) -> Transition<Self::Mode, Self::Stop, N>;
 
     /// Longest step from `(t, y)` in `mode` (s). Guards are compared only at the ends
     /// of a step (and at `interior_checks` points), so the model must keep this short
@@ -80,7 +86,12 @@ pub trait HybridSystem<const N: usize> {
     }
 
     /// The transition at a breakpoint (default: carry on in the same mode).
-    fn on_breakpoint(&self, mode: Self::Mode, _t: f64, y: &[f64; N]) -> Transition<Self::Mode, Self::Stop, N> {
+    fn on_breakpoint(
+        &self,
+        mode: Self::Mode,
+        _t: f64,
+        y: &[f64; N],
+    ) -> Transition<Self::Mode, Self::Stop, N> {
         Transition::To { mode, state: *y }
     }
 }
@@ -125,7 +136,10 @@ impl Default for Options {
             locate_events: true,
             event_tol_s: None,
             interior_checks: 0,
-            zeno: ZenoGuard { max_events: 100, window_s: 1e-6 },
+            zeno: ZenoGuard {
+                max_events: 100,
+                window_s: 1e-6,
+            },
             record_events: true,
         }
     }
@@ -213,7 +227,15 @@ pub trait Observer<M, const N: usize> {
     fn segment(&mut self, _mode: M, _seg: &Segment<'_, N>) {}
     /// Called at every event with the state before the reset and the next mode and
     /// state after it (`None` if the run stops).
-    fn event(&mut self, _t_s: f64, _from: M, _guard: usize, _before: &[f64; N], _after: Option<(M, &[f64; N])>) {}
+    fn event(
+        &mut self,
+        _t_s: f64,
+        _from: M,
+        _guard: usize,
+        _before: &[f64; N],
+        _after: Option<(M, &[f64; N])>,
+    ) {
+    }
 }
 
 impl<M, const N: usize> Observer<M, N> for () {}
@@ -260,22 +282,33 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
             break Outcome::Completed;
         }
         if fresh_mode {
-            guards0 = (0..sys.guard_count(mode)).map(|i| sys.guard(mode, i, t, &y)).collect();
+            guards0 = (0..sys.guard_count(mode))
+                .map(|i| sys.guard(mode, i, t, &y))
+                .collect();
             fresh_mode = false;
         }
         let bp = sys.breakpoint_after(t).filter(|&b| b < t_end);
         let horizon = bp.unwrap_or(t_end);
         let max_step = sys.max_step(mode, t, &y);
-        let t_lim = if t + max_step < horizon { t + max_step } else { horizon };
+        let t_lim = if t + max_step < horizon {
+            t + max_step
+        } else {
+            horizon
+        };
         // A step too short to advance time right after a run of events is Zeno
         // accumulation below the time resolution; otherwise a failure. Either way:
         // report, never spin.
         let too_small = |t: f64, e: OdeError| {
-            let in_window = recent.iter().filter(|&&te| t - te < opts.zeno.window_s).count();
+            let in_window = recent
+                .iter()
+                .filter(|&&te| t - te < opts.zeno.window_s)
+                .count();
             match e {
-                OdeError::StepTooSmall { .. } if in_window > 0 => {
-                    Outcome::Zeno { t_s: t, events: in_window, window_s: opts.zeno.window_s }
-                }
+                OdeError::StepTooSmall { .. } if in_window > 0 => Outcome::Zeno {
+                    t_s: t,
+                    events: in_window,
+                    window_s: opts.zeno.window_s,
+                },
                 e => Outcome::Failed(e),
             }
         };
@@ -309,15 +342,25 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         };
         // Find the earliest crossing among the guards.
         let mut best: Option<(usize, f64)> = None;
-        let guards1: Vec<f64> = (0..guards0.len()).map(|i| sys.guard(mode, i, t1, &y1)).collect();
+        let guards1: Vec<f64> = (0..guards0.len())
+            .map(|i| sys.guard(mode, i, t1, &y1))
+            .collect();
         for i in 0..guards0.len() {
             let dir = sys.direction(mode, i);
             let mut ta = ts;
             let mut ga = guards0[i];
             let mut bracket = None;
             for k in 1..=opts.interior_checks + 1 {
-                let tb = if k == opts.interior_checks + 1 { t1 } else { ts + (t1 - ts) * k as f64 / (opts.interior_checks + 1) as f64 };
-                let gb = if tb == t1 { guards1[i] } else { sys.guard(mode, i, tb, &eval(tb)) };
+                let tb = if k == opts.interior_checks + 1 {
+                    t1
+                } else {
+                    ts + (t1 - ts) * k as f64 / (opts.interior_checks + 1) as f64
+                };
+                let gb = if tb == t1 {
+                    guards1[i]
+                } else {
+                    sys.guard(mode, i, tb, &eval(tb))
+                };
                 if dir.fires(ga, gb) {
                     bracket = Some((ta, tb, ga, gb));
                     break;
@@ -342,7 +385,16 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         match best {
             Some((i, te)) => {
                 let ye = eval(te);
-                obs.segment(mode, &Segment { t0: ts, t1: te, y0: ys, y1: ye, eval: &eval });
+                obs.segment(
+                    mode,
+                    &Segment {
+                        t0: ts,
+                        t1: te,
+                        y0: ys,
+                        y1: ye,
+                        eval: &eval,
+                    },
+                );
                 add_time(&mut run.mode_time_s, mode, te - ts);
                 let tr = sys.on_event(mode, i, te, &ye);
                 run.event_count += 1;
@@ -357,7 +409,12 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                     }
                 };
                 if opts.record_events {
-                    run.events.push(EventRecord { t_s: te, from: mode, guard: i, to });
+                    run.events.push(EventRecord {
+                        t_s: te,
+                        from: mode,
+                        guard: i,
+                        to,
+                    });
                 }
                 t = te;
                 match tr {
@@ -377,11 +434,24 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                     recent.pop_front();
                 }
                 if recent.len() == opts.zeno.max_events && te - recent[0] < opts.zeno.window_s {
-                    break Outcome::Zeno { t_s: te, events: recent.len(), window_s: opts.zeno.window_s };
+                    break Outcome::Zeno {
+                        t_s: te,
+                        events: recent.len(),
+                        window_s: opts.zeno.window_s,
+                    };
                 }
             }
             None => {
-                obs.segment(mode, &Segment { t0: ts, t1, y0: ys, y1, eval: &eval });
+                obs.segment(
+                    mode,
+                    &Segment {
+                        t0: ts,
+                        t1,
+                        y0: ys,
+                        y1,
+                        eval: &eval,
+                    },
+                );
                 add_time(&mut run.mode_time_s, mode, t1 - ts);
                 t = t1;
                 y = y1;
@@ -393,7 +463,12 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                             if m != mode {
                                 run.event_count += 1;
                                 if opts.record_events {
-                                    run.events.push(EventRecord { t_s: t, from: mode, guard: usize::MAX, to: Some(m) });
+                                    run.events.push(EventRecord {
+                                        t_s: t,
+                                        from: mode,
+                                        guard: usize::MAX,
+                                        to: Some(m),
+                                    });
                                 }
                             }
                             mode = m;

@@ -7,6 +7,10 @@
 //!
 //! State vectors are fixed-size arrays `[f64; N]`: no allocation in the stepping loop.
 
+// Index loops run over several arrays of the same length at once (y, k1..k7, r); they read
+// like the formulas they implement.
+#![allow(clippy::needless_range_loop)]
+
 /// A first-order system `y' = f(t, y)` of dimension `N`.
 pub trait OdeSystem<const N: usize> {
     /// The right-hand side `f(t, y)`.
@@ -68,7 +72,11 @@ pub enum StepControl {
 impl StepControl {
     /// Adaptive control with `rtol`, `atol` and no step limit.
     pub fn tol(rtol: f64, atol: f64) -> Self {
-        StepControl::Adaptive { rtol, atol, h_max_s: f64::INFINITY }
+        StepControl::Adaptive {
+            rtol,
+            atol,
+            h_max_s: f64::INFINITY,
+        }
     }
 }
 
@@ -166,14 +174,16 @@ impl<const N: usize> Step<N> {
                 let h01 = -2.0 * s3 + 3.0 * s2;
                 let h11 = s3 - s2;
                 for i in 0..N {
-                    out[i] = h00 * self.y0[i] + h10 * h * f0[i] + h01 * self.y1[i] + h11 * h * f1[i];
+                    out[i] =
+                        h00 * self.y0[i] + h10 * h * f0[i] + h01 * self.y1[i] + h11 * h * f1[i];
                 }
             }
             Interp::Dopri { r } => {
                 let s1 = 1.0 - s;
                 for i in 0..N {
                     // formula: y0 + th (r1 + th1 (r2 + th (r3 + th1 r4)))   (Hairer contd5)
-                    out[i] = self.y0[i] + s * (r[0][i] + s1 * (r[1][i] + s * (r[2][i] + s1 * r[3][i])));
+                    out[i] =
+                        self.y0[i] + s * (r[0][i] + s1 * (r[1][i] + s * (r[2][i] + s1 * r[3][i])));
                 }
             }
         }
@@ -254,7 +264,13 @@ impl<const N: usize> Integrator<N> {
     /// A new integrator. Adaptive control is only meaningful for [`Method::Dopri5`];
     /// Euler and RK4 with `Adaptive` use `h_max_s` (or 1e-3 s) as a fixed step.
     pub fn new(method: Method, control: StepControl) -> Self {
-        Integrator { method, control, stats: Stats::default(), h_next: None, fsal: None }
+        Integrator {
+            method,
+            control,
+            stats: Stats::default(),
+            h_next: None,
+            fsal: None,
+        }
     }
 
     /// Forgets the step history: call after a discontinuity (an event or a reset),
@@ -274,16 +290,27 @@ impl<const N: usize> Integrator<N> {
     }
 
     /// Takes one accepted step from `(t, y)` towards `t_max` (never beyond it).
-    pub fn step<S: OdeSystem<N> + ?Sized>(&mut self, sys: &S, t: f64, y: &[f64; N], t_max: f64) -> Result<Step<N>, OdeError> {
+    pub fn step<S: OdeSystem<N> + ?Sized>(
+        &mut self,
+        sys: &S,
+        t: f64,
+        y: &[f64; N],
+        t_max: f64,
+    ) -> Result<Step<N>, OdeError> {
         let f0 = self.deriv(sys, t, y);
         if !finite(&f0) || !finite(y) {
             return Err(OdeError::NonFinite { t_s: t });
         }
         let span = t_max - t;
         match (self.method, self.control) {
-            (Method::Dopri5, StepControl::Adaptive { rtol, atol, h_max_s }) => {
-                self.dopri_adaptive(sys, t, y, f0, span, rtol, atol, h_max_s)
-            }
+            (
+                Method::Dopri5,
+                StepControl::Adaptive {
+                    rtol,
+                    atol,
+                    h_max_s,
+                },
+            ) => self.dopri_adaptive(sys, t, y, f0, span, rtol, atol, h_max_s),
             (method, control) => {
                 let h_fixed = match control {
                     StepControl::Fixed { h_s } => h_s,
@@ -296,12 +323,22 @@ impl<const N: usize> Integrator<N> {
                     }
                 };
                 // Land on t_max when within a hair of it, instead of a sliver step.
-                let h = if h_fixed >= span * (1.0 - 1e-12) { span } else { h_fixed };
+                let h = if h_fixed >= span * (1.0 - 1e-12) {
+                    span
+                } else {
+                    h_fixed
+                };
                 let t1 = if h == span { t_max } else { t + h };
                 let step = match method {
                     Method::Euler => {
                         let y1 = comb(y, h, &[(1.0, &f0)]); // formula: y1 = y0 + h f(t0, y0)
-                        Step { t0: t, t1, y0: *y, y1, interp: Interp::Linear }
+                        Step {
+                            t0: t,
+                            t1,
+                            y0: *y,
+                            y1,
+                            interp: Interp::Linear,
+                        }
                     }
                     Method::Rk4 => {
                         let k2 = sys.rhs(t + 0.5 * h, &comb(y, h, &[(0.5, &f0)]));
@@ -309,18 +346,39 @@ impl<const N: usize> Integrator<N> {
                         let k4 = sys.rhs(t + h, &comb(y, h, &[(1.0, &k3)]));
                         self.stats.rhs_evals += 3;
                         // formula: y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4)
-                        let y1 = comb(y, h, &[(1.0 / 6.0, &f0), (1.0 / 3.0, &k2), (1.0 / 3.0, &k3), (1.0 / 6.0, &k4)]);
+                        let y1 = comb(
+                            y,
+                            h,
+                            &[
+                                (1.0 / 6.0, &f0),
+                                (1.0 / 3.0, &k2),
+                                (1.0 / 3.0, &k3),
+                                (1.0 / 6.0, &k4),
+                            ],
+                        );
                         // End derivative for the Hermite interpolant; it is the next
                         // step's first stage, so it is cached, not wasted.
                         let f1 = self.deriv(sys, t1, &y1);
                         self.fsal = Some((t1, y1, f1));
-                        Step { t0: t, t1, y0: *y, y1, interp: Interp::Hermite { f0, f1 } }
+                        Step {
+                            t0: t,
+                            t1,
+                            y0: *y,
+                            y1,
+                            interp: Interp::Hermite { f0, f1 },
+                        }
                     }
                     Method::Dopri5 => {
                         let (y1, k7, r, _) = dopri_stages(sys, t, y, &f0, h);
                         self.stats.rhs_evals += 6;
                         self.fsal = Some((t1, y1, k7));
-                        Step { t0: t, t1, y0: *y, y1, interp: Interp::Dopri { r } }
+                        Step {
+                            t0: t,
+                            t1,
+                            y0: *y,
+                            y1,
+                            interp: Interp::Dopri { r },
+                        }
                     }
                 };
                 if !finite(&step.y1) {
@@ -369,7 +427,11 @@ impl<const N: usize> Integrator<N> {
             let e = (sum / N as f64).sqrt();
             if e.is_finite() && e <= 1.0 {
                 // formula: h_new = h min(5, max(0.2, 0.9 e^(-1/5)))
-                let fac = if e == 0.0 { 5.0 } else { (0.9 * e.powf(-0.2)).clamp(0.2, 5.0) };
+                let fac = if e == 0.0 {
+                    5.0
+                } else {
+                    (0.9 * e.powf(-0.2)).clamp(0.2, 5.0)
+                };
                 if !last {
                     self.h_next = Some((h * fac).min(h_max));
                 } else if self.h_next.is_none() {
@@ -377,10 +439,20 @@ impl<const N: usize> Integrator<N> {
                 }
                 self.stats.accepted += 1;
                 self.fsal = Some((t1, y1, k7));
-                return Ok(Step { t0: t, t1, y0: *y, y1, interp: Interp::Dopri { r } });
+                return Ok(Step {
+                    t0: t,
+                    t1,
+                    y0: *y,
+                    y1,
+                    interp: Interp::Dopri { r },
+                });
             }
             self.stats.rejected += 1;
-            let fac = if e.is_finite() { (0.9 * e.powf(-0.2)).clamp(0.1, 0.9) } else { 0.1 };
+            let fac = if e.is_finite() {
+                (0.9 * e.powf(-0.2)).clamp(0.1, 0.9)
+            } else {
+                0.1
+            };
             h *= fac;
             self.h_next = Some(h);
         }
@@ -417,11 +489,28 @@ fn dopri_stages<S: OdeSystem<N> + ?Sized, const N: usize>(
 ) -> ([f64; N], [f64; N], [[f64; N]; 4], [f64; N]) {
     let k2 = sys.rhs(t + C2 * h, &comb(y, h, &[(A21, k1)]));
     let k3 = sys.rhs(t + C3 * h, &comb(y, h, &[(A31, k1), (A32, &k2)]));
-    let k4 = sys.rhs(t + C4 * h, &comb(y, h, &[(A41, k1), (A42, &k2), (A43, &k3)]));
-    let k5 = sys.rhs(t + C5 * h, &comb(y, h, &[(A51, k1), (A52, &k2), (A53, &k3), (A54, &k4)]));
-    let k6 = sys.rhs(t + h, &comb(y, h, &[(A61, k1), (A62, &k2), (A63, &k3), (A64, &k4), (A65, &k5)]));
+    let k4 = sys.rhs(
+        t + C4 * h,
+        &comb(y, h, &[(A41, k1), (A42, &k2), (A43, &k3)]),
+    );
+    let k5 = sys.rhs(
+        t + C5 * h,
+        &comb(y, h, &[(A51, k1), (A52, &k2), (A53, &k3), (A54, &k4)]),
+    );
+    let k6 = sys.rhs(
+        t + h,
+        &comb(
+            y,
+            h,
+            &[(A61, k1), (A62, &k2), (A63, &k3), (A64, &k4), (A65, &k5)],
+        ),
+    );
     // formula: y1 = y0 + h (35/384 k1 + 500/1113 k3 + 125/192 k4 - 2187/6784 k5 + 11/84 k6)
-    let y1 = comb(y, h, &[(A71, k1), (A73, &k3), (A74, &k4), (A75, &k5), (A76, &k6)]);
+    let y1 = comb(
+        y,
+        h,
+        &[(A71, k1), (A73, &k3), (A74, &k4), (A75, &k5), (A76, &k6)],
+    );
     let k7 = sys.rhs(t + h, &y1);
     let mut err = [0.0; N];
     let mut r = [[0.0; N]; 4];
@@ -457,7 +546,11 @@ fn initial_step<S: OdeSystem<N> + ?Sized, const N: usize>(
         (s / N as f64).sqrt()
     };
     let (d0, d1) = (norm(y), norm(f0));
-    let h0 = if d0 < 1e-5 || d1 < 1e-5 { 1e-6 } else { 0.01 * d0 / d1 };
+    let h0 = if d0 < 1e-5 || d1 < 1e-5 {
+        1e-6
+    } else {
+        0.01 * d0 / d1
+    };
     let y1 = comb(y, h0, &[(1.0, f0)]);
     let f1 = sys.rhs(t + h0, &y1);
     stats.rhs_evals += 1;
@@ -466,7 +559,11 @@ fn initial_step<S: OdeSystem<N> + ?Sized, const N: usize>(
         diff[i] = f1[i] - f0[i];
     }
     let d2 = norm(&diff) / h0;
-    let h1 = if d1.max(d2) <= 1e-15 { (h0 * 1e-3).max(1e-6) } else { (0.01 / d1.max(d2)).powf(0.2) };
+    let h1 = if d1.max(d2) <= 1e-15 {
+        (h0 * 1e-3).max(1e-6)
+    } else {
+        (0.01 / d1.max(d2)).powf(0.2)
+    };
     (100.0 * h0).min(h1)
 }
 
@@ -512,12 +609,20 @@ mod tests {
         for &tol in &[1e-6, 1e-9, 1e-12] {
             let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(tol, tol));
             let y = integ.integrate(&decay, 0.0, [1.0], 5.0, |_| {}).unwrap();
-            assert!((y[0] - (-5.0f64).exp()).abs() < 10.0 * tol, "decay tol {tol}");
+            assert!(
+                (y[0] - (-5.0f64).exp()).abs() < 10.0 * tol,
+                "decay tol {tol}"
+            );
             let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(tol, tol));
             let t_end = 2.0 * std::f64::consts::PI * 3.0;
-            let y = integ.integrate(&oscillator, 0.0, [1.0, 0.0], t_end, |_| {}).unwrap();
+            let y = integ
+                .integrate(&oscillator, 0.0, [1.0, 0.0], t_end, |_| {})
+                .unwrap();
             // three periods: error grows linearly with time, hence 100 x tol
-            assert!((y[0] - 1.0).abs() < 100.0 * tol && y[1].abs() < 100.0 * tol, "osc tol {tol}: {y:?}");
+            assert!(
+                (y[0] - 1.0).abs() < 100.0 * tol && y[1].abs() < 100.0 * tol,
+                "osc tol {tol}: {y:?}"
+            );
         }
     }
 
@@ -530,7 +635,9 @@ mod tests {
                 for k in 1..10 {
                     let t = s.t0 + (s.t1 - s.t0) * k as f64 / 10.0;
                     let y = s.eval(t);
-                    worst = worst.max((y[0] - t.cos()).abs()).max((y[1] + t.sin()).abs());
+                    worst = worst
+                        .max((y[0] - t.cos()).abs())
+                        .max((y[1] + t.sin()).abs());
                 }
             })
             .unwrap();

@@ -70,12 +70,22 @@ pub struct Harmonic {
 impl Harmonic {
     /// `u = delta sin(2 pi f t)` along `axis`.
     pub fn sine(axis: Axis, amplitude_m: f64, frequency_hz: f64) -> Self {
-        Harmonic { axis, amplitude_m, omega_rad_s: TAU * frequency_hz, phase_rad: 0.0 }
+        Harmonic {
+            axis,
+            amplitude_m,
+            omega_rad_s: TAU * frequency_hz,
+            phase_rad: 0.0,
+        }
     }
 
     /// `u = delta cos(2 pi f t)` along `axis` (the stick's platform, section 4).
     pub fn cosine(axis: Axis, amplitude_m: f64, frequency_hz: f64) -> Self {
-        Harmonic { axis, amplitude_m, omega_rad_s: TAU * frequency_hz, phase_rad: std::f64::consts::FRAC_PI_2 }
+        Harmonic {
+            axis,
+            amplitude_m,
+            omega_rad_s: TAU * frequency_hz,
+            phase_rad: std::f64::consts::FRAC_PI_2,
+        }
     }
 
     /// Peak velocity delta omega (m/s).
@@ -92,31 +102,59 @@ impl Harmonic {
         self.amplitude_m * (self.omega_rad_s * t + self.phase_rad).sin() // formula: u = delta sin(wt + phi)
     }
     fn v(&self, t: f64) -> f64 {
-        self.amplitude_m * self.omega_rad_s * (self.omega_rad_s * t + self.phase_rad).cos() // formula: u' = delta w cos(wt + phi)
+        self.amplitude_m * self.omega_rad_s * (self.omega_rad_s * t + self.phase_rad).cos()
+        // formula: u' = delta w cos(wt + phi)
     }
     fn a(&self, t: f64) -> f64 {
-        -self.amplitude_m * self.omega_rad_s * self.omega_rad_s * (self.omega_rad_s * t + self.phase_rad).sin() // formula: u'' = -delta w^2 sin(wt + phi)
+        -self.amplitude_m
+            * self.omega_rad_s
+            * self.omega_rad_s
+            * (self.omega_rad_s * t + self.phase_rad).sin() // formula: u'' = -delta w^2 sin(wt + phi)
     }
 }
 
 impl PlateMotion for Harmonic {
     fn x_m(&self, t: f64) -> f64 {
-        if self.axis == Axis::X { self.u(t) } else { 0.0 }
+        if self.axis == Axis::X {
+            self.u(t)
+        } else {
+            0.0
+        }
     }
     fn vx_mps(&self, t: f64) -> f64 {
-        if self.axis == Axis::X { self.v(t) } else { 0.0 }
+        if self.axis == Axis::X {
+            self.v(t)
+        } else {
+            0.0
+        }
     }
     fn ax_mps2(&self, t: f64) -> f64 {
-        if self.axis == Axis::X { self.a(t) } else { 0.0 }
+        if self.axis == Axis::X {
+            self.a(t)
+        } else {
+            0.0
+        }
     }
     fn z_m(&self, t: f64) -> f64 {
-        if self.axis == Axis::Z { self.u(t) } else { 0.0 }
+        if self.axis == Axis::Z {
+            self.u(t)
+        } else {
+            0.0
+        }
     }
     fn vz_mps(&self, t: f64) -> f64 {
-        if self.axis == Axis::Z { self.v(t) } else { 0.0 }
+        if self.axis == Axis::Z {
+            self.v(t)
+        } else {
+            0.0
+        }
     }
     fn az_mps2(&self, t: f64) -> f64 {
-        if self.axis == Axis::Z { self.a(t) } else { 0.0 }
+        if self.axis == Axis::Z {
+            self.a(t)
+        } else {
+            0.0
+        }
     }
     fn period_s(&self) -> f64 {
         TAU / self.omega_rad_s
@@ -178,7 +216,8 @@ impl PlateMotion for Sawtooth {
         if tau < self.slow_duration_s {
             self.slow_velocity_mps * tau
         } else {
-            self.slow_velocity_mps * self.slow_duration_s - self.fast_velocity_mps * (tau - self.slow_duration_s)
+            self.slow_velocity_mps * self.slow_duration_s
+                - self.fast_velocity_mps * (tau - self.slow_duration_s)
         }
     }
     fn vx_mps(&self, t: f64) -> f64 {
@@ -196,7 +235,13 @@ impl PlateMotion for Sawtooth {
         let start = k * period;
         // Within a few ulps of a breakpoint counts as at it: return the next one.
         let eps = 8.0 * f64::EPSILON * t.abs().max(period);
-        Some(if tau + eps < self.slow_duration_s { start + self.slow_duration_s } else if tau + eps < period { start + period } else { start + period + self.slow_duration_s })
+        Some(if tau + eps < self.slow_duration_s {
+            start + self.slow_duration_s
+        } else if tau + eps < period {
+            start + period
+        } else {
+            start + period + self.slow_duration_s
+        })
     }
 }
 
@@ -214,15 +259,27 @@ pub struct Biharmonic {
 
 impl PlateMotion for Biharmonic {
     fn x_m(&self, t: f64) -> f64 {
-        let (v, w, e) = (self.velocity_amplitude_mps, self.omega_rad_s, self.asymmetry);
+        let (v, w, e) = (
+            self.velocity_amplitude_mps,
+            self.omega_rad_s,
+            self.asymmetry,
+        );
         v * ((1.0 - (w * t).cos()) / w + e * (2.0 * w * t).sin() / (2.0 * w)) // formula: x = V((1 - cos wt)/w + eps sin 2wt/(2w))
     }
     fn vx_mps(&self, t: f64) -> f64 {
-        let (v, w, e) = (self.velocity_amplitude_mps, self.omega_rad_s, self.asymmetry);
+        let (v, w, e) = (
+            self.velocity_amplitude_mps,
+            self.omega_rad_s,
+            self.asymmetry,
+        );
         v * ((w * t).sin() + e * (2.0 * w * t).cos()) // formula: v_p = V (sin wt + eps cos 2wt)
     }
     fn ax_mps2(&self, t: f64) -> f64 {
-        let (v, w, e) = (self.velocity_amplitude_mps, self.omega_rad_s, self.asymmetry);
+        let (v, w, e) = (
+            self.velocity_amplitude_mps,
+            self.omega_rad_s,
+            self.asymmetry,
+        );
         v * w * ((w * t).cos() - 2.0 * e * (2.0 * w * t).sin()) // formula: a_p = V w (cos wt - 2 eps sin 2wt)
     }
     fn period_s(&self) -> f64 {
@@ -245,7 +302,11 @@ mod tests {
         let plates: Vec<Box<dyn PlateMotion>> = vec![
             Box::new(Harmonic::sine(Axis::X, 0.002, 7.0)),
             Box::new(Harmonic::cosine(Axis::Z, 0.003, 30.0)),
-            Box::new(Biharmonic { velocity_amplitude_mps: 0.2, omega_rad_s: 40.0, asymmetry: 0.3 }),
+            Box::new(Biharmonic {
+                velocity_amplitude_mps: 0.2,
+                omega_rad_s: 40.0,
+                asymmetry: 0.3,
+            }),
         ];
         for p in &plates {
             let h = 1e-5 * p.period_s();
@@ -263,7 +324,11 @@ mod tests {
 
     #[test]
     fn sawtooth_has_zero_net_displacement_and_exact_breakpoints() {
-        let s = Sawtooth { slow_velocity_mps: 0.1, fast_velocity_mps: 0.3, slow_duration_s: 0.03 };
+        let s = Sawtooth {
+            slow_velocity_mps: 0.1,
+            fast_velocity_mps: 0.3,
+            slow_duration_s: 0.03,
+        };
         assert!((s.fast_duration_s() - 0.01).abs() < 1e-15);
         assert!((s.period_s() - 0.04).abs() < 1e-15);
         assert!(s.x_m(0.04 * 7.0 + 1e-12).abs() < 1e-12);
@@ -278,7 +343,10 @@ mod tests {
         assert!((b3 - 0.07).abs() < 1e-14, "{b3}");
         // mean velocity over a period is zero
         let n = 4000;
-        let mean: f64 = (0..n).map(|i| s.vx_mps((i as f64 + 0.5) * s.period_s() / n as f64)).sum::<f64>() / n as f64;
+        let mean: f64 = (0..n)
+            .map(|i| s.vx_mps((i as f64 + 0.5) * s.period_s() / n as f64))
+            .sum::<f64>()
+            / n as f64;
         assert!(mean.abs() < 1e-12, "{mean}");
     }
 

@@ -23,14 +23,23 @@ impl HybridSystem<2> for Ball {
     }
     fn exact(&self, _m: BallMode, t0: f64, y0: &[f64; 2], t: f64) -> Option<[f64; 2]> {
         let s = t - t0;
-        self.closed_form.then(|| [y0[0] + y0[1] * s - 0.5 * G * s * s, y0[1] - G * s])
+        self.closed_form
+            .then(|| [y0[0] + y0[1] * s - 0.5 * G * s * s, y0[1] - G * s])
     }
     fn max_step(&self, _m: BallMode, _t: f64, y: &[f64; 2]) -> f64 {
         // Leaving the floor: stop at the apex (time v/g), so the height guard is seen
         // positive before it can fall back through zero. Otherwise any step (closed
         // form: sampled every 0.05 s).
-        let apex = if y[0] <= 0.0 && y[1] > 0.0 { y[1] / G } else { f64::INFINITY };
-        apex.min(if self.closed_form { 0.05 } else { f64::INFINITY })
+        let apex = if y[0] <= 0.0 && y[1] > 0.0 {
+            y[1] / G
+        } else {
+            f64::INFINITY
+        };
+        apex.min(if self.closed_form {
+            0.05
+        } else {
+            f64::INFINITY
+        })
     }
     fn guard_count(&self, _m: BallMode) -> usize {
         1
@@ -41,11 +50,20 @@ impl HybridSystem<2> for Ball {
     fn direction(&self, _m: BallMode, _i: usize) -> Direction {
         Direction::Falling
     }
-    fn on_event(&self, m: BallMode, _i: usize, _t: f64, y: &[f64; 2]) -> Transition<BallMode, &'static str, 2> {
+    fn on_event(
+        &self,
+        m: BallMode,
+        _i: usize,
+        _t: f64,
+        y: &[f64; 2],
+    ) -> Transition<BallMode, &'static str, 2> {
         if self.e == 0.0 {
             Transition::Stop("landed")
         } else {
-            Transition::To { mode: m, state: [0.0, -self.e * y[1]] }
+            Transition::To {
+                mode: m,
+                state: [0.0, -self.e * y[1]],
+            }
         }
     }
 }
@@ -56,11 +74,26 @@ fn dropped_ball_impact_time_to_1e_12() {
     // output reproduces it, so the only error is the root finder's (a few ulps).
     for h in [0.1, 1.0, 10.0] {
         for closed_form in [false, true] {
-            let ball = Ball { e: 0.0, closed_form };
-            let run = simulate(&ball, BallMode::Flight, 0.0, [h, 0.0], 100.0, &Options::default(), &mut ());
+            let ball = Ball {
+                e: 0.0,
+                closed_form,
+            };
+            let run = simulate(
+                &ball,
+                BallMode::Flight,
+                0.0,
+                [h, 0.0],
+                100.0,
+                &Options::default(),
+                &mut (),
+            );
             assert_eq!(run.outcome, Outcome::Stopped("landed"));
             let exact = (2.0 * h / G).sqrt();
-            assert!((run.t_end_s - exact).abs() < 1e-12, "h {h} closed {closed_form}: {} vs {exact}", run.t_end_s);
+            assert!(
+                (run.t_end_s - exact).abs() < 1e-12,
+                "h {h} closed {closed_form}: {} vs {exact}",
+                run.t_end_s
+            );
         }
     }
 }
@@ -73,12 +106,30 @@ fn bouncing_ball_with_restitution_ends_in_zeno_at_the_accumulation_time() {
     let t_inf = t1 + 2.0 * t1 * e / (1.0 - e);
     for closed_form in [true, false] {
         let ball = Ball { e, closed_form };
-        let run = simulate(&ball, BallMode::Flight, 0.0, [h, 0.0], 10.0, &Options::default(), &mut ());
-        let Outcome::Zeno { t_s, events, window_s } = run.outcome else { panic!("expected Zeno, got {:?}", run.outcome) };
+        let run = simulate(
+            &ball,
+            BallMode::Flight,
+            0.0,
+            [h, 0.0],
+            10.0,
+            &Options::default(),
+            &mut (),
+        );
+        let Outcome::Zeno {
+            t_s,
+            events,
+            window_s,
+        } = run.outcome
+        else {
+            panic!("expected Zeno, got {:?}", run.outcome)
+        };
         // Either 100 events inside the window or accumulation below the resolution of t.
         assert!((1..=100).contains(&events), "{events}");
         // The remaining flights after the guard fires sum to less than the window.
-        assert!(t_s <= t_inf + 1e-12 && t_inf - t_s < window_s, "closed {closed_form}: {t_s} vs {t_inf}");
+        assert!(
+            t_s <= t_inf + 1e-12 && t_inf - t_s < window_s,
+            "closed {closed_form}: {t_s} vs {t_inf}"
+        );
         // Flights shrink by e = 0.5 from 2 t1 e = 0.45 s; reaching the resolution of t
         // (ulp(1.35) = 2.2e-16 s) takes log2(0.45 / 2.2e-16) = 51 bounces, and the
         // window rule stops at 100 events inside 1 us plus the log2(0.45 / 1e-6) = 19
@@ -91,12 +142,43 @@ fn bouncing_ball_with_restitution_ends_in_zeno_at_the_accumulation_time() {
 fn event_blind_baseline_places_the_event_late() {
     // Without location the event is taken at the end of the step that saw the sign
     // change: late by up to one step (0.05 s here).
-    let ball = Ball { e: 0.0, closed_form: false };
-    let opts = Options { method: Method::Rk4, control: StepControl::Fixed { h_s: 0.05 }, locate_events: false, ..Options::default() };
-    let run = simulate(&ball, BallMode::Flight, 0.0, [1.0, 0.0], 10.0, &opts, &mut ());
+    let ball = Ball {
+        e: 0.0,
+        closed_form: false,
+    };
+    let opts = Options {
+        method: Method::Rk4,
+        control: StepControl::Fixed { h_s: 0.05 },
+        locate_events: false,
+        ..Options::default()
+    };
+    let run = simulate(
+        &ball,
+        BallMode::Flight,
+        0.0,
+        [1.0, 0.0],
+        10.0,
+        &opts,
+        &mut (),
+    );
     let exact = (2.0 / G).sqrt();
-    assert!(run.t_end_s > exact && run.t_end_s - exact <= 0.05 + 1e-12, "{}", run.t_end_s);
-    let located = simulate(&ball, BallMode::Flight, 0.0, [1.0, 0.0], 10.0, &Options { locate_events: true, ..opts }, &mut ());
+    assert!(
+        run.t_end_s > exact && run.t_end_s - exact <= 0.05 + 1e-12,
+        "{}",
+        run.t_end_s
+    );
+    let located = simulate(
+        &ball,
+        BallMode::Flight,
+        0.0,
+        [1.0, 0.0],
+        10.0,
+        &Options {
+            locate_events: true,
+            ..opts
+        },
+        &mut (),
+    );
     assert!((located.t_end_s - exact).abs() < 1e-12);
 }
 
@@ -115,8 +197,8 @@ impl HybridSystem<2> for Twin {
     }
     fn guard(&self, _m: u8, i: usize, _t: f64, y: &[f64; 2]) -> f64 {
         match i {
-            0 => y[1],   // -sin t: starts at 0, falls through 0 at 2 pi
-            _ => y[0],   // cos t: falls at pi / 2, rises at 3 pi / 2
+            0 => y[1], // -sin t: starts at 0, falls through 0 at 2 pi
+            _ => y[0], // cos t: falls at pi / 2, rises at 3 pi / 2
         }
     }
     fn direction(&self, _m: u8, i: usize) -> Direction {
@@ -132,9 +214,21 @@ impl HybridSystem<2> for Twin {
 
 #[test]
 fn directions_respected_and_ties_go_to_the_lowest_index() {
-    let run = simulate(&Twin, 0, 0.0, [1.0, 0.0], 10.0, &Options::default(), &mut ());
+    let run = simulate(
+        &Twin,
+        0,
+        0.0,
+        [1.0, 0.0],
+        10.0,
+        &Options::default(),
+        &mut (),
+    );
     assert_eq!(run.outcome, Outcome::Stopped(1));
-    assert!((run.t_end_s - 1.5 * std::f64::consts::PI).abs() < 1e-9, "{}", run.t_end_s);
+    assert!(
+        (run.t_end_s - 1.5 * std::f64::consts::PI).abs() < 1e-9,
+        "{}",
+        run.t_end_s
+    );
 }
 
 /// y' = +1 on [k, k + 1/2), -1 on [k + 1/2, k + 1): a triangle wave with kinks at the
@@ -163,7 +257,10 @@ impl HybridSystem<1> for Triangle {
         Some(((t * 2.0).floor() + 1.0) / 2.0)
     }
     fn on_breakpoint(&self, m: i8, _t: f64, y: &[f64; 1]) -> Transition<i8, (), 1> {
-        Transition::To { mode: -m, state: *y }
+        Transition::To {
+            mode: -m,
+            state: *y,
+        }
     }
 }
 
@@ -176,7 +273,15 @@ fn breakpoints_are_stepped_onto_exactly() {
             self.0.push((s.t0, s.t1));
         }
     }
-    let run = simulate(&Triangle, 1, 0.0, [0.0], 3.25, &Options::default(), &mut Ends(&mut ends));
+    let run = simulate(
+        &Triangle,
+        1,
+        0.0,
+        [0.0],
+        3.25,
+        &Options::default(),
+        &mut Ends(&mut ends),
+    );
     assert_eq!(run.outcome, Outcome::Completed);
     // Triangle wave at 3.25: rising from 0 at t = 3.0 for 0.25 s.
     assert!((run.y_end[0] - 0.25).abs() < 1e-14, "{}", run.y_end[0]);
