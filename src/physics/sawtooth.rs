@@ -179,5 +179,77 @@ impl<P: PlateMotion> PlateMotion for Mirrored<P> {
     }
 }
 
+/// A plate whose breakpoints survive rounding (a wrapper for event-driven models).
+///
+/// Two things go wrong with the bare [`Sawtooth`] at its breakpoints, because
+/// `t - floor(t/T) T` rounds: (1) the velocity at the float returned by
+/// [`PlateMotion::breakpoint_after`] can still be the old stroke's, and (2) a time that
+/// lands a few ulps *before* a breakpoint (a sum of fixed steps, `0.09 + 32 x 0.000625 =
+/// 0.10999999999999999`) counts as "at" it, so `breakpoint_after` returns the next one and
+/// the stroke change is skipped. This wrapper makes the float `b` returned by the plate
+/// the exact dividing line: within `d = 1e-12 T + 32 ulps(t)` of `b` it evaluates
+/// velocity and acceleration safely on the side of `b` where `t` lies (times `>= b` get
+/// the new stroke), and it returns `b` itself to any time before it, so a driver steps
+/// onto it.
+#[derive(Debug, Clone, Copy)]
+pub struct Snapped<'a, P: ?Sized>(pub &'a P);
+
+impl<P: PlateMotion + ?Sized> Snapped<'_, P> {
+    /// Half-width of the window around a breakpoint (s): wider than the plate's own
+    /// "at a breakpoint" tolerance (8 ulps of max(t, T)).
+    fn window(&self, t: f64) -> f64 {
+        1e-12 * self.0.period_s() + 32.0 * f64::EPSILON * t.abs()
+    }
+
+    /// `t`, or, within `d` of a breakpoint `b`, a time safely on the same side of it:
+    /// `b - d` for `t < b` (the old stroke), `b + d` for `t >= b` (the new one).
+    fn snap(&self, t: f64) -> f64 {
+        let d = self.window(t);
+        match self.0.breakpoint_after(t - d) {
+            Some(b) if (b - t).abs() <= d => {
+                if t < b {
+                    b - d
+                } else {
+                    b + d
+                }
+            }
+            _ => t,
+        }
+    }
+}
+
+impl<P: PlateMotion + ?Sized> PlateMotion for Snapped<'_, P> {
+    fn x_m(&self, t: f64) -> f64 {
+        self.0.x_m(t)
+    }
+    fn vx_mps(&self, t: f64) -> f64 {
+        self.0.vx_mps(self.snap(t))
+    }
+    fn ax_mps2(&self, t: f64) -> f64 {
+        self.0.ax_mps2(self.snap(t))
+    }
+    fn z_m(&self, t: f64) -> f64 {
+        self.0.z_m(t)
+    }
+    fn vz_mps(&self, t: f64) -> f64 {
+        self.0.vz_mps(self.snap(t))
+    }
+    fn az_mps2(&self, t: f64) -> f64 {
+        self.0.az_mps2(self.snap(t))
+    }
+    fn period_s(&self) -> f64 {
+        self.0.period_s()
+    }
+    fn breakpoint_after(&self, t: f64) -> Option<f64> {
+        // The breakpoint at or after t - d: itself if still ahead of t, else the next.
+        let b = self.0.breakpoint_after(t - self.window(t))?;
+        if b > t {
+            Some(b)
+        } else {
+            self.0.breakpoint_after(b)
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests;

@@ -96,3 +96,40 @@ fn mirrored_plate_negates_the_horizontal_motion() {
     assert_eq!(m.breakpoint_after(0.0), scene().breakpoint_after(0.0));
     assert_eq!(m.period_s(), 0.04);
 }
+
+#[test]
+fn snapped_plate_gives_the_new_stroke_at_every_breakpoint() {
+    // At each breakpoint float returned by the plate, the wrapped velocity is the next
+    // stroke's; just before it (1e-9 T) the old one's.
+    let s = scene();
+    let r = Snapped(&s);
+    let mut t = 0.0;
+    for i in 0..2000 {
+        let b = s.breakpoint_after(t).unwrap();
+        let (new, old) = if i % 2 == 0 { (-0.3, 0.1) } else { (0.1, -0.3) };
+        assert_eq!(r.vx_mps(b), new, "breakpoint {i} at {b}");
+        assert_eq!(r.vx_mps(b - 1e-9 * 0.04), old, "before breakpoint {i}");
+        assert_eq!(r.vx_mps(f64::from_bits(b.to_bits() - 1)), old, "one ulp before breakpoint {i}");
+        t = b;
+    }
+}
+
+#[test]
+fn snapped_plate_does_not_skip_a_breakpoint_approached_from_below() {
+    // One ulp before the breakpoint 0.11 (where a sum of steps can land), the bare plate
+    // counts as at it and answers 0.12; the wrapper answers 0.11, then 0.12.
+    let s = scene();
+    let t = f64::from_bits(0.11f64.to_bits() - 1);
+    assert!(t < 0.11);
+    assert_eq!(s.breakpoint_after(t), Some(0.12));
+    let r = Snapped(&s);
+    assert_eq!(r.breakpoint_after(t), Some(0.11));
+    assert_eq!(r.breakpoint_after(0.11), Some(0.12));
+    // from every breakpoint the wrapper moves on to the next, never stalls
+    let mut b = 0.0;
+    for _ in 0..5000 {
+        let n = r.breakpoint_after(b).unwrap();
+        assert!(n > b && n - b > 0.009, "{b} -> {n}");
+        b = n;
+    }
+}
