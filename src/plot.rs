@@ -1,1 +1,358 @@
-//! The one figure style: not built yet.
+//! The one figure style: embedded font, SVG + PNG, a colour-blind-safe palette.
+//!
+//! ```no_run
+//! use locomotion_workbook::plot::{save_chart, Chart};
+//! let c = Chart::new("Decay", "t (s)", "x (m)")
+//!     .line("exact", vec![(0.0, 1.0), (1.0, 0.37)])
+//!     .points("RK4", vec![(0.5, 0.6)])
+//!     .vline(0.5, "half")
+//!     .band(0.0, 0.2, "phase A");
+//! let paths = save_chart(&c, "figures/demo", "decay").unwrap(); // demo.svg + demo.png
+//! ```
+//!
+//! Figures are deterministic (the same bytes on every run: no time stamps, no random
+//! state), use the DejaVu Sans font embedded in the binary (no system fonts needed), and
+//! never panic on bad data: NaN and infinite points are dropped (they break lines),
+//! non-positive values on log axes are dropped, empty and zero ranges are padded.
+//! A log axis is a linear axis in log10 units with tick labels such as `1e-3`.
+
+mod axis;
+mod chart;
+mod heatmap;
+#[cfg(test)]
+mod tests;
+
+pub use heatmap::{viridis, HeatMap};
+
+use crate::error::{Result, WorkbookError};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::Path;
+use std::sync::Once;
+
+/// Size of a single chart in pixels (SVG and PNG alike).
+pub const CHART_SIZE: (u32, u32) = (1000, 650);
+/// Size of one panel of [`save_panels`] in pixels.
+pub const PANEL_SIZE: (u32, u32) = (800, 540);
+/// Font sizes in pixels: title, axis labels, tick labels and legend.
+pub const TITLE_PX: f64 = 26.0;
+/// Axis description font size in pixels.
+pub const LABEL_PX: f64 = 20.0;
+/// Tick label and legend font size in pixels.
+pub const TICK_PX: f64 = 16.0;
+
+/// The Okabe-Ito palette (colour-blind safe), in the order series get their colours.
+pub const PALETTE: [RGBColor; 8] = [
+    RGBColor(0, 114, 178),   // blue
+    RGBColor(213, 94, 0),    // vermillion
+    RGBColor(0, 158, 115),   // bluish green
+    RGBColor(230, 159, 0),   // orange
+    RGBColor(204, 121, 167), // reddish purple
+    RGBColor(86, 180, 233),  // sky blue
+    RGBColor(0, 0, 0),       // black
+    RGBColor(240, 228, 66),  // yellow
+];
+
+/// Colour of reference lines (`vline`, `hline`).
+pub const REFERENCE: RGBColor = RGBColor(60, 60, 60);
+/// Colour of the grid.
+pub const GRID: RGBColor = RGBColor(225, 225, 225);
+
+/// The palette colour number `i` (cycling).
+pub fn color(i: usize) -> RGBColor {
+    PALETTE[i % PALETTE.len()]
+}
+
+static FONT: Once = Once::new();
+
+/// Registers the embedded DejaVu Sans as the `sans-serif` family (once per process).
+/// The save functions call it; call it yourself only when drawing outside them.
+pub fn ensure_font() {
+    FONT.call_once(|| {
+        // The bytes are a valid TrueType font shipped by the `dejavu` crate; a failure
+        // here would surface as a FontUnavailable error from the first text drawn.
+        let _ = plotters::style::register_font(
+            "sans-serif",
+            FontStyle::Normal,
+            dejavu::sans::regular(),
+        );
+    });
+}
+
+/// The text style of the figures at `size_px` pixels (black, sans-serif).
+pub fn font(size_px: f64) -> TextStyle<'static> {
+    ("sans-serif", size_px).into_font().color(&BLACK)
+}
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// A solid line through the points.
+    Line,
+    /// A dashed line through the points.
+    Dashed,
+    /// Markers only.
+    Points,
+}
+
+/// One data series: label (empty = not in the legend), points in data units, style.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend label; an empty label keeps the series out of the legend.
+    pub label: String,
+    /// The points `(x, y)` in data units.
+    pub points: Vec<(f64, f64)>,
+    /// Line, dashed line or markers.
+    pub kind: Kind,
+    /// Palette index; `None` takes the next colour in order.
+    pub color: Option<usize>,
+}
+
+impl Series {
+    /// A solid line.
+    pub fn line(label: &str, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            label: label.to_string(),
+            points,
+            kind: Kind::Line,
+            color: None,
+        }
+    }
+    /// A dashed line.
+    pub fn dashed(label: &str, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            label: label.to_string(),
+            points,
+            kind: Kind::Dashed,
+            color: None,
+        }
+    }
+    /// Markers.
+    pub fn points(label: &str, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            label: label.to_string(),
+            points,
+            kind: Kind::Points,
+            color: None,
+        }
+    }
+    /// Uses palette colour `i` (to pair a line with its markers, for example).
+    pub fn color(mut self, i: usize) -> Self {
+        self.color = Some(i);
+        self
+    }
+}
+
+/// Where the legend goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Legend {
+    /// Upper right corner of the plotting area (the default).
+    UpperRight,
+    /// Upper left corner.
+    UpperLeft,
+    /// Lower right corner.
+    LowerRight,
+    /// Lower left corner.
+    LowerLeft,
+    /// No legend.
+    Hidden,
+}
+
+/// A 2-D chart: series, optional log axes and ranges, reference lines and bands.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Chart {
+    /// Title drawn above the chart.
+    pub title: String,
+    /// x-axis description with its unit.
+    pub x_label: String,
+    /// y-axis description with its unit.
+    pub y_label: String,
+    /// The data series, drawn in order.
+    pub series: Vec<Series>,
+    /// log10 x axis.
+    pub log_x: bool,
+    /// log10 y axis.
+    pub log_y: bool,
+    /// Explicit x range in data units.
+    pub x_range: Option<(f64, f64)>,
+    /// Explicit y range in data units.
+    pub y_range: Option<(f64, f64)>,
+    /// Vertical reference lines `(x, label)`.
+    pub vlines: Vec<(f64, String)>,
+    /// Horizontal reference lines `(y, label)`.
+    pub hlines: Vec<(f64, String)>,
+    /// Shaded x intervals `(x0, x1, label)`.
+    pub bands: Vec<(f64, f64, String)>,
+    /// Legend position.
+    pub legend: Legend,
+}
+
+impl Chart {
+    /// An empty chart with a title and axis labels (put units in the labels).
+    pub fn new(title: &str, x_label: &str, y_label: &str) -> Self {
+        Chart {
+            title: title.to_string(),
+            x_label: x_label.to_string(),
+            y_label: y_label.to_string(),
+            series: Vec::new(),
+            log_x: false,
+            log_y: false,
+            x_range: None,
+            y_range: None,
+            vlines: Vec::new(),
+            hlines: Vec::new(),
+            bands: Vec::new(),
+            legend: Legend::UpperRight,
+        }
+    }
+    /// Adds a solid line.
+    pub fn line(self, label: &str, points: Vec<(f64, f64)>) -> Self {
+        self.series(Series::line(label, points))
+    }
+    /// Adds a dashed line.
+    pub fn dashed(self, label: &str, points: Vec<(f64, f64)>) -> Self {
+        self.series(Series::dashed(label, points))
+    }
+    /// Adds markers.
+    pub fn points(self, label: &str, points: Vec<(f64, f64)>) -> Self {
+        self.series(Series::points(label, points))
+    }
+    /// Adds a prepared series.
+    pub fn series(mut self, s: Series) -> Self {
+        self.series.push(s);
+        self
+    }
+    /// log10 x axis (points with x <= 0 are dropped).
+    pub fn log_x(mut self) -> Self {
+        self.log_x = true;
+        self
+    }
+    /// log10 y axis (points with y <= 0 are dropped).
+    pub fn log_y(mut self) -> Self {
+        self.log_y = true;
+        self
+    }
+    /// Fixes the x range (data units); parts of lines outside are clipped.
+    pub fn x_range(mut self, a: f64, b: f64) -> Self {
+        self.x_range = Some((a, b));
+        self
+    }
+    /// Fixes the y range (data units).
+    pub fn y_range(mut self, a: f64, b: f64) -> Self {
+        self.y_range = Some((a, b));
+        self
+    }
+    /// A vertical reference line at `x`, labelled next to it.
+    pub fn vline(mut self, x: f64, label: &str) -> Self {
+        self.vlines.push((x, label.to_string()));
+        self
+    }
+    /// A horizontal reference line at `y`, labelled next to it.
+    pub fn hline(mut self, y: f64, label: &str) -> Self {
+        self.hlines.push((y, label.to_string()));
+        self
+    }
+    /// A shaded x interval (a phase, a regime), listed in the legend.
+    pub fn band(mut self, x0: f64, x1: f64, label: &str) -> Self {
+        self.bands.push((x0, x1, label.to_string()));
+        self
+    }
+    /// Moves (or hides) the legend.
+    pub fn legend(mut self, at: Legend) -> Self {
+        self.legend = at;
+        self
+    }
+}
+
+/// A picture drawn into a plotters drawing area: implement it for custom figures
+/// (hulls, stick snapshots) and save with [`save_drawing`]. [`Chart`] and [`HeatMap`]
+/// implement it too, so a drawing can place charts into parts of its area.
+pub trait Drawing {
+    /// Draws into `area` (already filled white). Errors are messages.
+    fn draw<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+    ) -> std::result::Result<(), String>;
+}
+
+impl Drawing for Chart {
+    fn draw<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+    ) -> std::result::Result<(), String> {
+        chart::draw_chart(self, area)
+    }
+}
+
+struct Panels<'a> {
+    charts: &'a [Chart],
+    cols: usize,
+}
+
+impl Drawing for Panels<'_> {
+    fn draw<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+    ) -> std::result::Result<(), String> {
+        let rows = self.charts.len().div_ceil(self.cols).max(1);
+        for (c, a) in self.charts.iter().zip(area.split_evenly((rows, self.cols))) {
+            c.draw(&a)?;
+        }
+        Ok(())
+    }
+}
+
+/// Writes `dir/name.svg` and `dir/name.png` of a chart; returns both paths.
+pub fn save_chart(c: &Chart, dir: impl AsRef<Path>, name: &str) -> Result<Vec<String>> {
+    save_drawing(c, dir, name, CHART_SIZE)
+}
+
+/// Several charts in one figure, `cols` per row, row by row.
+pub fn save_panels(
+    charts: &[Chart],
+    cols: usize,
+    dir: impl AsRef<Path>,
+    name: &str,
+) -> Result<Vec<String>> {
+    let cols = cols.clamp(1, charts.len().max(1));
+    let rows = charts.len().div_ceil(cols).max(1);
+    let size = (PANEL_SIZE.0 * cols as u32, PANEL_SIZE.1 * rows as u32);
+    save_drawing(&Panels { charts, cols }, dir, name, size)
+}
+
+/// Writes a heat map (with its colour bar) as `dir/name.svg` and `dir/name.png`.
+pub fn save_heatmap(h: &HeatMap, dir: impl AsRef<Path>, name: &str) -> Result<Vec<String>> {
+    save_drawing(h, dir, name, CHART_SIZE)
+}
+
+/// Writes any [`Drawing`] as `dir/name.svg` and `dir/name.png` at `size` pixels
+/// (each side at least 50); creates `dir`; returns the two paths.
+pub fn save_drawing<D: Drawing>(
+    d: &D,
+    dir: impl AsRef<Path>,
+    name: &str,
+    size: (u32, u32),
+) -> Result<Vec<String>> {
+    ensure_font();
+    let dir = dir.as_ref();
+    std::fs::create_dir_all(dir)
+        .map_err(|e| WorkbookError::Io(format!("cannot create {}: {e}", dir.display())))?;
+    let size = (size.0.clamp(50, 20_000), size.1.clamp(50, 20_000));
+    let svg = dir.join(format!("{name}.svg"));
+    let png = dir.join(format!("{name}.png"));
+    let fail = |p: &Path, e: String| {
+        WorkbookError::Io(format!("cannot write figure {}: {e}", p.display()))
+    };
+    render(SVGBackend::new(&svg, size).into_drawing_area(), d).map_err(|e| fail(&svg, e))?;
+    render(BitMapBackend::new(&png, size).into_drawing_area(), d).map_err(|e| fail(&png, e))?;
+    Ok(vec![svg.display().to_string(), png.display().to_string()])
+}
+
+fn render<DB: DrawingBackend, D: Drawing>(
+    root: DrawingArea<DB, Shift>,
+    d: &D,
+) -> std::result::Result<(), String> {
+    root.fill(&WHITE).map_err(|e| e.to_string())?;
+    d.draw(&root)?;
+    root.present().map_err(|e| e.to_string())
+}

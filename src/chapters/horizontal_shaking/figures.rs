@@ -1,0 +1,152 @@
+//! Figures of the horizontal-shaking chapter (only drawn when figures are on).
+
+use super::claims::booktop;
+use super::drift::{steady_drift, Scene};
+use super::work;
+use crate::error::Result;
+use crate::numerics::hybrid::Segment;
+use crate::physics::block::{BlockMode, BlockOptions, Observer};
+use crate::physics::plate::PlateMotion;
+use crate::plot::{save_chart, save_panels, Chart, Legend};
+use crate::sweep::{linspace, par_map};
+use std::path::Path;
+
+/// Collects `(t, absolute block velocity)` samples of every segment.
+struct Trace<'a, P: PlateMotion> {
+    plate: &'a P,
+    pts: Vec<(f64, f64)>,
+}
+
+impl<P: PlateMotion> Observer<BlockMode, 4> for Trace<'_, P> {
+    fn segment(&mut self, _m: BlockMode, seg: &Segment<'_, 4>) {
+        for k in 0..=8 {
+            let t = seg.t0 + (seg.t1 - seg.t0) * k as f64 / 8.0;
+            self.pts.push((t, seg.eval(t)[1] + self.plate.vx_mps(t)));
+        }
+    }
+}
+
+/// Draws every figure; returns the written paths.
+#[allow(clippy::too_many_arguments)]
+pub fn draw(
+    dir: &Path,
+    scene: &Scene,
+    err_scene: &Scene,
+    sweep: &[(f64, f64, f64)],
+    g1: f64,
+    v0: f64,
+    wp: &[work::WorkPoint],
+    quick: bool,
+) -> Result<Vec<String>> {
+    let mut paths = Vec::new();
+
+    // Averaged-law error against Gamma_x.
+    let (g_hi, e_hi, _) = sweep[sweep.len() - 1];
+    let c = e_hi * g_hi * g_hi;
+    let fit: Vec<(f64, f64)> = sweep.iter().map(|&(g, _, _)| (g, c / (g * g))).collect();
+    let chart = Chart::new(
+        &format!("Averaged law vs exact drift (bias {:.2})", err_scene.bias),
+        "Gamma_x = delta_x omega^2 / (mu g)",
+        "relative error of V sin(pi b/2)",
+    )
+    .log_x()
+    .log_y()
+    .points(
+        "exact periodic drift (shooting)",
+        sweep.iter().map(|&(g, e, _)| (g, e)).collect(),
+    )
+    .dashed(&format!("{c:.2} / Gamma_x^2"), fit)
+    .hline(0.01, "1 %")
+    .vline(g1, &format!("Gamma_x = {g1:.2}"));
+    paths.extend(save_chart(&chart, dir, "averaged-law-error")?);
+
+    // Drift against bias at several Gamma_x, with the averaged and the linear laws.
+    let biases = linspace(0.0, 0.95, if quick { 6 } else { 20 });
+    let mut chart = Chart::new("Drift speed against bias", "bias F / (mu m g)", "drift / V")
+        .legend(Legend::UpperLeft);
+    for gx in [1.5, 3.0, 10.0] {
+        let s = scene.at_gamma_x(gx);
+        let pts = par_map(&biases, "drift vs bias", |&b| {
+            let sc = Scene { bias: b, ..s };
+            (b, steady_drift(&sc).drift_mps / sc.velocity_amplitude_mps())
+        });
+        chart = chart.points(&format!("exact, Gamma_x = {gx}"), pts);
+    }
+    let fine = linspace(0.0, 0.95, 60);
+    chart = chart
+        .line(
+            "averaged law sin(pi b/2)",
+            fine.iter()
+                .map(|&b| (b, (std::f64::consts::PI * b / 2.0).sin()))
+                .collect(),
+        )
+        .dashed(
+            "linear (viscous) law pi b/2",
+            fine.iter()
+                .map(|&b| (b, std::f64::consts::PI * b / 2.0))
+                .filter(|p| p.1 <= 1.1)
+                .collect(),
+        );
+    paths.extend(save_chart(&chart, dir, "drift-vs-bias")?);
+
+    // One steady period: plate and block velocities.
+    let plate = scene.plate();
+    let mut tr = Trace {
+        plate: &plate,
+        pts: Vec::new(),
+    };
+    let o = BlockOptions {
+        start: (0.0, [0.0, v0 - plate.vx_mps(0.0), 0.0, 0.0]),
+        transient_periods: 0,
+        ..BlockOptions::default()
+    };
+    crate::physics::block::simulate_block_observed(
+        &scene.params(),
+        &plate,
+        plate.period_s(),
+        &o,
+        &mut tr,
+    );
+    let period = plate.period_s();
+    let plate_pts: Vec<(f64, f64)> = linspace(0.0, 1.0, 200)
+        .iter()
+        .map(|&p| (p, plate.vx_mps(p * period)))
+        .collect();
+    let chart = Chart::new("One period of the steady state", "t / T", "velocity (m/s)")
+        .line("plate", plate_pts)
+        .line(
+            "block (exact)",
+            tr.pts.iter().map(|&(t, v)| (t / period, v)).collect(),
+        )
+        .hline(steady_drift(scene).drift_mps, "mean drift");
+    paths.extend(save_chart(&chart, dir, "steady-period")?);
+
+    // Booktop: drift against tilt.
+    let atan = scene.mu.atan().to_degrees();
+    let tilts = linspace(0.0, 0.95 * atan, if quick { 6 } else { 24 });
+    let rows = par_map(&tilts, "booktop", |&a| {
+        let b = booktop(scene, a);
+        (a, steady_drift(&b).drift_mps, b.averaged_drift_mps())
+    });
+    let chart = Chart::new(
+        &format!(
+            "Booktop: coin on a book shaken at {} Hz, {} m",
+            scene.frequency_hz, scene.amplitude_m
+        ),
+        "tilt (deg)",
+        "downhill drift speed (m/s)",
+    )
+    .legend(Legend::UpperLeft)
+    .points(
+        "exact simulation",
+        rows.iter().map(|r| (r.0, r.1)).collect(),
+    )
+    .line("averaged law", rows.iter().map(|r| (r.0, r.2)).collect())
+    .vline(atan, "arctan(mu): slides unshaken");
+    paths.extend(save_chart(&chart, dir, "booktop")?);
+
+    // Work against accuracy.
+    let [a, b] = work::charts(wp, "horizontal shaking");
+    paths.extend(save_panels(&[a, b], 2, dir, "work-precision")?);
+    Ok(paths)
+}

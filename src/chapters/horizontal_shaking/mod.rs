@@ -1,0 +1,188 @@
+//! Chapter `horizontal-shaking` (document section 3.1.1): horizontal vibration turns
+//! Coulomb friction into an effective viscous law.
+//!
+//! A block on a plate `u_x = delta_x sin(omega t)` under a bias force `F = b mu m g`.
+//! The exact periodic steady state comes from shooting on the one-period map of the
+//! hybrid block model ([`drift::steady_drift`]); the averaged (dither) law is
+//! `<f> = -(2/pi) mu m g arcsin(v/V)`, so the drift is `V sin(pi b/2)`. The chapter
+//! checks the document's claims, charts where the averaged law stops being good enough
+//! (relative error against Gamma_x) and locates the Gamma_x of 1 % error by bisection.
+
+use super::{info, Context};
+use crate::error::{half_open, open_interval, positive, Result};
+use crate::physics::block::{simulate_block, BlockOptions};
+use crate::physics::plate::PlateMotion;
+use crate::report::ChapterReport;
+use crate::sweep::{logspace, par_map};
+use drift::{steady_drift, Scene};
+
+mod claims;
+pub mod drift;
+mod figures;
+pub mod work;
+
+/// Flags of the chapter: the document's scene (a coin on a hand-shaken book).
+#[derive(clap::Args, Debug, Clone)]
+pub struct Args {
+    /// Coulomb friction coefficient mu between block and plate (dimensionless, 0 < mu < 2);
+    /// default 0.36, so that arctan(mu) = 19.8 deg, the document's "about 20 deg".
+    #[arg(long, default_value_t = 0.36)]
+    pub mu: f64,
+    /// Plate displacement amplitude delta_x (m, > 0); default 0.02 m, a hand-shaken book.
+    #[arg(long = "amplitude-m", default_value_t = 0.02)]
+    pub amplitude_m: f64,
+    /// Plate frequency f = omega/(2 pi) (Hz, > 0); default 5 Hz, the document's "say 5 oscillations/s".
+    #[arg(long = "frequency-hz", default_value_t = 5.0)]
+    pub frequency_hz: f64,
+    /// Bias force F as a fraction of mu m g (dimensionless, 0 <= bias < 1); default 0.5.
+    #[arg(long, default_value_t = 0.5)]
+    pub bias: f64,
+}
+
+/// Relative error of the averaged law (`|law - exact| / |exact|`; over V when the
+/// exact drift vanishes, as at zero bias).
+pub fn relative_error(scene: &Scene, exact: f64) -> f64 {
+    let denom = if exact.abs() > 1e-12 * scene.velocity_amplitude_mps() {
+        exact.abs()
+    } else {
+        scene.velocity_amplitude_mps()
+    };
+    (scene.averaged_drift_mps() - exact).abs() / denom
+}
+
+/// The Gamma_x above which the averaged law is within 1 %: bisection in log Gamma_x on
+/// the exact relative error, bracketed by the last crossing of 1 % in `sweep`.
+/// Returns `(gamma, bracket width)`.
+pub fn gamma_for_1pct(scene: &Scene, sweep: &[(f64, f64, f64)], iterations: usize) -> (f64, f64) {
+    let err = |g: f64| {
+        let s = scene.at_gamma_x(g);
+        relative_error(&s, steady_drift(&s).drift_mps) - 0.01
+    };
+    let last_above = sweep.iter().rposition(|&(_, e, _)| e > 0.01);
+    let (mut a, mut b) = match last_above {
+        Some(i) if i + 1 < sweep.len() => (sweep[i].0.ln(), sweep[i + 1].0.ln()),
+        Some(_) => return (f64::INFINITY, 0.0),
+        None => return (sweep[0].0, 0.0),
+    };
+    for _ in 0..iterations {
+        let m = 0.5 * (a + b);
+        if err(m.exp()) > 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    (b.exp(), b.exp() - a.exp())
+}
+
+/// Runs the chapter.
+pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
+    let mu = open_interval("--mu", args.mu, 0.0, 2.0, "dimensionless")?;
+    let amp = positive("--amplitude-m", args.amplitude_m, "m")?;
+    let freq = positive("--frequency-hz", args.frequency_hz, "Hz")?;
+    let bias = half_open("--bias", args.bias, 0.0, 1.0, "fraction of mu m g")?;
+    let g = positive("--g-mps2", ctx.g(), "m/s^2")?;
+    let mut r = info("horizontal-shaking").expect("registered").report();
+    r.param("mu", mu);
+    r.param("amplitude_m", amp);
+    r.param("frequency_hz", freq);
+    r.param("bias", bias);
+    r.param("g_mps2", g);
+    let scene = Scene {
+        mu,
+        g_mps2: g,
+        amplitude_m: amp,
+        frequency_hz: freq,
+        bias,
+    };
+    let vamp = scene.velocity_amplitude_mps();
+    let gamma_x = scene.gamma_x();
+
+    // The exact periodic drift and the averaged law.
+    let exact = steady_drift(&scene);
+    let law = scene.averaged_drift_mps();
+    let err = relative_error(&scene, exact.drift_mps);
+
+    // Relative error against Gamma_x (at the chapter's bias, or b = 0.01 at zero bias).
+    let err_scene = Scene {
+        bias: if bias > 0.0 { bias } else { 0.01 },
+        ..scene
+    };
+    let n_sweep = if ctx.quick { 9 } else { 25 };
+    let gammas = logspace(1.0, 1000.0, n_sweep);
+    // (Gamma_x, relative error, exact drift m/s)
+    let sweep: Vec<(f64, f64, f64)> = par_map(&gammas, "averaged-law error", |&gx| {
+        let s = err_scene.at_gamma_x(gx);
+        let ex = steady_drift(&s).drift_mps;
+        (gx, relative_error(&s, ex), ex)
+    });
+    let iters = if ctx.quick { 12 } else { 40 };
+    let (g1, g1_width) = gamma_for_1pct(&err_scene, &sweep, iters);
+    // The error falls as C / Gamma_x^2: C from the largest Gamma_x of the sweep.
+    let (g_hi, e_hi, _) = sweep[sweep.len() - 1];
+    let coeff = e_hi * g_hi * g_hi;
+
+    r.result("velocity_amplitude_mps", vamp);
+    r.result("gamma_x", gamma_x);
+    r.result("drift_velocity_mps", exact.drift_mps);
+    r.result("drift_velocity_averaged_mps", law);
+    r.result("averaged_law_relative_error", err);
+    r.result("gamma_x_for_1pct", g1);
+    r.result("gamma_x_for_1pct_bracket", g1_width);
+    r.result("averaged_law_error_times_gamma_x_squared", coeff);
+
+    claims::add(&mut r, &scene, ctx, g1, &sweep)?;
+
+    let rows: Vec<String> = sweep
+        .iter()
+        .map(|&(gx, e, ex)| {
+            let s = err_scene.at_gamma_x(gx);
+            let v = s.velocity_amplitude_mps();
+            format!(
+                "| {:.3} | {:.5} | {:.5} | {:.2e} |",
+                gx,
+                ex / v,
+                s.averaged_drift_mps() / v,
+                e
+            )
+        })
+        .collect();
+    r.table(
+        "error-vs-gamma",
+        format!("| Gamma_x | exact drift / V | averaged law / V | relative error |\n|---|---|---|---|\n{}\n", rows.join("\n")),
+    );
+
+    // Work against accuracy: 20 periods from the exact periodic state.
+    let plate = scene.plate();
+    let period = plate.period_s();
+    let model = |o: &BlockOptions| {
+        let o = BlockOptions {
+            start: (0.0, [0.0, exact.v0_mps - plate.vx_mps(0.0), 0.0, 0.0]),
+            transient_periods: 0,
+            ..*o
+        };
+        simulate_block(&scene.params(), &plate, 20.0 * period, &o)
+    };
+    let scale = if exact.drift_mps.abs() > 1e-12 * vamp {
+        exact.drift_mps.abs()
+    } else {
+        vamp
+    };
+    let wp = work::work_precision(&model, exact.drift_mps, scale, ctx.quick);
+    r.table("work-precision", work::table(&wp));
+
+    if let Some(dir) = ctx.figure_dir("horizontal-shaking") {
+        let paths = figures::draw(
+            &dir,
+            &scene,
+            &err_scene,
+            &sweep,
+            g1,
+            exact.v0_mps,
+            &wp,
+            ctx.quick,
+        )?;
+        r.figures.extend(paths);
+    }
+    Ok(r)
+}

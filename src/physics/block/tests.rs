@@ -1,0 +1,301 @@
+//! Unit tests of the block model against closed forms.
+use super::*;
+use crate::numerics::hybrid::Segment;
+use crate::numerics::ode::{Method, StepControl};
+use crate::physics::plate::{Axis, Harmonic, Sawtooth};
+use std::f64::consts::{PI, TAU};
+
+const G: f64 = 9.81;
+
+fn both_ways() -> [BlockOptions; 2] {
+    let closed = BlockOptions {
+        transient_periods: 0,
+        ..BlockOptions::default()
+    };
+    [
+        closed,
+        BlockOptions {
+            closed_forms: false,
+            ..closed
+        },
+    ]
+}
+
+#[test]
+fn free_slide_decelerates_at_mu_g_and_stops_at_v2_over_2_mu_g() {
+    // A still plate (zero amplitude); the block starts sliding at w0. Closed form:
+    // stops at t = w0/(mu g), after w0^2/(2 mu g). DP5 integrates the quadratic exactly
+    // and the closed form is exact, so both agree to the event tolerance (1e-12 s).
+    let plate = Harmonic::sine(Axis::X, 0.0, 1.0);
+    let (mu, w0) = (0.5, 1.2);
+    for opts in both_ways() {
+        let opts = BlockOptions {
+            start: (0.0, [0.0, w0, 0.0, 0.0]),
+            ..opts
+        };
+        let run = simulate_block(&BlockParams::coulomb(G, mu, 0.0), &plate, 1.0, &opts);
+        let stop = run
+            .events
+            .iter()
+            .find(|e| e.kind == EventKind::SlipToStick)
+            .expect("stops");
+        assert!((stop.t_s - w0 / (mu * G)).abs() < 1e-12, "{}", stop.t_s);
+        assert!(
+            (run.y_end[0] - w0 * w0 / (2.0 * mu * G)).abs() < 1e-12,
+            "{}",
+            run.y_end[0]
+        );
+        assert_eq!(run.mode_end, BlockMode::Stick);
+    }
+}
+
+#[test]
+fn block_sticks_on_a_slowly_shaken_plate() {
+    // Peak plate acceleration 0.5 mu g < mu g: the block rides along, no event at all,
+    // and its absolute position is the plate's (u stays exactly 0).
+    let (mu, f) = (0.4, 5.0);
+    let amp = 0.5 * mu * G / (TAU * f).powi(2);
+    let plate = Harmonic::sine(Axis::X, amp, f);
+    for opts in both_ways() {
+        let run = simulate_block(&BlockParams::coulomb(G, mu, 0.0), &plate, 3.0, &opts);
+        assert_eq!(run.total_counts, EventCounts::default());
+        assert_eq!(run.y_end[0], 0.0);
+        assert!(run.mean_velocity_mps.abs() < 1e-15);
+        assert_eq!(run.contact_fraction, 1.0);
+    }
+    // Just above the threshold it must slip.
+    let plate = Harmonic::sine(Axis::X, 1.05 * amp / 0.5, f);
+    let run = simulate_block(
+        &BlockParams::coulomb(G, mu, 0.0),
+        &plate,
+        1.0,
+        &BlockOptions::default(),
+    );
+    assert!(run.total_counts.stick_to_slip > 0);
+}
+
+/// First positive root of `z_p(t0) + v0 s - g s^2/2 - z_p(t0 + s) = 0` by a fine scan and
+/// bisection (independent of the driver's Illinois search on the closed form).
+fn ballistic_landing(plate: &Harmonic, t0: f64) -> f64 {
+    let v0 = plate.vz_mps(t0);
+    let gap = |s: f64| plate.z_m(t0) + v0 * s - 0.5 * G * s * s - plate.z_m(t0 + s);
+    let ds = plate.period_s() / 4096.0;
+    let mut a = ds;
+    while gap(a + ds) > 0.0 {
+        a += ds;
+    }
+    let mut b = a + ds;
+    for _ in 0..200 {
+        let m = 0.5 * (a + b);
+        if gap(m) > 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    b
+}
+
+#[test]
+fn takeoff_phase_is_asin_one_over_gamma_and_the_hop_lands_on_the_ballistic_root() {
+    // Vertical plate z = delta sin(wt): the normal force g + a_zp vanishes (falling)
+    // where sin(wt) = 1/Gamma. The hop then lands at the first root of the ballistic gap.
+    // Event times are located to ~1e-15 s on closed forms; the integrated flight (DP5 at
+    // 1e-10) carries an error ~1e-10 m/s in velocity, hence 1e-9 s on the landing time.
+    let f = 20.0;
+    for gamma in [1.2, 2.0, 3.0, 5.0] {
+        let amp = gamma * G / (TAU * f).powi(2);
+        let plate = Harmonic::sine(Axis::Z, amp, f);
+        for opts in both_ways() {
+            let tol = if opts.closed_forms { 1e-12 } else { 1e-9 };
+            let run = simulate_block(&BlockParams::coulomb(G, 0.3, 0.0), &plate, 3.0 / f, &opts);
+            let takeoff = run
+                .events
+                .iter()
+                .find(|e| e.kind == EventKind::Takeoff)
+                .expect("takes off");
+            let phase = takeoff.t_s * TAU * f;
+            assert!(
+                (phase - (1.0 / gamma).asin()).abs() < 1e-10,
+                "Gamma {gamma}: phase {phase}"
+            );
+            let landing = run
+                .events
+                .iter()
+                .find(|e| e.kind == EventKind::Landing)
+                .expect("lands");
+            let exact = takeoff.t_s + ballistic_landing(&plate, takeoff.t_s);
+            assert!(
+                (landing.t_s - exact).abs() < tol,
+                "Gamma {gamma} closed {}: {} vs {exact}",
+                opts.closed_forms,
+                landing.t_s
+            );
+        }
+    }
+}
+
+#[test]
+fn sawtooth_breakpoint_forces_a_sticking_block_to_slip() {
+    // Slow stroke +0.1 m/s for 30 ms: the block sticks (no acceleration). At t = 30 ms
+    // the plate jumps to -0.3 m/s: w = +0.4 m/s, decelerating at mu g = 3.924 m/s^2, which
+    // takes 0.1019 s > the 10 ms fast stroke; at t = 40 ms the plate jumps back to +0.1
+    // (w drops by 0.4 m/s to 0.4 - 0.01 mu g - 0.4 = -0.03924 m/s) and the block slides
+    // left until w = 0 at t = 40 ms + 10 ms. Closed-form kinematics, exact to round-off.
+    let saw = Sawtooth {
+        slow_velocity_mps: 0.1,
+        fast_velocity_mps: 0.3,
+        slow_duration_s: 0.03,
+    };
+    let mu = 0.4;
+    for opts in both_ways() {
+        let run = simulate_block(&BlockParams::coulomb(G, mu, 0.0), &saw, 0.08, &opts);
+        let bp: Vec<_> = run
+            .events
+            .iter()
+            .filter(|e| e.kind == EventKind::Breakpoint)
+            .collect();
+        // Breakpoints at 30, 40 and 70 ms change the mode (80 ms ends the window).
+        assert_eq!(bp.len(), 3, "{:?}", run.events);
+        assert_eq!(
+            (bp[0].from, bp[0].to),
+            (BlockMode::Stick, BlockMode::SlipRight)
+        );
+        assert!((bp[0].after[1] - 0.4).abs() < 1e-12);
+        assert_eq!(
+            (bp[1].from, bp[1].to),
+            (BlockMode::SlipRight, BlockMode::SlipLeft)
+        );
+        assert!(
+            (bp[1].after[1] + 0.01 * mu * G).abs() < 1e-12,
+            "{:?}",
+            bp[1]
+        );
+        let stick = run
+            .events
+            .iter()
+            .find(|e| e.kind == EventKind::SlipToStick)
+            .expect("sticks again");
+        assert!(
+            (stick.t_s - 0.05).abs() < 1e-12
+                || !opts.closed_forms && (stick.t_s - 0.05).abs() < 1e-10,
+            "{}",
+            stick.t_s
+        );
+    }
+}
+
+/// Checks the friction cone and dissipation on every segment (11 points each) and
+/// the energy balance of every impact.
+struct Checker<'a> {
+    sys: BlockSystem<'a, Harmonic>,
+    worst_cone: f64,
+    worst_power: f64,
+    worst_impact: f64,
+}
+
+impl Observer<BlockMode, 4> for Checker<'_> {
+    fn segment(&mut self, mode: BlockMode, seg: &Segment<'_, 4>) {
+        for k in 0..=10 {
+            let t = seg.t0 + (seg.t1 - seg.t0) * k as f64 / 10.0;
+            let y = seg.eval(t);
+            let c = self.sys.contact_force(mode, t, &y);
+            let mu = self.sys.params.friction.mu().unwrap();
+            self.worst_cone = self
+                .worst_cone
+                .max(c.tangential_mps2.abs() - mu * c.normal_mps2);
+            self.worst_power = self.worst_power.max(c.tangential_mps2 * y[1]);
+            assert!(c.normal_mps2 >= -1e-9 || mode == BlockMode::Flight);
+        }
+    }
+    fn event(
+        &mut self,
+        _t: f64,
+        from: BlockMode,
+        _g: usize,
+        before: &[f64; 4],
+        after: Option<(BlockMode, &[f64; 4])>,
+    ) {
+        if let (BlockMode::Flight, Some((_, a))) = (from, after) {
+            let gain =
+                (a[1] * a[1] + a[3] * a[3]) - (before[1] * before[1] + before[3] * before[3]);
+            self.worst_impact = self.worst_impact.max(gain);
+        }
+    }
+}
+
+#[test]
+fn friction_stays_in_the_cone_and_never_does_positive_work() {
+    // A vertical plate with a bias: stick, slip, flight and impacts all occur. The
+    // friction force is -mu n sign(w) or the needed force inside the cone: |f| <= mu n
+    // up to round-off (1e-9 m/s^2); friction power f w <= 0 (w is 0 in stick); impacts
+    // never raise the relative kinetic energy.
+    let f = 15.0;
+    let plate = Harmonic::sine(Axis::Z, 2.5 * G / (TAU * f).powi(2), f);
+    let params = BlockParams::coulomb(G, 0.3, 0.2 * 0.3 * G);
+    let mut chk = Checker {
+        sys: BlockSystem::new(params, &plate),
+        worst_cone: f64::MIN,
+        worst_power: f64::MIN,
+        worst_impact: f64::MIN,
+    };
+    let run = simulate_block_observed(&params, &plate, 2.0, &BlockOptions::default(), &mut chk);
+    assert!(
+        run.total_counts.landings > 20 && run.total_counts.stick_to_slip > 0,
+        "{:?}",
+        run.total_counts
+    );
+    assert!(chk.worst_cone <= 1e-9, "{}", chk.worst_cone);
+    assert!(chk.worst_power <= 1e-12, "{}", chk.worst_power);
+    assert!(chk.worst_impact <= 1e-15, "{}", chk.worst_impact);
+    assert!(run.mean_velocity_mps > 0.0);
+}
+
+#[test]
+fn closed_forms_and_integration_agree_on_the_mean_drift() {
+    // Horizontal dither with a bias: the DP5 run at rtol = atol = 1e-10 must reproduce
+    // the closed-form mean velocity to ~1e-8 of V over 40 periods.
+    let f = 10.0;
+    let plate = Harmonic::sine(Axis::X, 5.0 * 0.36 * G / (TAU * f).powi(2), f);
+    let params = BlockParams::coulomb(G, 0.36, 0.3 * 0.36 * G);
+    let [a, b] = both_ways().map(|o| {
+        simulate_block(
+            &params,
+            &plate,
+            40.0 / f,
+            &BlockOptions {
+                transient_periods: 10,
+                ..o
+            },
+        )
+    });
+    let v = plate.peak_velocity_mps();
+    assert!(
+        a.mean_velocity_mps > 0.0 && (a.mean_velocity_mps - b.mean_velocity_mps).abs() < 1e-8 * v,
+        "{} {}",
+        a.mean_velocity_mps,
+        b.mean_velocity_mps
+    );
+    assert!(b.stats.rhs_evals > 0 && a.stats.rhs_evals == 0);
+}
+
+#[test]
+fn viscous_block_under_bias_drifts_at_b_over_c() {
+    // Linear friction: the mean of w' = b - c w - a_xp over a period gives <w> = b/c
+    // exactly in the periodic steady state (the plate's mean velocity is zero).
+    let f = 10.0;
+    let plate = Harmonic::sine(Axis::X, 0.01, f);
+    let (c, b) = (5.0, 0.2);
+    let opts = BlockOptions {
+        transient_periods: 30,
+        ..BlockOptions::default()
+    };
+    let run = simulate_block(&BlockParams::viscous(G, c, b), &plate, 60.0 / f, &opts);
+    // Transient decays as exp(-c t) = exp(-15): 3e-7 of the 0.04 m/s drift.
+    assert!(
+        (run.mean_velocity_mps - b / c).abs() < 1e-7,
+        "{}",
+        run.mean_velocity_mps
+    );
+    let _ = (PI, Method::Rk4, StepControl::Fixed { h_s: 1e-3 });
+}

@@ -1,0 +1,253 @@
+//! Drawing a [`Chart`] into any plotters area.
+
+use super::axis::{self, Pt, Ticked};
+use super::{
+    color, font, Chart, Kind, Legend, Series, GRID, LABEL_PX, REFERENCE, TICK_PX, TITLE_PX,
+};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// Light colours of shaded bands, in order.
+const BAND: [RGBColor; 5] = [
+    RGBColor(86, 180, 233),
+    RGBColor(230, 159, 0),
+    RGBColor(0, 158, 115),
+    RGBColor(204, 121, 167),
+    RGBColor(240, 228, 66),
+];
+
+/// The chart context type of the style (linear axes in axis units with fixed ticks).
+pub(super) type Ctx<'a, DB> = ChartContext<'a, DB, Cartesian2d<Ticked, Ticked>>;
+
+/// Draws data series (clipped to the box `bx` in axis units) with colours from
+/// `pal`; returns whether any series got a legend label.
+pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
+    ch: &mut Ctx<'a, DB>,
+    series: &[Series],
+    logs: (bool, bool),
+    bx: (f64, f64, f64, f64),
+    pal: fn(usize) -> RGBColor,
+) -> Result<bool, String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let (x0, x1, y0, y1) = bx;
+    let mut any_label = false;
+    let (mut auto, mut shapes) = (0usize, 0usize);
+    for s in series {
+        let r = axis::runs(&s.points, logs.0, logs.1);
+        let col = pal(s.color.unwrap_or_else(|| {
+            auto += 1;
+            auto - 1
+        }));
+        let shape = shapes;
+        let mut pieces: Vec<Vec<Pt>> = match s.kind {
+            Kind::Points => {
+                shapes += 1;
+                let inside = |p: &&Pt| p.0 >= x0 && p.0 <= x1 && p.1 >= y0 && p.1 <= y1;
+                vec![r.iter().flatten().filter(inside).copied().collect()]
+            }
+            _ => r
+                .iter()
+                .flat_map(|run| axis::clip_polyline(run, bx))
+                .collect(),
+        };
+        if pieces.is_empty() {
+            pieces.push(Vec::new()); // drawn empty so that the legend still lists it
+        }
+        let st = col.stroke_width(2);
+        let fill = col.filled();
+        let label = s.label.as_str();
+        for (k, piece) in pieces.into_iter().enumerate() {
+            let first = k == 0 && !label.is_empty();
+            any_label |= first;
+            // Draws elements and, for the first piece, the legend entry.
+            macro_rules! put {
+                ($elems:expr, $glyph:expr) => {{
+                    let anno = ch.draw_series($elems).map_err(e)?;
+                    if first {
+                        anno.label(label).legend($glyph);
+                    }
+                }};
+            }
+            let sq = |at| EmptyElement::at(at) + Rectangle::new([(-5, -5), (5, 5)], fill);
+            match (s.kind, shape % 4) {
+                (Kind::Line, _) => put!(
+                    LineSeries::new(piece, st),
+                    move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], st)
+                ),
+                (Kind::Dashed, _) => {
+                    put!(DashedLineSeries::new(piece, 10, 6, st), move |(x, y)| {
+                        EmptyElement::at((x, y))
+                            + PathElement::new(vec![(0, 0), (8, 0)], st)
+                            + PathElement::new(vec![(14, 0), (22, 0)], st)
+                    })
+                }
+                (Kind::Points, 0) => put!(
+                    piece.iter().map(|&p| Circle::new(p, 5, fill)),
+                    move |(x, y)| { Circle::new((x + 11, y), 5, fill) }
+                ),
+                (Kind::Points, 1) => put!(
+                    piece.iter().map(|&p| TriangleMarker::new(p, 7, fill)),
+                    move |(x, y)| { TriangleMarker::new((x + 11, y), 7, fill) }
+                ),
+                (Kind::Points, 2) => put!(piece.iter().map(|&p| sq(p)), move |(x, y)| {
+                    EmptyElement::at((x + 11, y)) + Rectangle::new([(-5, -5), (5, 5)], fill)
+                }),
+                (Kind::Points, _) => put!(
+                    piece.iter().map(|&p| Cross::new(p, 5, st)),
+                    move |(x, y)| { Cross::new((x + 11, y), 5, st) }
+                ),
+            }
+        }
+    }
+    Ok(any_label)
+}
+
+pub(super) fn ticks(lo: f64, hi: f64, log: bool) -> (Vec<f64>, f64) {
+    if log {
+        (axis::log_ticks(lo, hi), 1.0)
+    } else {
+        axis::nice_ticks(lo, hi, 8)
+    }
+}
+
+pub(super) fn tick_label(v: f64, step: f64, log: bool) -> String {
+    if log {
+        axis::fmt_log(v)
+    } else {
+        axis::fmt_linear(v, step)
+    }
+}
+
+/// Draws the chart into `area`.
+pub(super) fn draw_chart<DB: DrawingBackend>(
+    c: &Chart,
+    area: &DrawingArea<DB, Shift>,
+) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let runs: Vec<Vec<Vec<Pt>>> = c
+        .series
+        .iter()
+        .map(|s| axis::runs(&s.points, c.log_x, c.log_y))
+        .collect();
+    let (mut xs, mut ys) = (Vec::new(), Vec::new());
+    for p in runs.iter().flatten().flatten() {
+        xs.push(p.0);
+        ys.push(p.1);
+    }
+    xs.extend(c.vlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_x)));
+    ys.extend(c.hlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_y)));
+    let only_lines = c.series.iter().all(|s| s.kind != Kind::Points);
+    let (x0, x1) = axis::range(c.x_range, &xs, if only_lines { 0.0 } else { 0.04 }, c.log_x);
+    let (y0, y1) = axis::range(c.y_range, &ys, 0.06, c.log_y);
+    let bx = (x0, x1, y0, y1);
+    let (xt, xstep) = ticks(x0, x1, c.log_x);
+    let (yt, ystep) = ticks(y0, y1, c.log_y);
+
+    let mut ch = ChartBuilder::on(area)
+        .caption(&c.title, font(TITLE_PX))
+        .margin(18)
+        .x_label_area_size(58)
+        .y_label_area_size(88)
+        .build_cartesian_2d(Ticked::new(x0, x1, xt), Ticked::new(y0, y1, yt))
+        .map_err(e)?;
+    let fx = |v: &f64| tick_label(*v, xstep, c.log_x);
+    let fy = |v: &f64| tick_label(*v, ystep, c.log_y);
+    ch.configure_mesh()
+        .bold_line_style(GRID.stroke_width(1))
+        .light_line_style(TRANSPARENT)
+        .axis_style(BLACK.stroke_width(1))
+        .x_desc(c.x_label.as_str())
+        .y_desc(c.y_label.as_str())
+        .axis_desc_style(font(LABEL_PX))
+        .label_style(font(TICK_PX))
+        .x_label_formatter(&fx)
+        .y_label_formatter(&fy)
+        .draw()
+        .map_err(e)?;
+
+    let mut any_label = false;
+    for (i, (a, b, label)) in c.bands.iter().enumerate() {
+        let (Some(a), Some(b)) = (axis::to_axis(*a, c.log_x), axis::to_axis(*b, c.log_x)) else {
+            continue;
+        };
+        let (a, b) = (a.min(b).max(x0), a.max(b).min(x1));
+        if a > b {
+            continue;
+        }
+        let col = BAND[i % BAND.len()];
+        let anno = ch
+            .draw_series(std::iter::once(Rectangle::new(
+                [(a, y0), (b, y1)],
+                col.mix(0.2).filled(),
+            )))
+            .map_err(e)?;
+        if !label.is_empty() {
+            any_label = true;
+            anno.label(label.as_str()).legend(move |(x, y)| {
+                Rectangle::new([(x, y - 7), (x + 22, y + 7)], col.mix(0.4).filled())
+            });
+        }
+    }
+
+    any_label |= draw_series(&mut ch, &c.series, (c.log_x, c.log_y), bx, color)?;
+
+    let reference = font(TICK_PX).color(&REFERENCE);
+    let mut nv = 0;
+    for (x, label) in &c.vlines {
+        let Some(x) = axis::to_axis(*x, c.log_x).filter(|x| *x >= x0 && *x <= x1) else {
+            continue;
+        };
+        let line = DashedLineSeries::new(vec![(x, y0), (x, y1)], 6, 4, REFERENCE.stroke_width(1));
+        ch.draw_series(line).map_err(e)?;
+        let right = x > x0 + 0.7 * (x1 - x0);
+        let (h, dx) = if right {
+            (HPos::Right, -5)
+        } else {
+            (HPos::Left, 5)
+        };
+        let t = Text::new(
+            label.clone(),
+            (dx, 5 + 22 * nv),
+            reference.pos(Pos::new(h, VPos::Top)),
+        );
+        ch.plotting_area()
+            .draw(&(EmptyElement::at((x, y1)) + t))
+            .map_err(e)?;
+        nv += 1;
+    }
+    for (y, label) in &c.hlines {
+        let Some(y) = axis::to_axis(*y, c.log_y).filter(|y| *y >= y0 && *y <= y1) else {
+            continue;
+        };
+        let line = DashedLineSeries::new(vec![(x0, y), (x1, y)], 6, 4, REFERENCE.stroke_width(1));
+        ch.draw_series(line).map_err(e)?;
+        let t = Text::new(
+            label.clone(),
+            (-5, -4),
+            reference.pos(Pos::new(HPos::Right, VPos::Bottom)),
+        );
+        ch.plotting_area()
+            .draw(&(EmptyElement::at((x1, y)) + t))
+            .map_err(e)?;
+    }
+
+    let pos = match c.legend {
+        Legend::UpperRight => SeriesLabelPosition::UpperRight,
+        Legend::UpperLeft => SeriesLabelPosition::UpperLeft,
+        Legend::LowerRight => SeriesLabelPosition::LowerRight,
+        Legend::LowerLeft => SeriesLabelPosition::LowerLeft,
+        Legend::Hidden => return Ok(()),
+    };
+    if any_label {
+        ch.configure_series_labels()
+            .position(pos)
+            .margin(12)
+            .border_style(BLACK.mix(0.5))
+            .background_style(WHITE.mix(0.92))
+            .label_font(font(TICK_PX))
+            .draw()
+            .map_err(e)?;
+    }
+    Ok(())
+}
