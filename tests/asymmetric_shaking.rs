@@ -16,7 +16,7 @@
 
 use locomotion_workbook::chapters::asymmetric_shaking::sims::{run_block, Numerics, Window};
 use locomotion_workbook::cli::run_cli;
-use locomotion_workbook::physics::block::BlockParams;
+use locomotion_workbook::physics::sawtooth::sim::Law;
 use locomotion_workbook::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion, Sawtooth};
 use locomotion_workbook::physics::sawtooth::biharmonic::{always_slipping_drift, stick_forever_gamma};
 use locomotion_workbook::physics::sawtooth::{
@@ -38,7 +38,7 @@ fn transient(s: &Sawtooth, k: f64) -> usize {
 
 fn coulomb_drift(s: &dyn PlateMotion, mu: f64, transient: usize, measured: usize) -> f64 {
     let w = Window { transient, measured };
-    run_block(&BlockParams::coulomb(G, mu, 0.0), s, 0.0, w, &Numerics::default(), (0.0, 0.0), 0.0).mean_velocity_mps
+    run_block(Law::Coulomb { k_mps2: mu * G }, s, 0.0, w, &Numerics::default(), (0.0, 0.0), 0.0).mean_velocity_mps
 }
 
 #[test]
@@ -80,7 +80,7 @@ fn lock_time_and_steady_velocity_match_the_closed_forms() {
         let n0 = transient(&s, k);
         let w = Window { transient: n0, measured: 3 };
         let span = (n0 as f64 * p, (n0 + 3) as f64 * p);
-        let run = run_block(&BlockParams::coulomb(G, mu, 0.0), &s, 0.0, w, &Numerics::default(), span, p / 50.0);
+        let run = run_block(Law::Coulomb { k_mps2: mu * G }, &s, 0.0, w, &Numerics::default(), span, p / 50.0);
         let t_lock = run.first_stick_s.expect("the block sticks");
         assert!((t_lock - lock_time_s(&s, k, 0.0)).abs() < EXACT, "{t_lock} vs {}", lock_time_s(&s, k, 0.0));
         assert!(!run.trace.is_empty());
@@ -113,11 +113,11 @@ fn linear_friction_gives_no_drift_for_any_zero_mean_drive() {
     ];
     for p in &drives {
         let tr = (36.0 / (c * p.period_s())).ceil() as usize;
-        let run = run_block(&BlockParams::viscous(G, c, 0.0), p.as_ref(), 0.0, Window { transient: tr, measured: 6 }, &Numerics::default(), (0.0, 0.0), 0.0);
+        let run = run_block(Law::Viscous { c_per_s: c }, p.as_ref(), 0.0, Window { transient: tr, measured: 6 }, &Numerics::default(), (0.0, 0.0), 0.0);
         assert!(run.mean_velocity_mps.abs() < 1e-9, "{}", run.mean_velocity_mps);
     }
     // The periodic orbit of the sawtooth: its velocity at a slow stroke's start.
-    let run = run_block(&BlockParams::viscous(G, c, 0.0), &s, 0.0, Window { transient: 30, measured: 1 }, &Numerics::default(), (0.0, 0.0), 0.0);
+    let run = run_block(Law::Viscous { c_per_s: c }, &s, 0.0, Window { transient: 30, measured: 1 }, &Numerics::default(), (0.0, 0.0), 0.0);
     let v0 = linear_periodic_start_velocity_mps(&s, c);
     assert!((run.v_window_mps.0 - v0).abs() < 1e-9, "{} vs {v0}", run.v_window_mps.0);
 }

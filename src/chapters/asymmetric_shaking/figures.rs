@@ -6,7 +6,7 @@ use super::claims::{biharmonic, Traces};
 use super::sims::{run_block, Numerics, Window};
 use super::Scene;
 use crate::error::Result;
-use crate::physics::block::BlockParams;
+use crate::physics::sawtooth::sim::Law;
 use crate::physics::plate::{PlateMotion, Sawtooth};
 use crate::physics::sawtooth::biharmonic::{always_slipping_drift, stick_forever_gamma};
 use crate::physics::sawtooth::{drift_ratio, drift_velocity_mps, lock_time_s};
@@ -23,7 +23,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     let mut paths = Vec::new();
     let saw = sc.saw;
     let k = sc.k_mps2();
-    let coul = BlockParams::coulomb(sc.g_mps2, sc.mu, 0.0);
+    let coul = Law::Coulomb { k_mps2: sc.k_mps2() };
     let num = Numerics::default();
     let measured = if quick { 2 } else { 6 };
 
@@ -45,7 +45,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     let a = saw.slow_velocity_mps;
     let sim_r: Vec<(f64, f64)> = par_map(&ratios, "sawtooth ratio sweep", |&r| {
         let s = Sawtooth { fast_velocity_mps: r * a, ..saw };
-        let v = run_block(&coul, &s, 0.0, Window { transient: transient(&s, k), measured }, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
+        let v = run_block(coul, &s, 0.0, Window { transient: transient(&s, k), measured }, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
         (r, v / a)
     });
     let y = k * saw.slow_duration_s / a;
@@ -60,7 +60,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
         let pts: Vec<(f64, f64)> = par_map(&epss, "bi-harmonic eps sweep", |&e| {
             let p = biharmonic(vb, gamma, e, k);
             let w = Window { transient: 40, measured: 6 };
-            (e, run_block(&coul, &p, 0.0, w, &num, (0.0, 0.0), 0.0).mean_velocity_mps / vb)
+            (e, run_block(coul, &p, 0.0, w, &num, (0.0, 0.0), 0.0).mean_velocity_mps / vb)
         });
         let theory: Vec<(f64, f64)> = linspace(-0.45, 0.45, 91).into_iter().filter_map(|e| always_slipping_drift(gamma, e).map(|d| (e, d))).collect();
         p2 = p2.line(&format!("always slipping, Gamma = {gamma}"), theory).points(&format!("simulation, Gamma = {gamma}"), pts);
@@ -74,7 +74,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
         let pts: Vec<(f64, f64)> = par_map(&gammas, "bi-harmonic Gamma sweep", |&g| {
             let p = biharmonic(vb, g, eps, k);
             let w = Window { transient: 40 + (2.0 * g) as usize, measured: 6 };
-            (g, run_block(&coul, &p, 0.0, w, &num, (0.0, 0.0), 0.0).mean_velocity_mps / (eps * vb))
+            (g, run_block(coul, &p, 0.0, w, &num, (0.0, 0.0), 0.0).mean_velocity_mps / (eps * vb))
         });
         let theory: Vec<(f64, f64)> = logspace(0.5, 100.0, 300).into_iter().filter_map(|g| always_slipping_drift(g, eps).map(|d| (g, d / eps))).collect();
         c3 = c3.points(&format!("simulation, eps = {eps}"), pts).line(&format!("always slipping, eps = {eps}"), theory);
