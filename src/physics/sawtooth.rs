@@ -201,11 +201,20 @@ impl<P: PlateMotion + ?Sized> Snapped<'_, P> {
         1e-12 * self.0.period_s() + 32.0 * f64::EPSILON * t.abs()
     }
 
+    /// The breakpoint at or after `t - d`, in one canonical float: the plate can return
+    /// two floats an ulp or two apart for the same breakpoint (`0.28 + 0.03` from one
+    /// period, `0.24 + 0.04 + 0.03` from the one before); this one is computed from a
+    /// time `d` before the breakpoint, safely inside the stroke that it ends.
+    fn near(&self, t: f64) -> Option<f64> {
+        let b = self.0.breakpoint_after(t - self.window(t))?;
+        self.0.breakpoint_after(b - self.window(b))
+    }
+
     /// `t`, or, within `d` of a breakpoint `b`, a time safely on the same side of it:
     /// `b - d` for `t < b` (the old stroke), `b + d` for `t >= b` (the new one).
     fn snap(&self, t: f64) -> f64 {
         let d = self.window(t);
-        match self.0.breakpoint_after(t - d) {
+        match self.near(t) {
             Some(b) if (b - t).abs() <= d => {
                 if t < b {
                     b - d
@@ -241,12 +250,13 @@ impl<P: PlateMotion + ?Sized> PlateMotion for Snapped<'_, P> {
         self.0.period_s()
     }
     fn breakpoint_after(&self, t: f64) -> Option<f64> {
-        // The breakpoint at or after t - d: itself if still ahead of t, else the next.
-        let b = self.0.breakpoint_after(t - self.window(t))?;
+        // The breakpoint at or after t - d: itself if still ahead of t, else the next
+        // (the one at or after b + 2d, inside the following stroke).
+        let b = self.near(t)?;
         if b > t {
             Some(b)
         } else {
-            self.0.breakpoint_after(b)
+            self.near(b + 2.0 * self.window(b))
         }
     }
 }

@@ -99,13 +99,16 @@ fn mirrored_plate_negates_the_horizontal_motion() {
 
 #[test]
 fn snapped_plate_gives_the_new_stroke_at_every_breakpoint() {
-    // At each breakpoint float returned by the plate, the wrapped velocity is the next
-    // stroke's; just before it (1e-9 T) the old one's.
+    // At each breakpoint float returned by the wrapper, the wrapped velocity is the next
+    // stroke's; an ulp before it the old one's. (The bare plate can return two floats for
+    // one breakpoint, e.g. 0.30999999999999994 and 0.31000000000000005; the wrapper's
+    // canonical one is the dividing line.)
     let s = scene();
     let r = Snapped(&s);
     let mut t = 0.0;
     for i in 0..2000 {
-        let b = s.breakpoint_after(t).unwrap();
+        let b = r.breakpoint_after(t).unwrap();
+        assert!((b - 0.04 * (i / 2) as f64 - if i % 2 == 0 { 0.03 } else { 0.04 }).abs() < 1e-12, "{i}: {b}");
         let (new, old) = if i % 2 == 0 { (-0.3, 0.1) } else { (0.1, -0.3) };
         assert_eq!(r.vx_mps(b), new, "breakpoint {i} at {b}");
         assert_eq!(r.vx_mps(b - 1e-9 * 0.04), old, "before breakpoint {i}");
