@@ -14,6 +14,7 @@
 //! round-off (~1e-15 per event, a few hundred events): 1e-12 (m/s or s). DP5 runs of the
 //! linear law at rtol = atol = 1e-12: 1e-9 m/s (see `claims::LINEAR_TOL`).
 
+use locomotion_workbook::chapters::asymmetric_shaking::claims::slip_transient;
 use locomotion_workbook::chapters::asymmetric_shaking::sims::{run_block, Numerics, Window};
 use locomotion_workbook::cli::run_cli;
 use locomotion_workbook::physics::sawtooth::sim::Law;
@@ -129,8 +130,8 @@ fn symmetric_drives_give_no_coulomb_drift() {
     let k = 0.3 * G;
     for gamma in [10.0, 0.9 * stick_forever_gamma(0.0)] {
         let p = Biharmonic { velocity_amplitude_mps: 0.2, omega_rad_s: gamma * k / 0.2, asymmetry: 0.0 };
-        let v = coulomb_drift(&p, 0.3, 60, 8);
-        assert!(v.abs() < 1e-9, "gamma {gamma}: {v}");
+        let v = coulomb_drift(&p, 0.3, slip_transient(gamma), 4);
+        assert!(v.abs() < EXACT, "gamma {gamma}: {v}");
     }
 }
 
@@ -143,8 +144,8 @@ fn mirrored_drives_reverse_the_drift() {
     assert!(v > 0.05 && (v + vm).abs() < EXACT, "{v} {vm}");
     // eps -> -eps is the mirror image shifted by half a period.
     let p = |e: f64| Biharmonic { velocity_amplitude_mps: 0.2, omega_rad_s: 10.0 * k / 0.2, asymmetry: e };
-    let (vp, vn) = (coulomb_drift(&p(0.25), 0.3, 60, 8), coulomb_drift(&p(-0.25), 0.3, 60, 8));
-    assert!(vp > 0.03 && (vp + vn).abs() < 1e-9, "{vp} {vn}");
+    let (vp, vn) = (coulomb_drift(&p(0.25), 0.3, slip_transient(10.0), 4), coulomb_drift(&p(-0.25), 0.3, slip_transient(10.0), 4));
+    assert!(vp > 0.03 && (vp + vn).abs() < EXACT, "{vp} {vn}");
 }
 
 #[test]
@@ -154,9 +155,9 @@ fn biharmonic_always_slipping_drift_matches_the_closed_form() {
     for (gamma, eps) in [(4.0, 0.2), (10.0, -0.3), (30.0, 0.1)] {
         let v = 0.2;
         let p = Biharmonic { velocity_amplitude_mps: v, omega_rad_s: gamma * k / v, asymmetry: eps };
-        let sim = coulomb_drift(&p, 0.3, 40 + 2 * gamma as usize, 8);
+        let sim = coulomb_drift(&p, 0.3, slip_transient(gamma), 4);
         let closed = always_slipping_drift(gamma, eps).expect("orbit exists") * v;
-        assert!((sim - closed).abs() < 1e-9, "{gamma} {eps}: {sim} vs {closed}");
+        assert!((sim - closed).abs() < EXACT, "{gamma} {eps}: {sim} vs {closed}");
     }
 }
 
@@ -198,7 +199,9 @@ fn quick_summary_snapshot() {
     }
     for (k, v) in j["results"].as_object().unwrap() {
         let shown = match v {
-            Value::Number(n) => format!("{:.6}", n.as_f64().unwrap()),
+            // 5 decimals (m/s, s): far coarser than the 1e-12 checks (but the default
+            // drift 0.0926425 sits on a 6th-decimal tie); -0 shown as 0
+            Value::Number(n) => format!("{:.5}", (n.as_f64().unwrap() * 1e5).round() / 1e5 + 0.0),
             other => other.to_string(),
         };
         s.push_str(&format!("{k} = {shown}\n"));

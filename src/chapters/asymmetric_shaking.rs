@@ -5,7 +5,7 @@
 //! `physics::sawtooth::biharmonic` (smooth drive). Simulation: the event-driven block
 //! model of `physics::block` ([`sims`]). Claims: [`claims`]. Figures: [`figures`].
 
-mod claims;
+pub mod claims;
 mod figures;
 pub mod sims;
 

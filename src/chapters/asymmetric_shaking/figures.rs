@@ -2,7 +2,7 @@
 //! drift against the asymmetry, drift against the drive number, the regime map, and
 //! the work-precision chart. Sweeps here feed figures only.
 
-use super::claims::{biharmonic, Traces};
+use super::claims::{biharmonic, slip_transient, Traces};
 use super::sims::{run_block, Numerics, Window};
 use super::Scene;
 use crate::error::Result;
@@ -59,7 +59,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     for gamma in [3.0, 10.0] {
         let pts: Vec<(f64, f64)> = par_map(&epss, "bi-harmonic eps sweep", |&e| {
             let p = biharmonic(vb, gamma, e, k);
-            let w = Window { transient: 40, measured: 6 };
+            let w = Window { transient: slip_transient(gamma), measured: 4 };
             (e, run_block(coul, &p, 0.0, w, &num, (0.0, 0.0), 0.0).mean_velocity_mps / vb)
         });
         let theory: Vec<(f64, f64)> = linspace(-0.45, 0.45, 91).into_iter().filter_map(|e| always_slipping_drift(gamma, e).map(|d| (e, d))).collect();
@@ -73,7 +73,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     for eps in [0.1, 0.3] {
         let pts: Vec<(f64, f64)> = par_map(&gammas, "bi-harmonic Gamma sweep", |&g| {
             let p = biharmonic(vb, g, eps, k);
-            let w = Window { transient: 40 + (2.0 * g) as usize, measured: 6 };
+            let w = Window { transient: slip_transient(g), measured: 4 };
             (g, run_block(coul, &p, 0.0, w, &num, (0.0, 0.0), 0.0).mean_velocity_mps / (eps * vb))
         });
         let theory: Vec<(f64, f64)> = logspace(0.5, 100.0, 300).into_iter().filter_map(|g| always_slipping_drift(g, eps).map(|d| (g, d / eps))).collect();
