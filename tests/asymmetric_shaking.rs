@@ -17,11 +17,14 @@
 use locomotion_workbook::chapters::asymmetric_shaking::claims::slip_transient;
 use locomotion_workbook::chapters::asymmetric_shaking::sims::{run_block, Numerics, Window};
 use locomotion_workbook::cli::run_cli;
-use locomotion_workbook::physics::sawtooth::sim::Law;
 use locomotion_workbook::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion, Sawtooth};
-use locomotion_workbook::physics::sawtooth::biharmonic::{always_slipping_drift, stick_forever_gamma};
+use locomotion_workbook::physics::sawtooth::biharmonic::{
+    always_slipping_drift, stick_forever_gamma,
+};
+use locomotion_workbook::physics::sawtooth::sim::Law;
 use locomotion_workbook::physics::sawtooth::{
-    drift_velocity_mps, linear_periodic_start_velocity_mps, lock_time_s, steady_regime, steady_velocity_mps, Mirrored, Regime,
+    drift_velocity_mps, linear_periodic_start_velocity_mps, lock_time_s, steady_regime,
+    steady_velocity_mps, Mirrored, Regime,
 };
 use serde_json::Value;
 
@@ -29,7 +32,11 @@ const G: f64 = 9.81;
 const EXACT: f64 = 1e-12;
 
 fn saw(a: f64, b: f64, ts: f64) -> Sawtooth {
-    Sawtooth { slow_velocity_mps: a, fast_velocity_mps: b, slow_duration_s: ts }
+    Sawtooth {
+        slow_velocity_mps: a,
+        fast_velocity_mps: b,
+        slow_duration_s: ts,
+    }
 }
 
 /// Periods from rest to the lock (closed form) plus one.
@@ -38,8 +45,20 @@ fn transient(s: &Sawtooth, k: f64) -> usize {
 }
 
 fn coulomb_drift(s: &dyn PlateMotion, mu: f64, transient: usize, measured: usize) -> f64 {
-    let w = Window { transient, measured };
-    run_block(Law::Coulomb { k_mps2: mu * G }, s, 0.0, w, &Numerics::default(), (0.0, 0.0), 0.0).mean_velocity_mps
+    let w = Window {
+        transient,
+        measured,
+    };
+    run_block(
+        Law::Coulomb { k_mps2: mu * G },
+        s,
+        0.0,
+        w,
+        &Numerics::default(),
+        (0.0, 0.0),
+        0.0,
+    )
+    .mean_velocity_mps
 }
 
 #[test]
@@ -61,7 +80,10 @@ fn closed_form_drift_matches_simulation_in_every_regime() {
         assert_eq!(steady_regime(&s, k), regime, "{a} {b} {ts} {mu}");
         let sim = coulomb_drift(&s, mu, transient(&s, k), 8);
         let formula = drift_velocity_mps(&s, k);
-        assert!((sim - formula).abs() < EXACT, "{a} {b} {ts} {mu}: sim {sim} vs {formula}");
+        assert!(
+            (sim - formula).abs() < EXACT,
+            "{a} {b} {ts} {mu}: sim {sim} vs {formula}"
+        );
         if regime == Regime::StickBoth {
             assert!(sim.abs() < EXACT);
         } else {
@@ -74,16 +96,35 @@ fn closed_form_drift_matches_simulation_in_every_regime() {
 fn lock_time_and_steady_velocity_match_the_closed_forms() {
     // The always-slipping transient ends at the closed-form lock time; after it the
     // simulated velocity is the closed-form periodic one at every sampled instant.
-    for (a, b, ts, mu) in [(0.1, 0.3, 0.03, 0.3), (0.1, 0.15, 0.02, 0.02), (0.1, 0.3, 0.03, 6.0)] {
+    for (a, b, ts, mu) in [
+        (0.1, 0.3, 0.03, 0.3),
+        (0.1, 0.15, 0.02, 0.02),
+        (0.1, 0.3, 0.03, 6.0),
+    ] {
         let s = saw(a, b, ts);
         let k = mu * G;
         let p = s.period_s();
         let n0 = transient(&s, k);
-        let w = Window { transient: n0, measured: 3 };
+        let w = Window {
+            transient: n0,
+            measured: 3,
+        };
         let span = (n0 as f64 * p, (n0 + 3) as f64 * p);
-        let run = run_block(Law::Coulomb { k_mps2: mu * G }, &s, 0.0, w, &Numerics::default(), span, p / 50.0);
+        let run = run_block(
+            Law::Coulomb { k_mps2: mu * G },
+            &s,
+            0.0,
+            w,
+            &Numerics::default(),
+            span,
+            p / 50.0,
+        );
         let t_lock = run.first_stick_s.expect("the block sticks");
-        assert!((t_lock - lock_time_s(&s, k, 0.0)).abs() < EXACT, "{t_lock} vs {}", lock_time_s(&s, k, 0.0));
+        assert!(
+            (t_lock - lock_time_s(&s, k, 0.0)).abs() < EXACT,
+            "{t_lock} vs {}",
+            lock_time_s(&s, k, 0.0)
+        );
         assert!(!run.trace.is_empty());
         for &(t, v, _) in &run.trace {
             // Away from the stroke changes (where the sampled side is ambiguous).
@@ -109,18 +150,52 @@ fn linear_friction_gives_no_drift_for_any_zero_mean_drive() {
         Box::new(s),
         Box::new(Mirrored(s)),
         Box::new(saw(0.05, 0.5, 0.02)),
-        Box::new(Biharmonic { velocity_amplitude_mps: 0.2, omega_rad_s: w, asymmetry: 0.4 }),
+        Box::new(Biharmonic {
+            velocity_amplitude_mps: 0.2,
+            omega_rad_s: w,
+            asymmetry: 0.4,
+        }),
         Box::new(Harmonic::sine(Axis::X, 0.002, 25.0)),
     ];
     for p in &drives {
         let tr = (36.0 / (c * p.period_s())).ceil() as usize;
-        let run = run_block(Law::Viscous { c_per_s: c }, p.as_ref(), 0.0, Window { transient: tr, measured: 6 }, &Numerics::default(), (0.0, 0.0), 0.0);
-        assert!(run.mean_velocity_mps.abs() < 1e-9, "{}", run.mean_velocity_mps);
+        let run = run_block(
+            Law::Viscous { c_per_s: c },
+            p.as_ref(),
+            0.0,
+            Window {
+                transient: tr,
+                measured: 6,
+            },
+            &Numerics::default(),
+            (0.0, 0.0),
+            0.0,
+        );
+        assert!(
+            run.mean_velocity_mps.abs() < 1e-9,
+            "{}",
+            run.mean_velocity_mps
+        );
     }
     // The periodic orbit of the sawtooth: its velocity at a slow stroke's start.
-    let run = run_block(Law::Viscous { c_per_s: c }, &s, 0.0, Window { transient: 30, measured: 1 }, &Numerics::default(), (0.0, 0.0), 0.0);
+    let run = run_block(
+        Law::Viscous { c_per_s: c },
+        &s,
+        0.0,
+        Window {
+            transient: 30,
+            measured: 1,
+        },
+        &Numerics::default(),
+        (0.0, 0.0),
+        0.0,
+    );
     let v0 = linear_periodic_start_velocity_mps(&s, c);
-    assert!((run.v_window_mps.0 - v0).abs() < 1e-9, "{} vs {v0}", run.v_window_mps.0);
+    assert!(
+        (run.v_window_mps.0 - v0).abs() < 1e-9,
+        "{} vs {v0}",
+        run.v_window_mps.0
+    );
 }
 
 #[test]
@@ -129,7 +204,11 @@ fn symmetric_drives_give_no_coulomb_drift() {
     // orbit has zero mean (closed form eps (1 - ...) = 0), and so does the stuck block.
     let k = 0.3 * G;
     for gamma in [10.0, 0.9 * stick_forever_gamma(0.0)] {
-        let p = Biharmonic { velocity_amplitude_mps: 0.2, omega_rad_s: gamma * k / 0.2, asymmetry: 0.0 };
+        let p = Biharmonic {
+            velocity_amplitude_mps: 0.2,
+            omega_rad_s: gamma * k / 0.2,
+            asymmetry: 0.0,
+        };
         let v = coulomb_drift(&p, 0.3, slip_transient(gamma), 4);
         assert!(v.abs() < EXACT, "gamma {gamma}: {v}");
     }
@@ -140,11 +219,21 @@ fn mirrored_drives_reverse_the_drift() {
     let s = saw(0.1, 0.3, 0.03);
     let k = 0.3 * G;
     let n = transient(&s, k);
-    let (v, vm) = (coulomb_drift(&s, 0.3, n, 6), coulomb_drift(&Mirrored(s), 0.3, n, 6));
+    let (v, vm) = (
+        coulomb_drift(&s, 0.3, n, 6),
+        coulomb_drift(&Mirrored(s), 0.3, n, 6),
+    );
     assert!(v > 0.05 && (v + vm).abs() < EXACT, "{v} {vm}");
     // eps -> -eps is the mirror image shifted by half a period.
-    let p = |e: f64| Biharmonic { velocity_amplitude_mps: 0.2, omega_rad_s: 10.0 * k / 0.2, asymmetry: e };
-    let (vp, vn) = (coulomb_drift(&p(0.25), 0.3, slip_transient(10.0), 4), coulomb_drift(&p(-0.25), 0.3, slip_transient(10.0), 4));
+    let p = |e: f64| Biharmonic {
+        velocity_amplitude_mps: 0.2,
+        omega_rad_s: 10.0 * k / 0.2,
+        asymmetry: e,
+    };
+    let (vp, vn) = (
+        coulomb_drift(&p(0.25), 0.3, slip_transient(10.0), 4),
+        coulomb_drift(&p(-0.25), 0.3, slip_transient(10.0), 4),
+    );
     assert!(vp > 0.03 && (vp + vn).abs() < EXACT, "{vp} {vn}");
 }
 
@@ -154,10 +243,17 @@ fn biharmonic_always_slipping_drift_matches_the_closed_form() {
     let k = 0.3 * G;
     for (gamma, eps) in [(4.0, 0.2), (10.0, -0.3), (30.0, 0.1)] {
         let v = 0.2;
-        let p = Biharmonic { velocity_amplitude_mps: v, omega_rad_s: gamma * k / v, asymmetry: eps };
+        let p = Biharmonic {
+            velocity_amplitude_mps: v,
+            omega_rad_s: gamma * k / v,
+            asymmetry: eps,
+        };
         let sim = coulomb_drift(&p, 0.3, slip_transient(gamma), 4);
         let closed = always_slipping_drift(gamma, eps).expect("orbit exists") * v;
-        assert!((sim - closed).abs() < EXACT, "{gamma} {eps}: {sim} vs {closed}");
+        assert!(
+            (sim - closed).abs() < EXACT,
+            "{gamma} {eps}: {sim} vs {closed}"
+        );
     }
 }
 
@@ -166,7 +262,11 @@ fn cli(args: &[&str]) -> (i32, String, String) {
     let mut full = vec!["workbook", "asymmetric-shaking"];
     full.extend_from_slice(args);
     let code = run_cli(full, &mut out, &mut err);
-    (code, String::from_utf8(out).unwrap(), String::from_utf8(err).unwrap())
+    (
+        code,
+        String::from_utf8(out).unwrap(),
+        String::from_utf8(err).unwrap(),
+    )
 }
 
 fn quick_json() -> Value {
@@ -178,15 +278,31 @@ fn quick_json() -> Value {
 #[test]
 fn cli_quick_json_has_the_results_and_no_failed_claim() {
     let j = quick_json();
-    for key in ["drift_velocity_coulomb_mps", "drift_velocity_formula_mps", "drift_velocity_linear_mps", "regime"] {
+    for key in [
+        "drift_velocity_coulomb_mps",
+        "drift_velocity_formula_mps",
+        "drift_velocity_linear_mps",
+        "regime",
+    ] {
         assert!(j["results"].get(key).is_some(), "{key}");
     }
     assert_eq!(j["results"]["regime"], "stick-in-slow-stroke");
     let claims = j["claims"].as_array().unwrap();
-    assert!(claims.iter().all(|c| c["verdict"] != "failed"), "{claims:?}");
-    let verdict = |id: &str| claims.iter().find(|c| c["id"] == id).map(|c| c["verdict"].as_str().unwrap().to_string());
+    assert!(
+        claims.iter().all(|c| c["verdict"] != "failed"),
+        "{claims:?}"
+    );
+    let verdict = |id: &str| {
+        claims
+            .iter()
+            .find(|c| c["id"] == id)
+            .map(|c| c["verdict"].as_str().unwrap().to_string())
+    };
     assert_eq!(verdict("stroke-inequalities").as_deref(), Some("erratum"));
-    assert_eq!(verdict("locomotion-needs-slip").as_deref(), Some("approximation"));
+    assert_eq!(
+        verdict("locomotion-needs-slip").as_deref(),
+        Some("approximation")
+    );
     assert_eq!(verdict("linear-no-drift").as_deref(), Some("confirmed"));
 }
 
@@ -195,7 +311,11 @@ fn quick_summary_snapshot() {
     let j = quick_json();
     let mut s = String::new();
     for c in j["claims"].as_array().unwrap() {
-        s.push_str(&format!("{}: {}\n", c["id"].as_str().unwrap(), c["verdict"].as_str().unwrap()));
+        s.push_str(&format!(
+            "{}: {}\n",
+            c["id"].as_str().unwrap(),
+            c["verdict"].as_str().unwrap()
+        ));
     }
     for (k, v) in j["results"].as_object().unwrap() {
         let shown = match v {
@@ -235,6 +355,12 @@ fn bad_input_exits_2_with_one_line_naming_the_flag() {
         assert!(err.contains(flag), "{args:?}: {err}");
     }
     // A consistent fast duration is accepted.
-    let (code, _, err) = cli(&["--fast-duration-s", "0.01", "--quick", "--json", "--no-figures"]);
+    let (code, _, err) = cli(&[
+        "--fast-duration-s",
+        "0.01",
+        "--quick",
+        "--json",
+        "--no-figures",
+    ]);
     assert_eq!(code, 0, "{err}");
 }

@@ -73,23 +73,51 @@ impl Scene {
 /// Checks every flag (one line naming the flag, value and valid range on error).
 pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
     let vs = positive("--slow-velocity-mps", a.slow_velocity_mps, "m/s")?;
-    let vf = check("--fast-velocity-mps", a.fast_velocity_mps, |v| v > vs, &format!("a finite number > the slow speed {vs} (m/s)"))?;
+    let vf = check(
+        "--fast-velocity-mps",
+        a.fast_velocity_mps,
+        |v| v > vs,
+        &format!("a finite number > the slow speed {vs} (m/s)"),
+    )?;
     let ts = positive("--slow-duration-s", a.slow_duration_s, "s")?;
-    let saw = Sawtooth { slow_velocity_mps: vs, fast_velocity_mps: vf, slow_duration_s: ts };
+    let saw = Sawtooth {
+        slow_velocity_mps: vs,
+        fast_velocity_mps: vf,
+        slow_duration_s: ts,
+    };
     let tf = saw.fast_duration_s();
     if let Some(given) = a.fast_duration_s {
         // Zero net displacement: v_s t_s = v_f t_f, to 1e-9 relative (typed decimals).
-        check("--fast-duration-s", given, |t| t > 0.0 && (t - tf).abs() <= 1e-9 * tf, &format!("{tf} s = slow speed x slow duration / fast speed (zero net displacement)"))?;
+        check(
+            "--fast-duration-s",
+            given,
+            |t| t > 0.0 && (t - tf).abs() <= 1e-9 * tf,
+            &format!("{tf} s = slow speed x slow duration / fast speed (zero net displacement)"),
+        )?;
     }
     let mu_min = mu_min_for_lock(&saw, g_mps2, MAX_LOCK_PERIODS);
     let mu = check("--mu", a.mu, |m| m >= mu_min, &format!("a finite number >= {mu_min:.3e} (dimensionless; smaller needs more than 1e5 periods to reach the steady state)"))?;
     let period = saw.period_s();
     let (c_lo, c_hi) = (0.01 / period, 1e4 / period);
-    let c = check("--viscous-c", a.viscous_c, |c| c >= c_lo && c <= c_hi, &format!("{c_lo:.4} <= c <= {c_hi:.4e} (1/s; 0.01/T to 1e4/T, T = {period} s)"))?;
+    let c = check(
+        "--viscous-c",
+        a.viscous_c,
+        |c| c >= c_lo && c <= c_hi,
+        &format!("{c_lo:.4} <= c <= {c_hi:.4e} (1/s; 0.01/T to 1e4/T, T = {period} s)"),
+    )?;
     if !(g_mps2.is_finite() && g_mps2 > 0.0) {
-        return Err(WorkbookError::bad_input("--g-mps2", g_mps2, "a finite number > 0 (m/s^2)"));
+        return Err(WorkbookError::bad_input(
+            "--g-mps2",
+            g_mps2,
+            "a finite number > 0 (m/s^2)",
+        ));
     }
-    Ok(Scene { saw, mu, g_mps2, c_per_s: c })
+    Ok(Scene {
+        saw,
+        mu,
+        g_mps2,
+        c_per_s: c,
+    })
 }
 
 /// Runs the chapter.
@@ -105,7 +133,8 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     r.param("g_mps2", scene.g_mps2);
     let traces = claims::check_all(&scene, ctx.quick, ctx.figure_dir(ID).is_some(), &mut r);
     if let Some(dir) = ctx.figure_dir(ID) {
-        r.figures.extend(figures::draw(&scene, ctx.quick, &traces, &dir)?);
+        r.figures
+            .extend(figures::draw(&scene, ctx.quick, &traces, &dir)?);
     }
     Ok(r)
 }

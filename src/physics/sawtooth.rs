@@ -65,8 +65,8 @@ pub fn steady_regime(s: &Sawtooth, k_mps2: f64) -> Regime {
 pub fn drift_velocity_mps(s: &Sawtooth, k_mps2: f64) -> f64 {
     let (a, tf, t) = (s.slow_velocity_mps, s.fast_duration_s(), s.period_s());
     match steady_regime(s, k_mps2) {
-        Regime::StickBoth => 0.0,                   // formula: v_d = (a T_s - b T_f)/T = 0
-        _ => a - k_mps2 * tf * tf / t,              // formula: v_d = a - k T_f^2 / T
+        Regime::StickBoth => 0.0,      // formula: v_d = (a T_s - b T_f)/T = 0
+        _ => a - k_mps2 * tf * tf / t, // formula: v_d = a - k T_f^2 / T
     }
 }
 
@@ -87,7 +87,12 @@ pub fn slipping_impulse_per_mass(s: &Sawtooth, k_mps2: f64) -> f64 {
 /// The steady block velocity (m/s) at time `t` (s) on the periodic orbit, time measured
 /// from the start of a slow stroke.
 pub fn steady_velocity_mps(s: &Sawtooth, k_mps2: f64, t: f64) -> f64 {
-    let (a, b, ts, tf) = (s.slow_velocity_mps, s.fast_velocity_mps, s.slow_duration_s, s.fast_duration_s());
+    let (a, b, ts, tf) = (
+        s.slow_velocity_mps,
+        s.fast_velocity_mps,
+        s.slow_duration_s,
+        s.fast_duration_s(),
+    );
     let period = s.period_s();
     let tau = t - (t / period).floor() * period;
     let k = k_mps2;

@@ -3,10 +3,12 @@
 
 use super::sims::{run_block, DriftRun, Numerics, Window};
 use super::Scene;
-use crate::physics::sawtooth::sim::Law;
 use crate::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion, Sawtooth};
 use crate::physics::sawtooth::biharmonic::{always_slipping_drift, stick_forever_gamma};
-use crate::physics::sawtooth::{drift_velocity_mps, lock_time_s, slipping_impulse_per_mass, steady_regime, Mirrored, Regime};
+use crate::physics::sawtooth::sim::Law;
+use crate::physics::sawtooth::{
+    drift_velocity_mps, lock_time_s, slipping_impulse_per_mass, steady_regime, Mirrored, Regime,
+};
 use crate::report::{fmt_num, is_close, ChapterReport, Claim, Verdict};
 use std::f64::consts::TAU;
 
@@ -55,12 +57,19 @@ fn transient(saw: &Sawtooth, k: f64) -> usize {
 /// A sawtooth with the same speeds whose fast stroke lasts `ratio (a + b)/k`.
 fn scaled(saw: &Sawtooth, k: f64, ratio: f64) -> Sawtooth {
     let tf = ratio * (saw.slow_velocity_mps + saw.fast_velocity_mps) / k;
-    Sawtooth { slow_duration_s: tf * saw.fast_velocity_mps / saw.slow_velocity_mps, ..*saw } // formula: T_s = T_f b / a
+    Sawtooth {
+        slow_duration_s: tf * saw.fast_velocity_mps / saw.slow_velocity_mps,
+        ..*saw
+    } // formula: T_s = T_f b / a
 }
 
 /// The bi-harmonic plate with velocity amplitude `v` and drive number `gamma` for `k`.
 pub fn biharmonic(v: f64, gamma: f64, eps: f64, k: f64) -> Biharmonic {
-    Biharmonic { velocity_amplitude_mps: v, omega_rad_s: gamma * k / v, asymmetry: eps } // formula: Gamma = V omega / (mu g)
+    Biharmonic {
+        velocity_amplitude_mps: v,
+        omega_rad_s: gamma * k / v,
+        asymmetry: eps,
+    } // formula: Gamma = V omega / (mu g)
 }
 
 /// Runs every check, records claims, results and tables; returns what the figures need.
@@ -69,32 +78,57 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
     let (a, b) = (saw.slow_velocity_mps, saw.fast_velocity_mps);
     let (ts, period) = (saw.slow_duration_s, saw.period_s());
     let k = sc.k_mps2();
-    let coul = Law::Coulomb { k_mps2: sc.k_mps2() };
-    let visc = Law::Viscous { c_per_s: sc.c_per_s };
+    let coul = Law::Coulomb {
+        k_mps2: sc.k_mps2(),
+    };
+    let visc = Law::Viscous {
+        c_per_s: sc.c_per_s,
+    };
     let num = Numerics::default();
     let measured = if quick { 4 } else { 20 };
     let trace_span = (0.0, (transient(&saw, k) as f64 + 2.0) * period);
-    let (tspan, tdt) = if traces { (trace_span, period / 200.0) } else { ((0.0, 0.0), 0.0) };
+    let (tspan, tdt) = if traces {
+        (trace_span, period / 200.0)
+    } else {
+        ((0.0, 0.0), 0.0)
+    };
     let mut out = Traces::default();
 
     // --- Coulomb, the document's sawtooth -------------------------------------------
-    let win = Window { transient: transient(&saw, k), measured };
+    let win = Window {
+        transient: transient(&saw, k),
+        measured,
+    };
     let main: DriftRun = run_block(coul, &saw, 0.0, win, &num, tspan, tdt);
     out.coulomb = main.trace.clone();
     let v_sim = main.mean_velocity_mps;
     let v_formula = drift_velocity_mps(&saw, k);
     let regime = steady_regime(&saw, k);
-    let regime_sim = if main.stuck_in_backward_stroke { Regime::StickBoth } else { Regime::StickSlow };
-    let mirrored = run_block(coul, &Mirrored(saw), 0.0, win, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
+    let regime_sim = if main.stuck_in_backward_stroke {
+        Regime::StickBoth
+    } else {
+        Regime::StickSlow
+    };
+    let mirrored =
+        run_block(coul, &Mirrored(saw), 0.0, win, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
     // The direction checks need a drift: if the flags put the scene in the
     // stick-in-both regime, they use the same speeds with mu g t_fast = (v_slow + v_fast)/2.
     let weak = scaled(&saw, k, 0.5);
-    let dir_saw = if regime == Regime::StickSlow { saw } else { weak };
-    let dir_win = Window { transient: transient(&dir_saw, k), measured };
+    let dir_saw = if regime == Regime::StickSlow {
+        saw
+    } else {
+        weak
+    };
+    let dir_win = Window {
+        transient: transient(&dir_saw, k),
+        measured,
+    };
     let (v_dir, v_dir_mirror) = if regime == Regime::StickSlow {
         (v_sim, mirrored)
     } else {
-        let f = |p: &dyn PlateMotion| run_block(coul, p, 0.0, dir_win, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
+        let f = |p: &dyn PlateMotion| {
+            run_block(coul, p, 0.0, dir_win, &num, (0.0, 0.0), 0.0).mean_velocity_mps
+        };
         (f(&dir_saw), f(&Mirrored(dir_saw)))
     };
     r.result("drift_velocity_coulomb_mps", v_sim);
@@ -104,22 +138,65 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
     r.result("lock_time_s", lock_time_s(&saw, k, 0.0));
 
     // --- Linear law -----------------------------------------------------------------
-    let w_lin = Window { transient: (36.0 / (sc.c_per_s * period)).ceil() as usize, measured };
+    let w_lin = Window {
+        transient: (36.0 / (sc.c_per_s * period)).ceil() as usize,
+        measured,
+    };
     let vb = 0.5 * (a + b);
     let om = TAU / period;
     let drives: Vec<(&str, Box<dyn PlateMotion>)> = vec![
         ("sawtooth", Box::new(saw)),
         ("mirrored sawtooth", Box::new(Mirrored(saw))),
-        ("bi-harmonic eps = 0", Box::new(Biharmonic { velocity_amplitude_mps: vb, omega_rad_s: om, asymmetry: 0.0 })),
-        ("bi-harmonic eps = 0.3", Box::new(Biharmonic { velocity_amplitude_mps: vb, omega_rad_s: om, asymmetry: 0.3 })),
-        ("sine", Box::new(Harmonic::sine(Axis::X, vb / om, 1.0 / period))),
+        (
+            "bi-harmonic eps = 0",
+            Box::new(Biharmonic {
+                velocity_amplitude_mps: vb,
+                omega_rad_s: om,
+                asymmetry: 0.0,
+            }),
+        ),
+        (
+            "bi-harmonic eps = 0.3",
+            Box::new(Biharmonic {
+                velocity_amplitude_mps: vb,
+                omega_rad_s: om,
+                asymmetry: 0.3,
+            }),
+        ),
+        (
+            "sine",
+            Box::new(Harmonic::sine(Axis::X, vb / om, 1.0 / period)),
+        ),
     ];
-    let lin: Vec<f64> = drives.iter().map(|(_, p)| run_block(visc, p.as_ref(), 0.0, w_lin, &num, (0.0, 0.0), 0.0).mean_velocity_mps).collect();
+    let lin: Vec<f64> = drives
+        .iter()
+        .map(|(_, p)| {
+            run_block(visc, p.as_ref(), 0.0, w_lin, &num, (0.0, 0.0), 0.0).mean_velocity_mps
+        })
+        .collect();
     if traces {
         let n = (trace_span.1 / period).round() as usize;
-        out.linear = run_block(visc, &saw, 0.0, Window { transient: 0, measured: n }, &num, tspan, tdt).trace;
+        out.linear = run_block(
+            visc,
+            &saw,
+            0.0,
+            Window {
+                transient: 0,
+                measured: n,
+            },
+            &num,
+            tspan,
+            tdt,
+        )
+        .trace;
     }
-    let lin_worst = lin.iter().fold(0.0f64, |m, v| if v.is_nan() || m.is_nan() { f64::NAN } else { m.max(v.abs()) }); // NaN propagates
+    let lin_worst = lin.iter().fold(0.0f64, |m, v| {
+        if v.is_nan() || m.is_nan() {
+            f64::NAN
+        } else {
+            m.max(v.abs())
+        }
+    }); // NaN propagates
     r.result("drift_velocity_linear_mps", lin[0]);
     r.claim(Claim::close(
         "linear-no-drift",
@@ -130,7 +207,18 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
         LINEAR_TOL,
     ));
     // The identity <v> = <v_p> - (v(t1) - v(t0)) / (c (t1 - t0)) inside the transient.
-    let early = run_block(visc, &saw, 0.0, Window { transient: 0, measured: 2 }, &num, (0.0, 0.0), 0.0);
+    let early = run_block(
+        visc,
+        &saw,
+        0.0,
+        Window {
+            transient: 0,
+            measured: 2,
+        },
+        &num,
+        (0.0, 0.0),
+        0.0,
+    );
     let (v0, v1) = early.v_window_mps;
     let span = 2.0 * period;
     let identity = -(v1 - v0) / (sc.c_per_s * span); // formula: <v> - <v_p> = -(v(t1) - v(t0))/(c (t1 - t0))
@@ -171,7 +259,14 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
         main.first_stick_s.unwrap_or(f64::NAN),
         EXACT_TOL,
     ));
-    r.claim(Claim::close("mirror-reverses", "3.2.2", "Mirroring the drive (slow stroke towards -x) reverses the drift: v_d(mirror) = -v_d.", -v_sim, mirrored, EXACT_TOL));
+    r.claim(Claim::close(
+        "mirror-reverses",
+        "3.2.2",
+        "Mirroring the drive (slow stroke towards -x) reverses the drift: v_d(mirror) = -v_d.",
+        -v_sim,
+        mirrored,
+        EXACT_TOL,
+    ));
 
     // --- The document's paragraph -----------------------------------------------------
     // Printed reading: left stroke fast and short (v_l > v_r, t_r > t_l): our sawtooth
@@ -201,7 +296,18 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
     // The impulse over one always-slipping period, from the middle of (-b, a - k T_s).
     if k * ts < a + b {
         let v_start = 0.5 * (-b + a - k * ts);
-        let probe = run_block(coul, &saw, v_start, Window { transient: 0, measured: 1 }, &num, (0.0, 0.0), 0.0);
+        let probe = run_block(
+            coul,
+            &saw,
+            v_start,
+            Window {
+                transient: 0,
+                measured: 1,
+            },
+            &num,
+            (0.0, 0.0),
+            0.0,
+        );
         let dv = probe.v_window_mps.1 - probe.v_window_mps.0;
         let j = slipping_impulse_per_mass(&saw, k);
         r.claim(Claim::judged(
@@ -225,8 +331,32 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
     ));
     // Locomotion needs mu g t_fast < v_slow + v_fast.
     let strong = scaled(&saw, k, 2.0);
-    let v_weak = run_block(coul, &weak, 0.0, Window { transient: transient(&weak, k), measured }, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
-    let v_strong = run_block(coul, &strong, 0.0, Window { transient: transient(&strong, k), measured }, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
+    let v_weak = run_block(
+        coul,
+        &weak,
+        0.0,
+        Window {
+            transient: transient(&weak, k),
+            measured,
+        },
+        &num,
+        (0.0, 0.0),
+        0.0,
+    )
+    .mean_velocity_mps;
+    let v_strong = run_block(
+        coul,
+        &strong,
+        0.0,
+        Window {
+            transient: transient(&strong, k),
+            measured,
+        },
+        &num,
+        (0.0, 0.0),
+        0.0,
+    )
+    .mean_velocity_mps;
     r.claim(Claim::judged(
         "locomotion-needs-slip",
         "3.2.2",
@@ -239,7 +369,10 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
     ));
 
     // --- Bi-harmonic drive -------------------------------------------------------------
-    let bw = Window { transient: slip_transient(GAMMA_CHECK), measured: if quick { 4 } else { 10 } };
+    let bw = Window {
+        transient: slip_transient(GAMMA_CHECK),
+        measured: if quick { 4 } else { 10 },
+    };
     let bh = biharmonic(vb, GAMMA_CHECK, EPS_CHECK, k);
     let v_bh = run_block(coul, &bh, 0.0, bw, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
     let v_bh_formula = always_slipping_drift(GAMMA_CHECK, EPS_CHECK).map_or(f64::NAN, |d| d * vb);
@@ -255,7 +388,19 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
     ));
     let g_stick = stick_forever_gamma(EPS_CHECK);
     let stuck = biharmonic(vb, 0.9 * g_stick, EPS_CHECK, k);
-    let v_stuck = run_block(coul, &stuck, 0.0, Window { transient: 10, measured: 4 }, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
+    let v_stuck = run_block(
+        coul,
+        &stuck,
+        0.0,
+        Window {
+            transient: 10,
+            measured: 4,
+        },
+        &num,
+        (0.0, 0.0),
+        0.0,
+    )
+    .mean_velocity_mps;
     r.claim(Claim::close(
         "biharmonic-stuck",
         "3.2.2",
@@ -272,17 +417,49 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
         // (Gamma = 1.5, eps = 0.1; no closed form): reference the closed-form-flow run.
         let wb = biharmonic(vb, 1.5, 0.1, k);
         let plates: [(&str, &dyn PlateMotion, Window); 2] = [
-            ("sawtooth", &saw, Window { transient: transient(&saw, k), measured: 10 }),
-            ("bi-harmonic", &wb, Window { transient: slip_transient(1.5), measured: 10 }),
+            (
+                "sawtooth",
+                &saw,
+                Window {
+                    transient: transient(&saw, k),
+                    measured: 10,
+                },
+            ),
+            (
+                "bi-harmonic",
+                &wb,
+                Window {
+                    transient: slip_transient(1.5),
+                    measured: 10,
+                },
+            ),
         ];
         for (drive, plate, win) in plates {
-            let reference = if drive == "sawtooth" { v_formula } else { run_block(coul, plate, 0.0, win, &num, (0.0, 0.0), 0.0).mean_velocity_mps };
-            let mut settings: Vec<(&str, String, Numerics)> = vec![("closed forms, located events", "-".into(), Numerics::default())];
+            let reference = if drive == "sawtooth" {
+                v_formula
+            } else {
+                run_block(coul, plate, 0.0, win, &num, (0.0, 0.0), 0.0).mean_velocity_mps
+            };
+            let mut settings: Vec<(&str, String, Numerics)> = vec![(
+                "closed forms, located events",
+                "-".into(),
+                Numerics::default(),
+            )];
             for tol in [1e-3, 1e-6, 1e-9, 1e-12] {
-                settings.push(("DP5, located events", format!("tol {tol:.0e}"), Numerics::dopri(tol)));
+                settings.push((
+                    "DP5, located events",
+                    format!("tol {tol:.0e}"),
+                    Numerics::dopri(tol),
+                ));
             }
-            for n in [16, 64, 256, 1024] {
-                settings.push(("RK4 fixed step, no location", format!("T/{n}"), Numerics::fixed_rk4(n, plate.period_s())));
+            // Odd step counts: a grid of T/4^j would hit the stick time (T_f = T/4 after a
+            // slow stroke's start) exactly and hide the late switch by luck.
+            for n in [15, 63, 255, 1023] {
+                settings.push((
+                    "RK4 fixed step, no location",
+                    format!("T/{n}"),
+                    Numerics::fixed_rk4(n, plate.period_s()),
+                ));
             }
             for (method, setting, n) in settings {
                 if drive == "bi-harmonic" && method.starts_with("closed") {
@@ -290,8 +467,14 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
                 }
                 let d = run_block(coul, plate, 0.0, win, &n, (0.0, 0.0), 0.0);
                 let err = (d.mean_velocity_mps - reference).abs();
-                rows.push_str(&format!("| {drive} | {method} | {setting} | {} | {} | {} |\n", d.stats.rhs_evals, d.locate_evals, fmt_num(err)));
-                out.work.push((drive, method.to_string(), d.stats.rhs_evals, err));
+                rows.push_str(&format!(
+                    "| {drive} | {method} | {setting} | {} | {} | {} |\n",
+                    d.stats.rhs_evals,
+                    d.locate_evals,
+                    fmt_num(err)
+                ));
+                out.work
+                    .push((drive, method.to_string(), d.stats.rhs_evals, err));
             }
         }
         r.table("work_precision", rows);

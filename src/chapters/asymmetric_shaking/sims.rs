@@ -96,7 +96,10 @@ impl<P: PlateMotion + ?Sized> Observer<Mode, 2> for Watch<'_, '_, P> {
                 self.backward_stick = true;
             }
             // SlipBack: friction +mu g; SlipFwd: friction -mu g.
-            let along = matches!((mode.contact, vp > 0.0, vp < 0.0), (Contact::SlipBack, true, _) | (Contact::SlipFwd, _, true));
+            let along = matches!(
+                (mode.contact, vp > 0.0, vp < 0.0),
+                (Contact::SlipBack, true, _) | (Contact::SlipFwd, _, true)
+            );
             self.against_plate |= !along;
         }
         let (ta, tb) = self.trace_s;
@@ -105,14 +108,25 @@ impl<P: PlateMotion + ?Sized> Observer<Mode, 2> for Watch<'_, '_, P> {
             let n = ((s1 - s0) / self.trace_dt).ceil().max(1.0) as usize;
             for j in 0..=n {
                 let t = s0 + (s1 - s0) * j as f64 / n as f64;
-                self.trace.push((t, state_at(seg, t)[1], self.block.vp(mode, t)));
+                self.trace
+                    .push((t, state_at(seg, t)[1], self.block.vp(mode, t)));
             }
         }
     }
 
-    fn event(&mut self, t_s: f64, from: Mode, _guard: usize, _before: &[f64; 2], after: Option<(Mode, &[f64; 2])>) {
+    fn event(
+        &mut self,
+        t_s: f64,
+        from: Mode,
+        _guard: usize,
+        _before: &[f64; 2],
+        after: Option<(Mode, &[f64; 2])>,
+    ) {
         if let Some((to, _)) = after {
-            if to.contact == Contact::Stick && from.contact != Contact::Stick && self.first_stick.is_none() {
+            if to.contact == Contact::Stick
+                && from.contact != Contact::Stick
+                && self.first_stick.is_none()
+            {
                 self.first_stick = Some(t_s);
             }
         }
@@ -126,7 +140,8 @@ pub struct Numerics {
     pub closed_forms: bool,
     /// Driver options (method, step control, event location).
     pub hybrid: Options,
-    /// Guard samples per period (and longest step).
+    /// Guard samples per period (and longest step) on smooth plates; a piecewise-constant
+    /// plate needs none (see `Block::new`).
     pub samples_per_period: usize,
 }
 
@@ -134,33 +149,68 @@ impl Default for Numerics {
     /// Closed forms, DP5 at rtol = atol = 1e-12 (viscous mode), located events, 64
     /// guard samples per period.
     fn default() -> Self {
-        Numerics { closed_forms: true, hybrid: Options { control: StepControl::tol(1e-12, 1e-12), record_events: false, ..Options::default() }, samples_per_period: 64 }
+        Numerics {
+            closed_forms: true,
+            hybrid: Options {
+                control: StepControl::tol(1e-12, 1e-12),
+                record_events: false,
+                ..Options::default()
+            },
+            samples_per_period: 64,
+        }
     }
 }
 
 impl Numerics {
     /// Integrated flows, DP5 with tolerance `tol`, located events.
     pub fn dopri(tol: f64) -> Self {
-        let hybrid = Options { method: Method::Dopri5, control: StepControl::tol(tol, tol), ..Numerics::default().hybrid };
-        Numerics { closed_forms: false, hybrid, ..Numerics::default() }
+        let hybrid = Options {
+            method: Method::Dopri5,
+            control: StepControl::tol(tol, tol),
+            ..Numerics::default().hybrid
+        };
+        Numerics {
+            closed_forms: false,
+            hybrid,
+            ..Numerics::default()
+        }
     }
 
     /// Integrated flows, fixed RK4 steps of `period / steps_per_period`, switches taken
     /// at the end of the step that saw them (no location).
     pub fn fixed_rk4(steps_per_period: usize, period_s: f64) -> Self {
         let h_s = period_s / steps_per_period as f64;
-        let hybrid = Options { method: Method::Rk4, control: StepControl::Fixed { h_s }, locate_events: false, ..Numerics::default().hybrid };
-        Numerics { closed_forms: false, hybrid, samples_per_period: steps_per_period }
+        let hybrid = Options {
+            method: Method::Rk4,
+            control: StepControl::Fixed { h_s },
+            locate_events: false,
+            ..Numerics::default().hybrid
+        };
+        Numerics {
+            closed_forms: false,
+            hybrid,
+            samples_per_period: steps_per_period,
+        }
     }
 }
 
 /// Runs a block that starts at x = 0 with velocity `v0_mps` at t = 0 on `plate` over
 /// `window`; traces `trace_s` every `trace_dt` (0: no trace).
-pub fn run_block<P: PlateMotion + ?Sized>(law: Law, plate: &P, v0_mps: f64, window: Window, num: &Numerics, trace_s: (f64, f64), trace_dt: f64) -> DriftRun {
+pub fn run_block<P: PlateMotion + ?Sized>(
+    law: Law,
+    plate: &P,
+    v0_mps: f64,
+    window: Window,
+    num: &Numerics,
+    trace_s: (f64, f64),
+    trace_dt: f64,
+) -> DriftRun {
     let period = plate.period_s();
     let mut block = Block::new(plate, law);
     block.closed_forms = num.closed_forms;
-    block.sample_s = period / num.samples_per_period.max(1) as f64;
+    if !block.piecewise_constant {
+        block.sample_s = period / num.samples_per_period.max(1) as f64;
+    }
     // Window ends on the plate's own breakpoint floats when there are some (so no
     // sliver step is left between the last breakpoint and the end).
     let on_grid = |n: usize| {
@@ -186,9 +236,19 @@ pub fn run_block<P: PlateMotion + ?Sized>(law: Law, plate: &P, v0_mps: f64, wind
         trace: Vec::new(),
     };
     let mode0 = block.start_mode(0.0, v0_mps);
-    let run = simulate(&block, mode0, 0.0, [0.0, v0_mps], t_end, &num.hybrid, &mut w);
+    let run = simulate(
+        &block,
+        mode0,
+        0.0,
+        [0.0, v0_mps],
+        t_end,
+        &num.hybrid,
+        &mut w,
+    );
     let mean = match w.ends {
-        [Some(ya), Some(yb)] if window.measured > 0 && run.outcome == Outcome::Completed => (yb[0] - ya[0]) / (win.1 - win.0), // formula: <v> = (x(t_b) - x(t_a)) / (t_b - t_a)
+        [Some(ya), Some(yb)] if window.measured > 0 && run.outcome == Outcome::Completed => {
+            (yb[0] - ya[0]) / (win.1 - win.0)
+        } // formula: <v> = (x(t_b) - x(t_a)) / (t_b - t_a)
         _ => f64::NAN,
     };
     DriftRun {
@@ -198,7 +258,10 @@ pub fn run_block<P: PlateMotion + ?Sized>(law: Law, plate: &P, v0_mps: f64, wind
         first_stick_s: w.first_stick,
         stuck_in_backward_stroke: w.backward_stick,
         friction_along_plate: !w.against_plate,
-        v_window_mps: (w.ends[0].map_or(f64::NAN, |y| y[1]), w.ends[1].map_or(f64::NAN, |y| y[1])),
+        v_window_mps: (
+            w.ends[0].map_or(f64::NAN, |y| y[1]),
+            w.ends[1].map_or(f64::NAN, |y| y[1]),
+        ),
         trace: w.trace,
         stats: run.stats,
         locate_evals: run.locate_evals,

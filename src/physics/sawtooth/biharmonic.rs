@@ -72,13 +72,19 @@ impl SlipOrbit {
             return None;
         }
         let theta1 = PI - s.asin();
-        let orbit = SlipOrbit { gamma, eps, theta1, u_max: plate_velocity(eps, theta1) };
+        let orbit = SlipOrbit {
+            gamma,
+            eps,
+            theta1,
+            u_max: plate_velocity(eps, theta1),
+        };
         let at_meetings = plate_acceleration(eps, theta1) < -1.0 / gamma
             && plate_acceleration(eps, theta1 + PI) > 1.0 / gamma;
         let n = 4096;
         let apart = (1..n).all(|i| {
             let th = theta1 + PI * i as f64 / n as f64;
-            orbit.velocity(th) > plate_velocity(eps, th) && orbit.velocity(th + PI) < plate_velocity(eps, th + PI)
+            orbit.velocity(th) > plate_velocity(eps, th)
+                && orbit.velocity(th + PI) < plate_velocity(eps, th + PI)
         });
         (at_meetings && apart).then_some(orbit)
     }
@@ -103,7 +109,8 @@ impl SlipOrbit {
 /// The always-slipping drift `eps (1 - pi^2 / (2 Gamma^2))` (units of `V`) where the
 /// always-slipping orbit exists, else `None`.
 pub fn always_slipping_drift(gamma: f64, eps: f64) -> Option<f64> {
-    SlipOrbit::new(gamma, eps).map(|_| eps * (1.0 - PI * PI / (2.0 * gamma * gamma))) // formula: v_d/V = eps (1 - pi^2/(2 Gamma^2))
+    SlipOrbit::new(gamma, eps).map(|_| eps * (1.0 - PI * PI / (2.0 * gamma * gamma)))
+    // formula: v_d/V = eps (1 - pi^2/(2 Gamma^2))
 }
 
 #[cfg(test)]
@@ -115,8 +122,14 @@ mod tests {
         // A scan on 2e5 points finds the maximum to ~ (2 pi / 2e5)^2 relative.
         for eps in [-0.4, -0.1, 0.0, 0.05, 0.2, 0.45] {
             let n = 200_000;
-            let scan = (0..n).map(|i| plate_acceleration(eps, TAU * i as f64 / n as f64).abs()).fold(0.0, f64::max);
-            assert!((scan - peak_acceleration(eps)).abs() < 1e-8, "eps {eps}: {scan} vs {}", peak_acceleration(eps));
+            let scan = (0..n)
+                .map(|i| plate_acceleration(eps, TAU * i as f64 / n as f64).abs())
+                .fold(0.0, f64::max);
+            assert!(
+                (scan - peak_acceleration(eps)).abs() < 1e-8,
+                "eps {eps}: {scan} vs {}",
+                peak_acceleration(eps)
+            );
         }
     }
 
@@ -126,8 +139,13 @@ mod tests {
         // (resolution 1e-5 of the period).
         for eps in [-0.45, -0.2, 0.1, 0.3, 0.49] {
             let n = 100_000;
-            let above = (0..n).filter(|&i| plate_velocity(eps, TAU * (i as f64 + 0.5) / n as f64) > eps).count();
-            assert!((above as f64 / n as f64 - 0.5).abs() <= 2.0 / n as f64, "eps {eps}");
+            let above = (0..n)
+                .filter(|&i| plate_velocity(eps, TAU * (i as f64 + 0.5) / n as f64) > eps)
+                .count();
+            assert!(
+                (above as f64 / n as f64 - 0.5).abs() <= 2.0 / n as f64,
+                "eps {eps}"
+            );
             assert_eq!(slip_limit_drift(eps), Some(eps));
         }
         assert_eq!(slip_limit_drift(0.6), None);
@@ -142,9 +160,15 @@ mod tests {
             assert!((o.velocity(o.theta1 + PI) - plate_velocity(eps, o.theta1 + PI)).abs() < 1e-14);
             // midpoint rule on a piecewise-linear function with kinks: error ~ 1/n^2
             let n = 100_000;
-            let mean = (0..n).map(|i| o.velocity(TAU * (i as f64 + 0.5) / n as f64)).sum::<f64>() / n as f64;
+            let mean = (0..n)
+                .map(|i| o.velocity(TAU * (i as f64 + 0.5) / n as f64))
+                .sum::<f64>()
+                / n as f64;
             let closed = always_slipping_drift(gamma, eps).unwrap();
-            assert!((mean - closed).abs() < 1e-9, "{gamma} {eps}: {mean} vs {closed}");
+            assert!(
+                (mean - closed).abs() < 1e-9,
+                "{gamma} {eps}: {mean} vs {closed}"
+            );
             assert!((o.drift() - closed).abs() < 1e-14);
         }
         // too weak a drive: the block would have to stick

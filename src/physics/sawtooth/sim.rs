@@ -82,15 +82,34 @@ pub struct Block<'a, P: PlateMotion + ?Sized> {
     pub law: Law,
     /// Use closed forms for stick and Coulomb slip (true) or integrate every flow.
     pub closed_forms: bool,
-    /// Guard sampling interval of closed-form modes and longest step (s).
+    /// Guard sampling interval of closed-form modes and longest step (s); infinite
+    /// for a plate with piecewise-constant velocity (see [`Block::new`]).
     pub sample_s: f64,
+    /// True if the plate has breakpoints and no acceleration between them.
+    pub piecewise_constant: bool,
 }
 
 impl<'a, P: PlateMotion + ?Sized> Block<'a, P> {
-    /// A block with closed forms and 64 guard samples per period.
+    /// A block with closed forms and 64 guard samples per period, or no sampling at all
+    /// when the plate's velocity is piecewise constant (the sawtooth: checked on 64
+    /// points of a period): then every guard is linear in time within a piece and
+    /// crosses zero at most once, and the steps end on the breakpoints anyway.
     pub fn new(plate: &'a P, law: Law) -> Self {
-        let sample_s = plate.period_s() / 64.0;
-        Block { plate: Snapped(plate), law, closed_forms: true, sample_s }
+        let period = plate.period_s();
+        let piecewise_constant = plate.breakpoint_after(0.0).is_some()
+            && (0..64).all(|i| plate.ax_mps2((i as f64 + 0.5) * period / 64.0) == 0.0);
+        let sample_s = if piecewise_constant {
+            f64::INFINITY
+        } else {
+            period / 64.0
+        };
+        Block {
+            plate: Snapped(plate),
+            law,
+            closed_forms: true,
+            sample_s,
+            piecewise_constant,
+        }
     }
 
     /// The plate, read through [`Snapped`].
@@ -149,8 +168,15 @@ impl<'a, P: PlateMotion + ?Sized> Block<'a, P> {
     pub fn start_mode(&self, t: f64, v: f64) -> Mode {
         // The piece that contains t (a start on a breakpoint belongs to the new piece).
         let end_s = self.plate.breakpoint_after(t).unwrap_or(f64::INFINITY);
-        let probe = Mode { contact: Contact::Stick, start_s: t, end_s };
-        Mode { contact: self.contact_for(v - self.vp(probe, t), self.ap(probe, t)), ..probe }
+        let probe = Mode {
+            contact: Contact::Stick,
+            start_s: t,
+            end_s,
+        };
+        Mode {
+            contact: self.contact_for(v - self.vp(probe, t), self.ap(probe, t)),
+            ..probe
+        }
     }
 }
 
@@ -164,7 +190,9 @@ impl<P: PlateMotion + ?Sized> HybridSystem<2> for Block<'_, P> {
             (Contact::Stick, _) => [self.vp(m, t), self.ap(m, t)],
             (Contact::SlipFwd, _) => [y[1], -k], // formula: v' = -mu g
             (Contact::SlipBack, _) => [y[1], k], // formula: v' = +mu g
-            (Contact::Viscous, Law::Viscous { c_per_s }) => [y[1], -c_per_s * (y[1] - self.vp(m, t))], // formula: v' = -c (v - v_p)
+            (Contact::Viscous, Law::Viscous { c_per_s }) => {
+                [y[1], -c_per_s * (y[1] - self.vp(m, t))]
+            } // formula: v' = -c (v - v_p)
             (Contact::Viscous, _) => [y[1], 0.0],
         }
     }
@@ -177,7 +205,10 @@ impl<P: PlateMotion + ?Sized> HybridSystem<2> for Block<'_, P> {
         let k = self.k();
         match m.contact {
             // formula: x = x0 + x_p(t) - x_p(t0), v = v_p(t)
-            Contact::Stick => Some([y0[0] + self.plate.x_m(t) - self.plate.x_m(t0), self.vp(m, t)]),
+            Contact::Stick => Some([
+                y0[0] + self.plate.x_m(t) - self.plate.x_m(t0),
+                self.vp(m, t),
+            ]),
             Contact::SlipFwd => Some([y0[0] + y0[1] * s - 0.5 * k * s * s, y0[1] - k * s]), // formula: x0 + v0 s - k s^2/2
             Contact::SlipBack => Some([y0[0] + y0[1] * s + 0.5 * k * s * s, y0[1] + k * s]), // formula: x0 + v0 s + k s^2/2
             Contact::Viscous => None,
@@ -226,7 +257,10 @@ impl<P: PlateMotion + ?Sized> HybridSystem<2> for Block<'_, P> {
             }
         };
         // At a switch the block moves with the plate: v = v_p exactly.
-        Transition::To { mode: Mode { contact, ..m }, state: [y[0], vp] }
+        Transition::To {
+            mode: Mode { contact, ..m },
+            state: [y[0], vp],
+        }
     }
 
     fn max_step(&self, m: Mode, t: f64, _y: &[f64; 2]) -> f64 {
@@ -249,12 +283,19 @@ impl<P: PlateMotion + ?Sized> HybridSystem<2> for Block<'_, P> {
 
     fn on_breakpoint(&self, m: Mode, t: f64, y: &[f64; 2]) -> Transition<Mode, (), 2> {
         let end_s = self.plate.breakpoint_after(t).unwrap_or(f64::INFINITY);
-        let piece = Mode { start_s: t, end_s, ..m };
+        let piece = Mode {
+            start_s: t,
+            end_s,
+            ..m
+        };
         let contact = match m.contact {
             Contact::Viscous => Contact::Viscous,
             _ => self.contact_for(y[1] - self.vp(piece, t), self.ap(piece, t)),
         };
-        Transition::To { mode: Mode { contact, ..piece }, state: *y }
+        Transition::To {
+            mode: Mode { contact, ..piece },
+            state: *y,
+        }
     }
 }
 
@@ -269,15 +310,31 @@ mod tests {
         // Default scene: after the lock (t = 0.054 s) each period is stick (slow stroke)
         // -> slip forward (fast stroke) -> slip back (slow stroke) -> stick: the run
         // over 100 periods ends stuck in a slow stroke, exactly at the plate's speed.
-        let s = Sawtooth { slow_velocity_mps: 0.1, fast_velocity_mps: 0.3, slow_duration_s: 0.03 };
+        let s = Sawtooth {
+            slow_velocity_mps: 0.1,
+            fast_velocity_mps: 0.3,
+            slow_duration_s: 0.03,
+        };
         let b = Block::new(&s, Law::Coulomb { k_mps2: 0.3 * 9.81 });
         let m0 = b.start_mode(0.0, 0.0);
         assert_eq!(m0.contact, Contact::SlipBack);
-        let run = simulate(&b, m0, 0.0, [0.0, 0.0], 100.0 * 0.04 + 0.025, &Options::default(), &mut ());
+        let run = simulate(
+            &b,
+            m0,
+            0.0,
+            [0.0, 0.0],
+            100.0 * 0.04 + 0.025,
+            &Options::default(),
+            &mut (),
+        );
         assert_eq!(run.mode_end.contact, Contact::Stick);
         assert_eq!(run.y_end[1], 0.1);
         // one stick event per period after the first (slip back -> stick), one per
         // stroke change: 3 per period, about 300 in all
-        assert!((295..=305).contains(&run.event_count), "{}", run.event_count);
+        assert!(
+            (295..=305).contains(&run.event_count),
+            "{}",
+            run.event_count
+        );
     }
 }

@@ -3,14 +3,21 @@
 use super::*;
 
 fn scene() -> Sawtooth {
-    Sawtooth { slow_velocity_mps: 0.1, fast_velocity_mps: 0.3, slow_duration_s: 0.03 }
+    Sawtooth {
+        slow_velocity_mps: 0.1,
+        fast_velocity_mps: 0.3,
+        slow_duration_s: 0.03,
+    }
 }
 
 /// Midpoint-rule period mean of `f`; for piecewise-linear `f` with a few kinks the
 /// error is ~ (slope jump) h^2 per kink, below 1e-12 at n = 2e5 here.
 fn period_mean(period: f64, f: impl Fn(f64) -> f64) -> f64 {
     let n = 200_000;
-    (0..n).map(|i| f(period * (i as f64 + 0.5) / n as f64)).sum::<f64>() / n as f64
+    (0..n)
+        .map(|i| f(period * (i as f64 + 0.5) / n as f64))
+        .sum::<f64>()
+        / n as f64
 }
 
 #[test]
@@ -47,11 +54,20 @@ fn steady_velocity_is_periodic_with_the_drift_as_mean() {
         let v = |t: f64| steady_velocity_mps(&s, k, t);
         // continuous across the strokes and the period
         assert!((v(0.0) - v(period - 1e-13)).abs() < 1e-9, "{k}");
-        assert!((v(s.slow_duration_s - 1e-13) - v(s.slow_duration_s)).abs() < 1e-9, "{k}");
+        assert!(
+            (v(s.slow_duration_s - 1e-13) - v(s.slow_duration_s)).abs() < 1e-9,
+            "{k}"
+        );
         let mean = period_mean(period, v);
-        assert!((mean - drift_velocity_mps(&s, k)).abs() < 1e-11, "{k}: {mean} vs {}", drift_velocity_mps(&s, k));
+        assert!(
+            (mean - drift_velocity_mps(&s, k)).abs() < 1e-11,
+            "{k}: {mean} vs {}",
+            drift_velocity_mps(&s, k)
+        );
         // it stays within the plate's speeds and touches the slow speed
-        let top = (0..4000).map(|i| v(period * i as f64 / 4000.0)).fold(f64::MIN, f64::max);
+        let top = (0..4000)
+            .map(|i| v(period * i as f64 / 4000.0))
+            .fold(f64::MIN, f64::max);
         assert_eq!(top, 0.1);
     }
 }
@@ -80,7 +96,13 @@ fn linear_orbit_is_periodic_and_has_zero_mean() {
     for c in [0.1, 30.0, 1000.0] {
         let v0 = linear_periodic_start_velocity_mps(&s, c);
         let v1 = 0.1 + (v0 - 0.1) * (-c * 0.03f64).exp();
-        let v = |t: f64| if t < 0.03 { 0.1 + (v0 - 0.1) * (-c * t).exp() } else { -0.3 + (v1 + 0.3) * (-c * (t - 0.03)).exp() };
+        let v = |t: f64| {
+            if t < 0.03 {
+                0.1 + (v0 - 0.1) * (-c * t).exp()
+            } else {
+                -0.3 + (v1 + 0.3) * (-c * (t - 0.03)).exp()
+            }
+        };
         let end = -0.3 + (v1 + 0.3) * (-c * 0.01f64).exp();
         assert!((end - v0).abs() < 1e-15, "{c}");
         // smooth pieces: midpoint error ~ c^2 h^2 v, < 1e-10 even at c = 1000
@@ -108,11 +130,18 @@ fn snapped_plate_gives_the_new_stroke_at_every_breakpoint() {
     let mut t = 0.0;
     for i in 0..2000 {
         let b = r.breakpoint_after(t).unwrap();
-        assert!((b - 0.04 * (i / 2) as f64 - if i % 2 == 0 { 0.03 } else { 0.04 }).abs() < 1e-12, "{i}: {b}");
+        assert!(
+            (b - 0.04 * (i / 2) as f64 - if i % 2 == 0 { 0.03 } else { 0.04 }).abs() < 1e-12,
+            "{i}: {b}"
+        );
         let (new, old) = if i % 2 == 0 { (-0.3, 0.1) } else { (0.1, -0.3) };
         assert_eq!(r.vx_mps(b), new, "breakpoint {i} at {b}");
         assert_eq!(r.vx_mps(b - 1e-9 * 0.04), old, "before breakpoint {i}");
-        assert_eq!(r.vx_mps(f64::from_bits(b.to_bits() - 1)), old, "one ulp before breakpoint {i}");
+        assert_eq!(
+            r.vx_mps(f64::from_bits(b.to_bits() - 1)),
+            old,
+            "one ulp before breakpoint {i}"
+        );
         t = b;
     }
 }
