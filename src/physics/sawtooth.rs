@@ -120,7 +120,9 @@ pub fn steady_velocity_mps(s: &Sawtooth, k_mps2: f64, t: f64) -> f64 {
 /// Time (s) at which a block that starts at `v0_mps` (with `-b < v0 < a`) at the start of
 /// a slow stroke (t = 0) first reaches the slow speed and sticks: after `n` whole
 /// always-slipping periods (`v_n = v0 + n k (T_s - T_f)`) it reaches `a` at
-/// `n T + (a - v_n)/k`, with `n` the first index where `v_n + k T_s >= a`.
+/// `n T + (a - v_n)/k`, with `n` the first index where `v_n + k T_s >= a`. At a tie
+/// (`v_n + k T_s = a` exactly: the block reaches `a` just as the slow stroke ends) the
+/// lock time jumps by a period, and a simulation may land on either side.
 pub fn lock_time_s(s: &Sawtooth, k_mps2: f64, v0_mps: f64) -> f64 {
     let (a, ts) = (s.slow_velocity_mps, s.slow_duration_s);
     let gain = slipping_impulse_per_mass(s, k_mps2);

@@ -48,10 +48,11 @@ pub struct Traces {
     pub work: Vec<(&'static str, String, u64, f64)>,
 }
 
-/// Whole periods from rest to the first stick (closed form) plus one: the window after
-/// it is periodic.
-fn transient(saw: &Sawtooth, k: f64) -> usize {
-    (lock_time_s(saw, k, 0.0) / saw.period_s()).floor() as usize + 1
+/// Whole periods from rest to the first stick (closed form) plus two: the window after
+/// it is periodic. (One period of margin: when the block reaches the slow speed exactly
+/// at a stroke's end, rounding decides whether it locks then or a period later.)
+pub fn transient(saw: &Sawtooth, k: f64) -> usize {
+    (lock_time_s(saw, k, 0.0) / saw.period_s()).floor() as usize + 2
 }
 
 /// A sawtooth with the same speeds whose fast stroke lasts `ratio (a + b)/k`.

@@ -2,7 +2,7 @@
 //! drift against the asymmetry, drift against the drive number, the regime map, and
 //! the work-precision chart. Sweeps here feed figures only.
 
-use super::claims::{biharmonic, slip_transient, Traces};
+use super::claims::{biharmonic, slip_transient, transient, Traces};
 use super::sims::{run_block, Numerics, Window};
 use super::Scene;
 use crate::error::Result;
@@ -13,10 +13,6 @@ use crate::physics::sawtooth::{drift_ratio, drift_velocity_mps, lock_time_s, ste
 use crate::plot::{save_chart, save_heatmap, save_panels, Chart, HeatMap, Legend, Series};
 use crate::sweep::{linspace, logspace, par_map};
 use std::path::Path;
-
-fn transient(saw: &Sawtooth, k: f64) -> usize {
-    (lock_time_s(saw, k, 0.0) / saw.period_s()).floor() as usize + 1
-}
 
 /// Draws every figure into `dir`; returns the written paths.
 pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<String>> {
