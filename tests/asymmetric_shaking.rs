@@ -350,14 +350,17 @@ fn quick_summary_snapshot() {
 
 #[test]
 fn bad_input_exits_2_with_one_line_naming_the_flag() {
-    let bad: [(&[&str], &str); 12] = [
+    let bad: [(&[&str], &str); 15] = [
         (&["--mu", "NaN"], "--mu"),
         (&["--mu", "-0.3"], "--mu"),
         (&["--mu", "0"], "--mu"),
+        (&["--mu", "11"], "--mu"),
+        (&["--mu", "1e-7"], "--mu"),
         (&["--slow-velocity-mps", "-0.1"], "--slow-velocity-mps"),
         (&["--slow-velocity-mps", "NaN"], "--slow-velocity-mps"),
         (&["--fast-velocity-mps", "0.1"], "--fast-velocity-mps"),
         (&["--fast-velocity-mps", "0.05"], "--fast-velocity-mps"),
+        (&["--fast-velocity-mps", "1000"], "--fast-velocity-mps"),
         (&["--slow-duration-s", "-0.03"], "--slow-duration-s"),
         (&["--slow-duration-s", "inf"], "--slow-duration-s"),
         (&["--fast-duration-s", "0.02"], "--fast-duration-s"),

@@ -20,20 +20,26 @@ pub const ID: &str = "asymmetric-shaking";
 
 /// Longest transient (whole periods from rest to the first stick) the chapter accepts:
 /// bounds `--mu` from below.
-pub const MAX_LOCK_PERIODS: f64 = 1e5;
+pub const MAX_LOCK_PERIODS: f64 = 1e4;
+
+/// Largest friction coefficient accepted (dimensionless).
+pub const MU_MAX: f64 = 10.0;
+
+/// Largest ratio of the fast to the slow speed accepted.
+pub const MAX_SPEED_RATIO: f64 = 1e3;
 
 /// Flags of the chapter: the two-velocity sawtooth and the two friction laws.
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Coulomb friction coefficient mu between block and plate (dimensionless, > 0;
-    /// default 0.3).
+    /// Coulomb friction coefficient mu between block and plate (dimensionless, <= 10 and
+    /// large enough to reach the steady state within 1e4 periods; default 0.3).
     #[arg(long, default_value_t = 0.3)]
     pub mu: f64,
     /// Plate speed of the slow stroke, towards +x (m/s, > 0; default 0.1).
     #[arg(long, default_value_t = 0.1)]
     pub slow_velocity_mps: f64,
-    /// Plate speed of the fast stroke back, towards -x (m/s, above the slow speed;
-    /// default 0.3).
+    /// Plate speed of the fast stroke back, towards -x (m/s, above the slow speed and at
+    /// most 1000 times it; default 0.3).
     #[arg(long, default_value_t = 0.3)]
     pub fast_velocity_mps: f64,
     /// Duration of the slow stroke (s, > 0; default 0.03). The fast stroke lasts
@@ -72,12 +78,22 @@ impl Scene {
 
 /// Checks every flag (one line naming the flag, value and valid range on error).
 pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
+    if !(g_mps2.is_finite() && g_mps2 > 0.0) {
+        return Err(WorkbookError::bad_input(
+            "--g-mps2",
+            g_mps2,
+            "a finite number > 0 (m/s^2)",
+        ));
+    }
     let vs = positive("--slow-velocity-mps", a.slow_velocity_mps, "m/s")?;
     let vf = check(
         "--fast-velocity-mps",
         a.fast_velocity_mps,
-        |v| v > vs,
-        &format!("a finite number > the slow speed {vs} (m/s)"),
+        |v| v > vs && v <= MAX_SPEED_RATIO * vs,
+        &format!(
+            "{vs} < value <= {} (m/s: above the slow speed, at most 1000 times it)",
+            MAX_SPEED_RATIO * vs
+        ),
     )?;
     let ts = positive("--slow-duration-s", a.slow_duration_s, "s")?;
     let saw = Sawtooth {
@@ -96,7 +112,7 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
         )?;
     }
     let mu_min = mu_min_for_lock(&saw, g_mps2, MAX_LOCK_PERIODS);
-    let mu = check("--mu", a.mu, |m| m >= mu_min, &format!("a finite number >= {mu_min:.3e} (dimensionless; smaller needs more than 1e5 periods to reach the steady state)"))?;
+    let mu = check("--mu", a.mu, |m| m >= mu_min && m <= MU_MAX, &format!("{mu_min:.3e} <= mu <= {MU_MAX} (dimensionless; a smaller mu needs more than 1e4 periods to reach the steady state)"))?;
     let period = saw.period_s();
     let (c_lo, c_hi) = (0.01 / period, 1e4 / period);
     let c = check(
@@ -105,13 +121,6 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
         |c| c >= c_lo && c <= c_hi,
         &format!("{c_lo:.4} <= c <= {c_hi:.4e} (1/s; 0.01/T to 1e4/T, T = {period} s)"),
     )?;
-    if !(g_mps2.is_finite() && g_mps2 > 0.0) {
-        return Err(WorkbookError::bad_input(
-            "--g-mps2",
-            g_mps2,
-            "a finite number > 0 (m/s^2)",
-        ));
-    }
     Ok(Scene {
         saw,
         mu,
