@@ -275,16 +275,18 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         mode_time_s: Vec::new(),
     };
     let mut recent: VecDeque<f64> = VecDeque::with_capacity(opts.zeno.max_events + 1);
-    let mut guards0: Vec<f64> = Vec::new();
+    // Guard values at the start and end of the current step; buffers reused, so the
+    // stepping loop does not allocate.
+    let mut guards0: Vec<f64> = Vec::with_capacity(8);
+    let mut guards1: Vec<f64> = Vec::with_capacity(8);
     let mut fresh_mode = true;
     let outcome = 'outer: loop {
         if t >= t_end {
             break Outcome::Completed;
         }
         if fresh_mode {
-            guards0 = (0..sys.guard_count(mode))
-                .map(|i| sys.guard(mode, i, t, &y))
-                .collect();
+            guards0.clear();
+            guards0.extend((0..sys.guard_count(mode)).map(|i| sys.guard(mode, i, t, &y)));
             fresh_mode = false;
         }
         let bp = sys.breakpoint_after(t).filter(|&b| b < t_end);
@@ -342,9 +344,8 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         };
         // Find the earliest crossing among the guards.
         let mut best: Option<(usize, f64)> = None;
-        let guards1: Vec<f64> = (0..guards0.len())
-            .map(|i| sys.guard(mode, i, t1, &y1))
-            .collect();
+        guards1.clear();
+        guards1.extend((0..guards0.len()).map(|i| sys.guard(mode, i, t1, &y1)));
         for i in 0..guards0.len() {
             let dir = sys.direction(mode, i);
             let mut ta = ts;
@@ -455,7 +456,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                 add_time(&mut run.mode_time_s, mode, t1 - ts);
                 t = t1;
                 y = y1;
-                guards0 = guards1;
+                std::mem::swap(&mut guards0, &mut guards1);
                 if Some(t1) == bp {
                     integ.restart();
                     match sys.on_breakpoint(mode, t, &y) {

@@ -165,9 +165,12 @@ impl PlateMotion for Harmonic {
 /// `-fast_velocity_mps` for `fast_duration_s = slow_velocity_mps slow_duration_s /
 /// fast_velocity_mps`; `x(0) = 0` and zero net displacement per period.
 ///
-/// Velocity is right-continuous: at a breakpoint it is the value of the stroke that
-/// begins there. Models that switch at breakpoints should ask [`Sawtooth::stroke_at`]
-/// just after the breakpoint rather than rely on rounding of `t` at it.
+/// Breakpoints are **canonical floats**: the `i`-th is always computed by the same
+/// expression, `B(2k) = k T` (a slow stroke starts) and `B(2k+1) = k T + t_slow` (a fast
+/// stroke starts), and every query compares `t` with these floats, never with a
+/// rounded phase. Hence `breakpoint_after(t)` is strictly greater than `t`, stepping
+/// to it and asking again yields the next one, and velocity is exactly
+/// right-continuous: at `t = B(i)` it is the velocity of the stroke that begins there.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sawtooth {
     /// Speed of the slow stroke towards +x (m/s).
@@ -193,16 +196,32 @@ impl Sawtooth {
         self.slow_velocity_mps * self.slow_duration_s / self.fast_velocity_mps // formula: v_s t_s = v_f t_f
     }
 
-    /// Time since the start of the current period (s) and the period index.
-    fn phase(&self, t: f64) -> (f64, f64) {
-        let period = self.period_s();
-        let k = (t / period).floor();
-        (t - k * period, k)
+    /// The canonical float of breakpoint `i` (s).
+    pub fn breakpoint(&self, i: i64) -> f64 {
+        let k = i.div_euclid(2) as f64;
+        let base = k * self.period_s(); // formula: B(2k) = k T
+        if i.rem_euclid(2) == 0 {
+            base
+        } else {
+            base + self.slow_duration_s // formula: B(2k+1) = k T + t_slow
+        }
     }
 
-    /// The stroke under way at `t`.
+    /// Index of the piece containing `t`: the largest `i` with `B(i) <= t`.
+    pub fn piece_index(&self, t: f64) -> i64 {
+        let mut i = 2 * (t / self.period_s()).floor() as i64;
+        while self.breakpoint(i) > t {
+            i -= 1;
+        }
+        while self.breakpoint(i + 1) <= t {
+            i += 1;
+        }
+        i
+    }
+
+    /// The stroke under way at `t` (right-continuous at the breakpoints).
     pub fn stroke_at(&self, t: f64) -> Stroke {
-        if self.phase(t).0 < self.slow_duration_s {
+        if self.piece_index(t).rem_euclid(2) == 0 {
             Stroke::Slow
         } else {
             Stroke::Fast
@@ -212,12 +231,13 @@ impl Sawtooth {
 
 impl PlateMotion for Sawtooth {
     fn x_m(&self, t: f64) -> f64 {
-        let (tau, _) = self.phase(t);
-        if tau < self.slow_duration_s {
-            self.slow_velocity_mps * tau
+        let i = self.piece_index(t);
+        let since = t - self.breakpoint(i);
+        if i.rem_euclid(2) == 0 {
+            self.slow_velocity_mps * since // formula: x = v_s (t - kT)
         } else {
-            self.slow_velocity_mps * self.slow_duration_s
-                - self.fast_velocity_mps * (tau - self.slow_duration_s)
+            self.slow_velocity_mps * self.slow_duration_s - self.fast_velocity_mps * since
+            // formula: x = v_s t_s - v_f (t - kT - t_s)
         }
     }
     fn vx_mps(&self, t: f64) -> f64 {
@@ -230,18 +250,7 @@ impl PlateMotion for Sawtooth {
         self.slow_duration_s + self.fast_duration_s()
     }
     fn breakpoint_after(&self, t: f64) -> Option<f64> {
-        let period = self.period_s();
-        let (tau, k) = self.phase(t);
-        let start = k * period;
-        // Within a few ulps of a breakpoint counts as at it: return the next one.
-        let eps = 8.0 * f64::EPSILON * t.abs().max(period);
-        Some(if tau + eps < self.slow_duration_s {
-            start + self.slow_duration_s
-        } else if tau + eps < period {
-            start + period
-        } else {
-            start + period + self.slow_duration_s
-        })
+        Some(self.breakpoint(self.piece_index(t) + 1))
     }
 }
 
@@ -341,6 +350,26 @@ mod tests {
         assert!((b2 - 0.04).abs() < 1e-15, "{b2}");
         let b3 = s.breakpoint_after(b2).unwrap();
         assert!((b3 - 0.07).abs() < 1e-14, "{b3}");
+        // Walking the breakpoints from any of them, or from an ulp before or after,
+        // never skips or repeats one, and the velocity switches exactly at each.
+        let mut b = 0.0;
+        for i in 1..2000 {
+            let next = s.breakpoint_after(b).unwrap();
+            assert_eq!(next, s.breakpoint(i), "breakpoint {i}");
+            let before = f64::from_bits(next.to_bits() - 1);
+            assert_eq!(s.breakpoint_after(before), Some(next), "an ulp before {i}");
+            let after = f64::from_bits(next.to_bits() + 1);
+            assert_eq!(
+                s.breakpoint_after(after),
+                Some(s.breakpoint(i + 1)),
+                "an ulp after {i}"
+            );
+            // even breakpoints start a slow stroke (+0.1), odd ones a fast one (-0.3)
+            let (left, right) = if i % 2 == 0 { (-0.3, 0.1) } else { (0.1, -0.3) };
+            assert_eq!(s.vx_mps(next), right, "right-continuous at {i}");
+            assert_eq!(s.vx_mps(before), left, "left of {i}");
+            b = next;
+        }
         // mean velocity over a period is zero
         let n = 4000;
         let mean: f64 = (0..n)

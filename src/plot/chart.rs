@@ -200,6 +200,9 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
         };
         let line = DashedLineSeries::new(vec![(x, y0), (x, y1)], 6, 4, REFERENCE.stroke_width(1));
         ch.draw_series(line).map_err(e)?;
+        if label.is_empty() {
+            continue;
+        }
         let right = x > x0 + 0.7 * (x1 - x0);
         let (h, dx) = if right {
             (HPos::Right, -5)
@@ -222,6 +225,9 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
         };
         let line = DashedLineSeries::new(vec![(x0, y), (x1, y)], 6, 4, REFERENCE.stroke_width(1));
         ch.draw_series(line).map_err(e)?;
+        if label.is_empty() {
+            continue;
+        }
         let t = Text::new(
             label.clone(),
             (-5, -4),

@@ -1,0 +1,146 @@
+//! The sketch of the effective-mass chapter: the stick on the plate, the friction cone
+//! at C, and the impulse directions of the two models at the chosen angle.
+
+use crate::plot::{color, font, Drawing, GRID, LABEL_PX, TICK_PX, TITLE_PX};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// Stick at `theta_rad` (length 1), friction coefficient `mu`, impulse ratios
+/// `J_l/J_v` of the point-mass model and of the uniform rod.
+pub struct Sketch {
+    /// Lean angle from the vertical (rad).
+    pub theta_rad: f64,
+    /// Friction coefficient (1).
+    pub mu: f64,
+    /// J_l/J_v of the point-mass model.
+    pub ratio_point_mass: f64,
+    /// J_l/J_v of the uniform rod.
+    pub ratio_rod: f64,
+}
+
+/// A polyline in data units.
+type Path = Vec<(f64, f64)>;
+
+/// An arrow from `from` along the unit direction `u` with length `len` (data units).
+fn arrow(from: (f64, f64), u: (f64, f64), len: f64) -> (Path, Path) {
+    let tip = (from.0 + len * u.0, from.1 + len * u.1);
+    let (h, w) = (0.07, 0.035);
+    let base = (tip.0 - h * u.0, tip.1 - h * u.1);
+    let n = (-u.1, u.0);
+    let head = vec![
+        tip,
+        (base.0 + w * n.0, base.1 + w * n.1),
+        (base.0 - w * n.0, base.1 - w * n.1),
+    ];
+    (vec![from, base], head)
+}
+
+fn unit(x: f64, y: f64) -> (f64, f64) {
+    let r = x.hypot(y);
+    (x / r, y / r)
+}
+
+impl Drawing for Sketch {
+    fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Result<(), String> {
+        let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+        let (w, h) = area.dim_in_pixel();
+        // Equal scales: x from -1.1 to 1.1, y from -0.15 up to what the aspect allows.
+        let scale = 2.2 / (w as f64 - 100.0).max(10.0);
+        let y1 = -0.15 + scale * (h as f64 - 130.0).max(10.0);
+        let title = format!(
+            "Impulse at C: theta = {:.1} deg, mu = {}",
+            self.theta_rad.to_degrees(),
+            crate::report::fmt_num(self.mu)
+        );
+        let mut ch = ChartBuilder::on(area)
+            .caption(title, font(TITLE_PX))
+            .margin(18)
+            .x_label_area_size(50)
+            .y_label_area_size(60)
+            .build_cartesian_2d(-1.1..1.1, -0.15..y1)
+            .map_err(e)?;
+        ch.configure_mesh()
+            .bold_line_style(GRID.stroke_width(1))
+            .light_line_style(TRANSPARENT)
+            .x_desc("x (stick lengths)")
+            .y_desc("z (stick lengths)")
+            .axis_desc_style(font(LABEL_PX))
+            .label_style(font(TICK_PX))
+            .draw()
+            .map_err(e)?;
+        let reach = 0.95 * y1.min(1.3);
+        let cone = color(2);
+        // Cut the cone where it would leave the plot (half-width 1.1 at most).
+        let top = if self.mu * reach > 1.1 {
+            1.1 / self.mu
+        } else {
+            reach
+        };
+        let tri = vec![(0.0, 0.0), (-self.mu * top, top), (self.mu * top, top)];
+        ch.draw_series(std::iter::once(Polygon::new(tri, cone.mix(0.25).filled())))
+            .map_err(e)?
+            .label("friction cone |J_l| <= mu J_v (C holds inside)")
+            .legend(move |(x, y)| {
+                Rectangle::new([(x, y - 7), (x + 22, y + 7)], cone.mix(0.4).filled())
+            });
+        let grey = RGBColor(120, 120, 120);
+        ch.draw_series(LineSeries::new(
+            vec![(-1.1, 0.0), (1.1, 0.0)],
+            grey.stroke_width(4),
+        ))
+        .map_err(e)?;
+        let (s, c) = self.theta_rad.sin_cos();
+        let black = RGBColor(0, 0, 0);
+        ch.draw_series(LineSeries::new(
+            vec![(0.0, 0.0), (s, c)],
+            black.stroke_width(6),
+        ))
+        .map_err(e)?
+        .label("stick C-P")
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], black.stroke_width(6)));
+        // P above the stick's end; C below the plate, on the side away from the lean.
+        let side = if s >= 0.0 { HPos::Right } else { HPos::Left };
+        let dx = if s >= 0.0 { -10 } else { 10 };
+        for (t, at, off, pos) in [
+            ("P", (s, c), (8, -8), Pos::new(HPos::Left, VPos::Bottom)),
+            ("C", (0.0, 0.0), (dx, 8), Pos::new(side, VPos::Top)),
+        ] {
+            let text = Text::new(t, off, font(LABEL_PX).pos(pos));
+            ch.plotting_area()
+                .draw(&(EmptyElement::at(at) + text))
+                .map_err(e)?;
+        }
+        for (k, (ratio, name)) in [
+            (self.ratio_point_mass, "point mass: J_l/J_v = q"),
+            (self.ratio_rod, "uniform rod: J_l/J_v = 3q/(4+q^2)"),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let col = color(k);
+            let (shaft, head) = arrow((0.0, 0.0), unit(ratio, 1.0), 0.75 * reach);
+            ch.draw_series(LineSeries::new(shaft, col.stroke_width(3)))
+                .map_err(e)?
+                .label(format!("{name} = {}", crate::report::fmt_num(ratio)))
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 22, y)], col.stroke_width(3))
+                });
+            ch.draw_series(std::iter::once(Polygon::new(head, col.filled())))
+                .map_err(e)?;
+        }
+        ch.configure_series_labels()
+            .position(if s >= 0.0 {
+                SeriesLabelPosition::UpperLeft
+            } else {
+                SeriesLabelPosition::UpperRight
+            })
+            .margin(12)
+            .border_style(BLACK.mix(0.5))
+            .background_style(WHITE.mix(0.92))
+            .label_font(font(TICK_PX))
+            .draw()
+            .map_err(e)?;
+        Ok(())
+    }
+}

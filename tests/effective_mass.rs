@@ -1,0 +1,221 @@
+//! Chapter `effective-mass` (document section 2): the effective mass matrix of the
+//! contact point C of a leaning stick and the sideways impulse of a vertical collision.
+//!
+//! Physics checked: the uniform rod's mass matrix is diag(m, m/4) in stick coordinates
+//! at every angle and for every m and L (rigid-body mechanics, `I_G = m L^2/12`); the
+//! jammed-collision impulse ratio is `q` for a tip mass and `3q/(4+q^2)` for the rod
+//! (closed forms derived in the course text from `M = m e e^T + (m/4) n n^T`), odd in
+//! the lean angle; the rod's maximum 3/4 at `q = 2`; and the CLI contract with one
+//! bad-input test per flag.
+
+use locomotion_workbook::chapters::effective_mass::{
+    golden_max, rod_lock_angles_closed_form, rod_ratio,
+};
+use locomotion_workbook::cli::run_cli;
+use locomotion_workbook::physics::rigid::{
+    effective_mass, impulse_for_velocity_change, in_stick_frame, jam_ratio, rod_contact_offset,
+    tip_contact_offset, RigidBody,
+};
+use locomotion_workbook::report::fmt_num;
+use nalgebra::Vector2;
+use serde_json::Value;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let (mut out, mut err) = (Vec::new(), Vec::new());
+    let mut full = vec![
+        "workbook",
+        "effective-mass",
+        "--quick",
+        "--json",
+        "--no-figures",
+    ];
+    full.extend_from_slice(args);
+    let code = run_cli(full, &mut out, &mut err);
+    (
+        code,
+        String::from_utf8(out).unwrap(),
+        String::from_utf8(err).unwrap(),
+    )
+}
+
+fn report(args: &[&str]) -> Value {
+    let (code, out, err) = run(args);
+    assert_eq!(code, 0, "stderr: {err}");
+    serde_json::from_str(&out).unwrap()
+}
+
+#[test]
+fn default_scene_reproduces_the_documents_45_degree_example() {
+    let r = report(&[]);
+    let res = r["results"].as_object().unwrap();
+    let keys: Vec<&str> = res.keys().map(String::as_str).collect();
+    assert_eq!(
+        keys,
+        [
+            "ratio_point_mass",
+            "ratio_uniform_rod",
+            "m_parallel_over_m",
+            "m_perp_over_m",
+            "best_angle_uniform_rod_deg",
+            "self_locking"
+        ]
+    );
+    // Closed forms at q = tan 45 deg = 1: q = 1, 3q/(4+q^2) = 3/5; diag(m, m/4); atan 2.
+    // 1e-12: rounding of a 2x2 inversion; 1e-6 deg: golden-section argmax of a flat maximum.
+    let f = |k: &str| res[k].as_f64().unwrap();
+    assert!((f("ratio_point_mass") - 1.0).abs() < 1e-12);
+    assert!((f("ratio_uniform_rod") - 0.6).abs() < 1e-12);
+    assert!((f("m_parallel_over_m") - 1.0).abs() < 1e-12);
+    assert!((f("m_perp_over_m") - 0.25).abs() < 1e-12);
+    assert!((f("best_angle_uniform_rod_deg") - 2f64.atan().to_degrees()).abs() < 1e-6);
+    // tan 45 deg = 1 > mu = 0.4: not self-locking.
+    assert_eq!(res["self_locking"], Value::Bool(false));
+    for c in r["claims"].as_array().unwrap() {
+        assert_ne!(c["verdict"], "failed", "{c}");
+    }
+}
+
+#[test]
+fn self_locking_follows_tan_theta_below_mu_and_is_mirror_symmetric() {
+    // tan 20 deg = 0.364 < 0.4 < tan 25 deg = 0.466.
+    for (angle, mu, expected) in [
+        ("20", "0.4", true),
+        ("-20", "0.4", true),
+        ("25", "0.4", false),
+        ("0", "0", false),
+    ] {
+        let r = report(&["--angle-deg", angle, "--mu", mu]);
+        assert_eq!(
+            r["results"]["self_locking"],
+            Value::Bool(expected),
+            "{angle} {mu}"
+        );
+    }
+    let plus = report(&["--angle-deg", "30"]);
+    let minus = report(&["--angle-deg", "-30"]);
+    for k in ["ratio_point_mass", "ratio_uniform_rod"] {
+        let (a, b) = (
+            plus["results"][k].as_f64().unwrap(),
+            minus["results"][k].as_f64().unwrap(),
+        );
+        assert!((a + b).abs() < 1e-12 && a > 0.0, "{k}: {a} {b}");
+    }
+}
+
+#[test]
+fn rod_mass_matrix_and_ratios_do_not_depend_on_mass_or_length() {
+    // diag(m, m/4) and 3q/(4+q^2) hold for any m, L (dimensional analysis); 1e-12
+    // relative is the rounding of the inversion (condition number <= 16).
+    for (m, l) in [(0.01, 0.01), (1.0, 0.15), (70.0, 2.0)] {
+        for deg in [1.0f64, 33.0, 60.0, 88.0] {
+            let t = deg.to_radians();
+            let q = t.tan();
+            let rod = RigidBody::uniform_rod(m, l);
+            let mm = effective_mass(&rod, rod_contact_offset(t, l));
+            let s = in_stick_frame(&mm, t);
+            assert!((s[(0, 0)] / m - 1.0).abs() < 1e-12 && (s[(1, 1)] / m - 0.25).abs() < 1e-12);
+            assert!((jam_ratio(&mm) - 3.0 * q / (4.0 + q * q)).abs() < 1e-12);
+            let pm = effective_mass(&RigidBody::point_mass(m), tip_contact_offset(t, l));
+            assert!((jam_ratio(&pm) / q - 1.0).abs() < 1e-12);
+        }
+    }
+}
+
+#[test]
+fn jammed_impulse_keeps_c_from_sliding_and_conserves_momentum() {
+    // Second method: the Newton-Euler solve. After the impulse, C moves vertically only
+    // (no slip) and the angular momentum about C is unchanged (J acts at C).
+    let (m, l) = (1.0, 0.15);
+    let rod = RigidBody::uniform_rod(m, l);
+    for deg in [10.0f64, 45.0, 70.0] {
+        let t = deg.to_radians();
+        let r = rod_contact_offset(t, l);
+        let imp = impulse_for_velocity_change(&rod, r, Vector2::new(0.0, 1.0)).unwrap();
+        let dv_c = imp.dv_g + imp.domega * Vector2::new(-r.y, r.x);
+        assert!(dv_c.x.abs() < 1e-12 && (dv_c.y - 1.0).abs() < 1e-12);
+        // Angular momentum about C: I dw + m (G - C) x dv_G = 0, with G - C = -r.
+        let g = -r;
+        let l_c = rod.inertia_kgm2 * imp.domega + m * (g.x * imp.dv_g.y - g.y * imp.dv_g.x);
+        assert!(l_c.abs() < 1e-12, "{l_c}");
+        assert!(imp.impulse.y > 0.0 && imp.impulse.x > 0.0);
+    }
+}
+
+#[test]
+fn golden_section_and_rod_locking_angles_match_closed_forms() {
+    // d/dq 3q/(4+q^2) = 0 at q = 2; the golden section works on the mass-matrix ratio.
+    let best = golden_max(rod_ratio, 0.0, 1.5, 1e-12);
+    assert!((best - 2f64.atan()).abs() < 1e-7, "{best}");
+    // mu = 0.6: mu q^2 - 3q + 4 mu = 0 is q^2 - 5q + 4 = 0, roots q = 1 and q = 4
+    // (3/5 = 12/20 = 0.6): the rod slips only for 45 deg < theta < atan 4 = 75.96 deg.
+    let (a1, a2) = rod_lock_angles_closed_form(0.6).unwrap();
+    assert!((a1 - std::f64::consts::FRAC_PI_4).abs() < 1e-14 && (a2 - 4f64.atan()).abs() < 1e-14);
+    for a in [a1, a2] {
+        assert!((rod_ratio(a) - 0.6).abs() < 1e-12, "{a}");
+    }
+    assert!(
+        rod_lock_angles_closed_form(0.75).is_none() && rod_lock_angles_closed_form(0.0).is_none()
+    );
+}
+
+#[test]
+fn large_mu_and_the_summary_snapshot() {
+    // mu >= 3/4 exceeds the rod's largest ratio: the approximation claim says so.
+    let r = report(&["--mu", "0.8"]);
+    let c = r["claims"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["id"] == "self-locking-bound")
+        .unwrap();
+    assert_eq!(c["verdict"], "approximation");
+    assert!(c["expected"].as_str().unwrap().contains("every angle"));
+    let r = report(&[]);
+    let mut lines: Vec<String> = r["claims"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            format!(
+                "{} {}",
+                c["id"].as_str().unwrap(),
+                c["verdict"].as_str().unwrap()
+            )
+        })
+        .collect();
+    for (k, v) in r["results"].as_object().unwrap() {
+        let s = v
+            .as_f64()
+            .map(|x| format!("{x:.4}"))
+            .unwrap_or_else(|| v.to_string());
+        lines.push(format!("{k} = {s}"));
+    }
+    lines.push(format!(
+        "rod lock angles mu=0.4: {:?}",
+        rod_lock_angles_closed_form(0.4)
+            .map(|(a, b)| (fmt_num(a.to_degrees()), fmt_num(b.to_degrees())))
+    ));
+    insta::assert_snapshot!("effective_mass_summary", lines.join("\n"));
+}
+
+#[test]
+fn bad_input_is_one_line_naming_the_flag_with_exit_code_2() {
+    for (flag, value) in [
+        ("--angle-deg", "NaN"),
+        ("--angle-deg", "inf"),
+        ("--angle-deg", "90"),
+        ("--angle-deg", "-90"),
+        ("--angle-deg", "135"),
+        ("--angle-deg", "forty"),
+        ("--mu", "-0.1"),
+        ("--mu", "NaN"),
+        ("--mu", "inf"),
+        ("--mu", "x"),
+    ] {
+        let (code, out, err) = run(&[flag, value]);
+        assert_eq!(code, 2, "{flag} {value}");
+        assert!(out.is_empty(), "{flag} {value}: stdout {out}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{flag} {value}: {err}");
+        assert!(err.contains(flag), "{flag} {value}: {err}");
+    }
+}
