@@ -188,16 +188,18 @@ impl<P: PlateMotion> PlateMotion for Mirrored<P> {
 
 /// A plate whose breakpoints survive rounding (a wrapper for event-driven models).
 ///
-/// Two things go wrong with the bare [`Sawtooth`] at its breakpoints, because
-/// `t - floor(t/T) T` rounds: (1) the velocity at the float returned by
-/// [`PlateMotion::breakpoint_after`] can still be the old stroke's, and (2) a time that
-/// lands a few ulps *before* a breakpoint (a sum of fixed steps, `0.09 + 32 x 0.000625 =
-/// 0.10999999999999999`) counts as "at" it, so `breakpoint_after` returns the next one and
-/// the stroke change is skipped. This wrapper makes the float `b` returned by the plate
-/// the exact dividing line: within `d = 1e-12 T + 32 ulps(t)` of `b` it evaluates
-/// velocity and acceleration safely on the side of `b` where `t` lies (times `>= b` get
-/// the new stroke), and it returns `b` itself to any time before it, so a driver steps
-/// onto it.
+/// Two things went wrong with the bare [`Sawtooth`] at its breakpoints before it got
+/// canonical breakpoint floats (main, commit 7124b36), because `t - floor(t/T) T`
+/// rounds: (1) the velocity at the float returned by [`PlateMotion::breakpoint_after`]
+/// could still be the old stroke's, and (2) a time that lands a few ulps *before* a
+/// breakpoint (a sum of fixed steps, `0.09 + 32 x 0.000625 = 0.10999999999999999`)
+/// counted as "at" it, so `breakpoint_after` returned the next one and the stroke change
+/// was skipped. The sawtooth is now exact; this wrapper keeps any piecewise plate safe:
+/// it makes one float `b` per breakpoint the dividing line (within
+/// `d = 1e-12 T + 32 ulps(t)` of `b` it evaluates velocity and acceleration on the side
+/// of `b` where `t` lies; times `>= b` get the new piece) and returns `b` itself to any
+/// time before it, so a driver steps onto it. On the canonical sawtooth it changes
+/// nothing.
 #[derive(Debug, Clone, Copy)]
 pub struct Snapped<'a, P: ?Sized>(pub &'a P);
 
