@@ -38,8 +38,9 @@
 //! friction force in a mode is a known function of time: in slip with `s = +1` (right)
 //! or `-1` (left), `t - t0 = tau`,
 //! `w(t) = w0 + (b - s mu g) tau - s mu (v_zp(t) - v_zp(t0)) - (v_xp(t) - v_xp(t0))` and
-//! `u(t) = u0 + w0 tau + (b - s mu g) tau^2/2 - s mu (z_p(t) - z_p(t0) - v_zp(t0) tau)
-//! - (x_p(t) - x_p(t0) - v_xp(t0) tau)`; flight is ballistic in absolute coordinates.
+//! `u(t) = u0 + w0 tau + (b - s mu g) tau^2/2 - s mu (z_p(t) - z_p(t0) - v_zp(t0) tau) -
+//! (x_p(t) - x_p(t0) - v_xp(t0) tau)`; flight is ballistic in absolute coordinates.
+//!
 //! These go through [`HybridSystem::exact`] when [`BlockSystem::closed_forms`] is true
 //! (the default); the guards are then sampled every `period / samples_per_period` and
 //! crossings located by the driver's Illinois search on the closed form. The viscous
