@@ -2,23 +2,11 @@
 //! `list`, `all --quick --json`, `render --check`, exit codes, and one clear stderr line
 //! for bad global input. Chapter-specific flags are tested in each chapter's own file.
 
+use common::{assert_bad_input, run};
 use locomotion_workbook::chapters::CHAPTERS;
-use locomotion_workbook::cli::run_cli;
 use serde_json::Value;
 
-/// Runs the CLI with `args` (after the program name); returns (code, stdout, stderr).
-fn run(args: &[&str]) -> (i32, String, String) {
-    let mut out = Vec::new();
-    let mut err = Vec::new();
-    let mut full = vec!["workbook"];
-    full.extend_from_slice(args);
-    let code = run_cli(full, &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-    )
-}
+mod common;
 
 const CONTRACT_KEYS: [&str; 7] = [
     "chapter", "title", "section", "params", "claims", "results", "figures",
@@ -135,11 +123,10 @@ fn unknown_chapter_is_bad_input() {
 #[test]
 fn bad_gravity_is_rejected_with_one_line_naming_the_flag() {
     for bad in ["NaN", "-9.81", "0", "inf", "abc"] {
-        let (code, out, err) = run(&["effective-mass", "--g-mps2", bad, "--no-figures"]);
-        assert_eq!(code, 2, "{bad}");
-        assert!(out.is_empty(), "{bad}: stdout {out}");
-        assert_eq!(err.trim_end().lines().count(), 1, "{bad}: {err}");
-        assert!(err.contains("--g-mps2"), "{bad}: {err}");
+        assert_bad_input(
+            &["effective-mass", "--g-mps2", bad, "--no-figures"],
+            "--g-mps2",
+        );
     }
 }
 

@@ -8,10 +8,11 @@
 //! the lean angle; the rod's maximum 3/4 at `q = 2`; and the CLI contract with one
 //! bad-input test per flag.
 
+mod common;
+
 use locomotion_workbook::chapters::effective_mass::{
     golden_max, rod_lock_angles_closed_form, rod_ratio,
 };
-use locomotion_workbook::cli::run_cli;
 use locomotion_workbook::physics::rigid::{
     effective_mass, impulse_for_velocity_change, in_stick_frame, jam_ratio, rod_contact_offset,
     tip_contact_offset, RigidBody,
@@ -21,20 +22,9 @@ use nalgebra::Vector2;
 use serde_json::Value;
 
 fn run(args: &[&str]) -> (i32, String, String) {
-    let (mut out, mut err) = (Vec::new(), Vec::new());
-    let mut full = vec![
-        "workbook",
-        "effective-mass",
-        "--quick",
-        "--json",
-        "--no-figures",
-    ];
-    full.extend_from_slice(args);
-    let code = run_cli(full, &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
+    common::run_with(
+        &["effective-mass", "--quick", "--json", "--no-figures"],
+        args,
     )
 }
 
@@ -212,10 +202,16 @@ fn bad_input_is_one_line_naming_the_flag_with_exit_code_2() {
         ("--mu", "inf"),
         ("--mu", "x"),
     ] {
-        let (code, out, err) = run(&[flag, value]);
-        assert_eq!(code, 2, "{flag} {value}");
-        assert!(out.is_empty(), "{flag} {value}: stdout {out}");
-        assert_eq!(err.trim_end().lines().count(), 1, "{flag} {value}: {err}");
-        assert!(err.contains(flag), "{flag} {value}: {err}");
+        common::assert_bad_input(
+            &[
+                "effective-mass",
+                "--quick",
+                "--json",
+                "--no-figures",
+                flag,
+                value,
+            ],
+            flag,
+        );
     }
 }

@@ -7,8 +7,9 @@
 //! Coulomb cone and never doing positive work at every step; the CLI contract and the
 //! bad-input lines; a snapshot of the quick-mode summary.
 
+mod common;
+
 use locomotion_workbook::chapters::horizontal_shaking::drift::{steady_drift, Scene};
-use locomotion_workbook::cli::run_cli;
 use locomotion_workbook::numerics::hybrid::Segment;
 use locomotion_workbook::physics::block::{
     simulate_block, simulate_block_observed, BlockMode, BlockOptions, BlockSystem, Observer,
@@ -29,15 +30,7 @@ fn scene(gamma_x: f64, bias: f64) -> Scene {
 }
 
 fn run(args: &[&str]) -> (i32, String, String) {
-    let (mut out, mut err) = (Vec::new(), Vec::new());
-    let mut full = vec!["workbook", "horizontal-shaking"];
-    full.extend_from_slice(args);
-    let code = run_cli(full, &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-    )
+    common::run_with(&["horizontal-shaking"], args)
 }
 
 #[test]
@@ -186,11 +179,10 @@ fn bad_inputs_give_one_line_naming_the_flag() {
         ("--bias", "-0.1"),
         ("--bias", "NaN"),
     ] {
-        let (code, out, err) = run(&[flag, bad, "--quick", "--no-figures"]);
-        assert_eq!(code, 2, "{flag} {bad}");
-        assert!(out.is_empty());
-        assert_eq!(err.trim_end().lines().count(), 1, "{flag} {bad}: {err}");
-        assert!(err.contains(flag), "{err}");
+        common::assert_bad_input(
+            &["horizontal-shaking", flag, bad, "--quick", "--no-figures"],
+            flag,
+        );
     }
 }
 

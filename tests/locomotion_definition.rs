@@ -9,25 +9,15 @@
 //! collinear media, points on edges) and on near-degenerate instances where the naive
 //! floating-point orientation gets the sign wrong.
 
-use locomotion_workbook::cli::run_cli;
+mod common;
+
 use locomotion_workbook::physics::locomotion::{classify, hull, orient2d, Position, V2};
 use serde_json::Value;
 
 fn run(args: &[&str]) -> (i32, String, String) {
-    let (mut out, mut err) = (Vec::new(), Vec::new());
-    let mut full = vec![
-        "workbook",
-        "locomotion-definition",
-        "--quick",
-        "--json",
-        "--no-figures",
-    ];
-    full.extend_from_slice(args);
-    let code = run_cli(full, &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
+    common::run_with(
+        &["locomotion-definition", "--quick", "--json", "--no-figures"],
+        args,
     )
 }
 
@@ -294,11 +284,16 @@ fn bad_input_is_one_line_naming_the_flag_with_exit_code_2() {
             "",
         ] {
             let arg = format!("{flag}={value}");
-            let (code, out, err) = run(&[&arg]);
-            assert_eq!(code, 2, "{arg}");
-            assert!(out.is_empty(), "{arg}: stdout {out}");
-            assert_eq!(err.trim_end().lines().count(), 1, "{arg}: {err}");
-            assert!(err.contains(flag), "{arg}: {err}");
+            common::assert_bad_input(
+                &[
+                    "locomotion-definition",
+                    "--quick",
+                    "--json",
+                    "--no-figures",
+                    &arg,
+                ],
+                flag,
+            );
         }
     }
 }

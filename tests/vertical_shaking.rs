@@ -9,9 +9,10 @@
 //! that never create relative kinetic energy (invariants); the CLI contract, bad
 //! inputs, and a snapshot of the quick-mode summary.
 
+mod common;
+
 use locomotion_workbook::chapters::vertical_shaking::regimes::regime_at;
 use locomotion_workbook::chapters::vertical_shaking::scene::{run as run_scene, Model, Scene};
-use locomotion_workbook::cli::run_cli;
 use locomotion_workbook::numerics::hybrid::Segment;
 use locomotion_workbook::physics::block::{
     simulate_block_observed, BlockMode, BlockOptions, BlockSystem, Observer,
@@ -32,15 +33,7 @@ fn scene(gamma: f64) -> Scene {
 }
 
 fn run(args: &[&str]) -> (i32, String, String) {
-    let (mut out, mut err) = (Vec::new(), Vec::new());
-    let mut full = vec!["workbook", "vertical-shaking"];
-    full.extend_from_slice(args);
-    let code = run_cli(full, &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-    )
+    common::run_with(&["vertical-shaking"], args)
 }
 
 #[test]
@@ -207,11 +200,10 @@ fn bad_inputs_give_one_line_naming_the_flag() {
         ("--frequency-hz", "-30"),
         ("--frequency-hz", "0"),
     ] {
-        let (code, out, err) = run(&[flag, bad, "--quick", "--no-figures"]);
-        assert_eq!(code, 2, "{flag} {bad}");
-        assert!(out.is_empty());
-        assert_eq!(err.trim_end().lines().count(), 1, "{flag} {bad}: {err}");
-        assert!(err.contains(flag), "{err}");
+        common::assert_bad_input(
+            &["vertical-shaking", flag, bad, "--quick", "--no-figures"],
+            flag,
+        );
     }
     // Gamma <= 1 says why.
     let (_, _, err) = run(&["--gamma", "0.9", "--quick", "--no-figures"]);

@@ -1,14 +1,149 @@
-//! Chapter `asymmetric-shaking`: not built yet (see the registry in `chapters/mod.rs`).
+//! Chapter `asymmetric-shaking` (document section 3.2): linear friction cannot make a
+//! block walk on a zero-mean shaken plate, Coulomb friction can.
+//!
+//! Closed forms: `physics::sawtooth` (two-velocity sawtooth, linear orbit) and
+//! `physics::sawtooth::biharmonic` (smooth drive). Simulation: the event-driven block
+//! model of `physics::block` ([`sims`]). Claims: [`claims`]. Figures: [`figures`].
 
-use super::Context;
-use crate::error::Result;
+pub mod claims;
+mod figures;
+pub mod sims;
+
+use super::{info, Context};
+use crate::error::{check, positive, Result, WorkbookError};
+use crate::physics::plate::{PlateMotion, Sawtooth};
+use crate::physics::sawtooth::mu_min_for_lock;
 use crate::report::ChapterReport;
 
-/// Flags of the chapter (none yet).
-#[derive(clap::Args, Debug, Clone, Default)]
-pub struct Args {}
+/// The chapter id.
+pub const ID: &str = "asymmetric-shaking";
 
-/// Runs the chapter: not built yet, so it reports no claims.
-pub fn run(_args: &Args, _ctx: &Context) -> Result<ChapterReport> {
-    Ok(super::not_built("asymmetric-shaking"))
+/// Longest transient (whole periods from rest to the first stick) the chapter accepts:
+/// bounds `--mu` from below.
+pub const MAX_LOCK_PERIODS: f64 = 1e4;
+
+/// Largest friction coefficient accepted (dimensionless).
+pub const MU_MAX: f64 = 10.0;
+
+/// Largest ratio of the fast to the slow speed accepted.
+pub const MAX_SPEED_RATIO: f64 = 1e3;
+
+/// Flags of the chapter: the two-velocity sawtooth and the two friction laws.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Args {
+    /// Coulomb friction coefficient mu between block and plate (dimensionless, <= 10 and
+    /// large enough to reach the steady state within 1e4 periods; default 0.3).
+    #[arg(long, default_value_t = 0.3)]
+    pub mu: f64,
+    /// Plate speed of the slow stroke, towards +x (m/s, > 0; default 0.1).
+    #[arg(long, default_value_t = 0.1)]
+    pub slow_velocity_mps: f64,
+    /// Plate speed of the fast stroke back, towards -x (m/s, above the slow speed and at
+    /// most 1000 times it; default 0.3).
+    #[arg(long, default_value_t = 0.3)]
+    pub fast_velocity_mps: f64,
+    /// Duration of the slow stroke (s, > 0; default 0.03). The fast stroke lasts
+    /// slow speed x slow duration / fast speed (zero net displacement).
+    #[arg(long, default_value_t = 0.03)]
+    pub slow_duration_s: f64,
+    /// Duration of the fast stroke (s); optional: if given it must equal
+    /// slow speed x slow duration / fast speed (default: computed, 0.01 s).
+    #[arg(long)]
+    pub fast_duration_s: Option<f64>,
+    /// Linear viscous friction coefficient per unit mass c for the linear law
+    /// F = -m c v_rel (1/s; 0.01/T <= c <= 1e4/T with T the period; default 30).
+    #[arg(long, default_value_t = 30.0)]
+    pub viscous_c: f64,
+}
+
+/// The validated scene.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scene {
+    /// The plate.
+    pub saw: Sawtooth,
+    /// Friction coefficient mu.
+    pub mu: f64,
+    /// Gravity g (m/s^2).
+    pub g_mps2: f64,
+    /// Viscous coefficient c (1/s).
+    pub c_per_s: f64,
+}
+
+impl Scene {
+    /// The friction bound `k = mu g` (m/s^2).
+    pub fn k_mps2(&self) -> f64 {
+        self.mu * self.g_mps2
+    }
+}
+
+/// Checks every flag (one line naming the flag, value and valid range on error).
+pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
+    if !(g_mps2.is_finite() && g_mps2 > 0.0) {
+        return Err(WorkbookError::bad_input(
+            "--g-mps2",
+            g_mps2,
+            "a finite number > 0 (m/s^2)",
+        ));
+    }
+    let vs = positive("--slow-velocity-mps", a.slow_velocity_mps, "m/s")?;
+    let vf = check(
+        "--fast-velocity-mps",
+        a.fast_velocity_mps,
+        |v| v > vs && v <= MAX_SPEED_RATIO * vs,
+        &format!(
+            "{vs} < value <= {} (m/s: above the slow speed, at most 1000 times it)",
+            MAX_SPEED_RATIO * vs
+        ),
+    )?;
+    let ts = positive("--slow-duration-s", a.slow_duration_s, "s")?;
+    let saw = Sawtooth {
+        slow_velocity_mps: vs,
+        fast_velocity_mps: vf,
+        slow_duration_s: ts,
+    };
+    let tf = saw.fast_duration_s();
+    if let Some(given) = a.fast_duration_s {
+        // Zero net displacement: v_s t_s = v_f t_f, to 1e-9 relative (typed decimals).
+        check(
+            "--fast-duration-s",
+            given,
+            |t| t > 0.0 && (t - tf).abs() <= 1e-9 * tf,
+            &format!("{tf} s = slow speed x slow duration / fast speed (zero net displacement)"),
+        )?;
+    }
+    let mu_min = mu_min_for_lock(&saw, g_mps2, MAX_LOCK_PERIODS);
+    let mu = check("--mu", a.mu, |m| m >= mu_min && m <= MU_MAX, &format!("{mu_min:.3e} <= mu <= {MU_MAX} (dimensionless; a smaller mu needs more than 1e4 periods to reach the steady state)"))?;
+    let period = saw.period_s();
+    let (c_lo, c_hi) = (0.01 / period, 1e4 / period);
+    let c = check(
+        "--viscous-c",
+        a.viscous_c,
+        |c| c >= c_lo && c <= c_hi,
+        &format!("{c_lo:.4} <= c <= {c_hi:.4e} (1/s; 0.01/T to 1e4/T, T = {period} s)"),
+    )?;
+    Ok(Scene {
+        saw,
+        mu,
+        g_mps2,
+        c_per_s: c,
+    })
+}
+
+/// Runs the chapter.
+pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
+    let scene = validate(args, ctx.g())?;
+    let mut r = info(ID).expect("registered chapter").report();
+    r.param("mu", scene.mu);
+    r.param("slow_velocity_mps", scene.saw.slow_velocity_mps);
+    r.param("fast_velocity_mps", scene.saw.fast_velocity_mps);
+    r.param("slow_duration_s", scene.saw.slow_duration_s);
+    r.param("fast_duration_s", scene.saw.fast_duration_s());
+    r.param("viscous_c_per_s", scene.c_per_s);
+    r.param("g_mps2", scene.g_mps2);
+    let traces = claims::check_all(&scene, ctx.quick, ctx.figure_dir(ID).is_some(), &mut r);
+    if let Some(dir) = ctx.figure_dir(ID) {
+        r.figures
+            .extend(figures::draw(&scene, ctx.quick, &traces, &dir)?);
+    }
+    Ok(r)
 }

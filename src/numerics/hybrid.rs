@@ -292,7 +292,9 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         let bp = sys.breakpoint_after(t).filter(|&b| b < t_end);
         let horizon = bp.unwrap_or(t_end);
         let max_step = sys.max_step(mode, t, &y);
-        let t_lim = if t + max_step < horizon {
+        // A step that would stop a few ulps short of the horizon (a breakpoint or the
+        // end) goes onto it instead: no sliver steps before a breakpoint.
+        let t_lim = if t + max_step < horizon - 64.0 * f64::EPSILON * horizon.abs() {
             t + max_step
         } else {
             horizon

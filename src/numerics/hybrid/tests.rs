@@ -295,3 +295,59 @@ fn breakpoints_are_stepped_onto_exactly() {
     let total: f64 = run.mode_time_s.iter().map(|(_, t)| t).sum();
     assert!((total - 3.25).abs() < 1e-14);
 }
+
+/// Triangle wave whose model asks for steps that end an ulp or two before each
+/// breakpoint: the driver must go onto the breakpoint, not leave a sliver step that
+/// the adaptive integrator would refuse.
+struct SliverTriangle;
+
+impl HybridSystem<1> for SliverTriangle {
+    type Mode = i8;
+    type Stop = ();
+    fn flow(&self, m: i8, t: f64, y: &[f64; 1]) -> [f64; 1] {
+        Triangle.flow(m, t, y)
+    }
+    fn guard_count(&self, _m: i8) -> usize {
+        0
+    }
+    fn guard(&self, _m: i8, _i: usize, _t: f64, _y: &[f64; 1]) -> f64 {
+        unreachable!()
+    }
+    fn direction(&self, _m: i8, _i: usize) -> Direction {
+        Direction::Either
+    }
+    fn on_event(&self, _m: i8, _i: usize, _t: f64, _y: &[f64; 1]) -> Transition<i8, (), 1> {
+        unreachable!()
+    }
+    fn max_step(&self, _m: i8, t: f64, _y: &[f64; 1]) -> f64 {
+        let b = self.breakpoint_after(t).unwrap();
+        let short = f64::from_bits((b - t).to_bits() - 2);
+        if short > 0.0 {
+            short
+        } else {
+            f64::INFINITY
+        }
+    }
+    fn breakpoint_after(&self, t: f64) -> Option<f64> {
+        Triangle.breakpoint_after(t)
+    }
+    fn on_breakpoint(&self, m: i8, t: f64, y: &[f64; 1]) -> Transition<i8, (), 1> {
+        Triangle.on_breakpoint(m, t, y)
+    }
+}
+
+#[test]
+fn no_sliver_steps_before_breakpoints() {
+    let run = simulate(
+        &SliverTriangle,
+        1,
+        0.0,
+        [0.0],
+        3.25,
+        &Options::default(),
+        &mut (),
+    );
+    assert_eq!(run.outcome, Outcome::Completed);
+    assert!((run.y_end[0] - 0.25).abs() < 1e-14, "{}", run.y_end[0]);
+    assert_eq!(run.event_count, 6);
+}

@@ -144,8 +144,10 @@ impl<P: PlateMotion + ?Sized> HybridSystem<4> for BlockSystem<'_, P> {
         t: f64,
         y: &[f64; 4],
     ) -> Transition<BlockMode, BlockStop, 4> {
-        let (vx_left, vz_left) = self.one_sided_velocity(t, -1.0);
-        let (vx_right, vz_right) = self.one_sided_velocity(t, 1.0);
+        // Left limit as the closed forms read it at a segment's end (the previous piece
+        // is longer than 1e-9 T); right limit: the plate at t (right-continuous).
+        let (vx_left, vz_left) = self.left_limit_velocity(t, f64::INFINITY);
+        let (vx_right, vz_right) = (self.plate.vx_mps(t), self.plate.vz_mps(t));
         let (dvx, dvz) = (vx_right - vx_left, vz_right - vz_left);
         if dvx == 0.0 && dvz == 0.0 {
             return Transition::To { mode, state: *y };

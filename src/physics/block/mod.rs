@@ -38,14 +38,21 @@
 //! friction force in a mode is a known function of time: in slip with `s = +1` (right)
 //! or `-1` (left), `t - t0 = tau`,
 //! `w(t) = w0 + (b - s mu g) tau - s mu (v_zp(t) - v_zp(t0)) - (v_xp(t) - v_xp(t0))` and
-//! `u(t) = u0 + w0 tau + (b - s mu g) tau^2/2 - s mu (z_p(t) - z_p(t0) - v_zp(t0) tau)
-//! - (x_p(t) - x_p(t0) - v_xp(t0) tau)`; flight is ballistic in absolute coordinates.
+//! `u(t) = u0 + w0 tau + (b - s mu g) tau^2/2 - s mu (z_p(t) - z_p(t0) - v_zp(t0) tau) -
+//! (x_p(t) - x_p(t0) - v_xp(t0) tau)`; flight is ballistic in absolute coordinates.
+//!
 //! These go through [`HybridSystem::exact`] when [`BlockSystem::closed_forms`] is true
 //! (the default); the guards are then sampled every `period / samples_per_period` and
 //! crossings located by the driver's Illinois search on the closed form. The viscous
 //! contact mode (and every mode when closed forms are off) is integrated by the driver's
-//! method (Dormand-Prince 5(4) by default). At a breakpoint the closed forms use the
-//! plate's left limits, so the jump is applied once, by [`HybridSystem::on_breakpoint`].
+//! method (Dormand-Prince 5(4) by default). Plates are right-continuous and the driver
+//! never lets a segment cross a breakpoint, so every closed-form segment reads the plate
+//! of its own piece: at its start `t0` the plate at `t0` (on a breakpoint, the piece that
+//! begins there), inside it the plate at `t`, and at an end on a breakpoint the left
+//! limit read inside the segment (never across its start, however short the segment).
+//! The jump is applied once, by [`HybridSystem::on_breakpoint`], which re-decides the
+//! contact mode from the relative velocity in the new piece (absolute velocity is
+//! continuous; a sticking block slips when the plate's velocity jumps).
 //!
 //! # Use
 //! [`simulate_block`] runs a block from a [`BlockStart`] and returns a [`BlockRun`] with
@@ -232,36 +239,41 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
         }
     }
 
-    /// Plate velocity `(v_xp, v_zp)` at the start `t0` of a segment: the right limit
-    /// for plates with breakpoints (a segment may start on one).
+    /// Plate velocity `(v_xp, v_zp)` at the start `t0` of a segment: the plate read at
+    /// `t0` itself (plates are right-continuous: on a breakpoint this is the velocity of
+    /// the piece that begins there, the segment's own piece).
     fn plate_velocity_start(&self, t0: f64) -> (f64, f64) {
-        if self.has_breakpoints {
-            self.one_sided_velocity(t0, 1.0)
-        } else {
-            (self.plate.vx_mps(t0), self.plate.vz_mps(t0))
-        }
+        (self.plate.vx_mps(t0), self.plate.vz_mps(t0))
     }
 
-    /// Plate velocity `(v_xp, v_zp)` at the end `t` of a segment: the left limit for
-    /// plates with breakpoints (a segment may end on one).
-    fn plate_velocity_end(&self, t: f64) -> (f64, f64) {
-        if self.has_breakpoints {
-            self.one_sided_velocity(t, -1.0)
-        } else {
-            (self.plate.vx_mps(t), self.plate.vz_mps(t))
+    /// Plate velocity `(v_xp, v_zp)` at `t` in the piece of a segment that starts at
+    /// `t0 <= t` (the driver never lets a segment cross a breakpoint, so the piece is the
+    /// one containing `t0`). Inside the piece that is the plate at `t`; a segment that
+    /// ends on a breakpoint needs the left limit there, read at a time inside the
+    /// segment ([`BlockSystem::left_limit_velocity`]).
+    fn plate_velocity_in_piece(&self, t0: f64, t: f64) -> (f64, f64) {
+        if self.has_breakpoints && t > t0 {
+            if let Some(b) = self.plate.breakpoint_after(t0) {
+                if t >= b {
+                    return self.left_limit_velocity(t, 0.5 * (t - t0));
+                }
+            }
         }
+        (self.plate.vx_mps(t), self.plate.vz_mps(t))
     }
 
-    /// One-sided limit of the plate velocity at `t` (`side` = -1 left, +1 right), exact
-    /// for piecewise-linear plates and within (1e-9 T)^2 times the jerk otherwise.
-    fn one_sided_velocity(&self, t: f64, side: f64) -> (f64, f64) {
+    /// Left limit of the plate velocity at `t`, read `d = min(1e-9 T, max_back_s)`
+    /// before it and extrapolated with the acceleration there: exact for
+    /// piecewise-linear plates, within `d^2` times the jerk otherwise. `max_back_s`
+    /// keeps the reading inside the piece that ends at `t`.
+    fn left_limit_velocity(&self, t: f64, max_back_s: f64) -> (f64, f64) {
         let p = self.plate;
-        let d = side * 1e-9 * p.period_s();
-        let s = t + d;
+        let d = (1e-9 * p.period_s()).min(max_back_s);
+        let s = t - d;
         (
-            p.vx_mps(s) - d * p.ax_mps2(s),
-            p.vz_mps(s) - d * p.az_mps2(s),
-        ) // formula: v(t+-) = v(t+-d) -+ d a(t+-d)
+            p.vx_mps(s) + d * p.ax_mps2(s),
+            p.vz_mps(s) + d * p.az_mps2(s),
+        ) // formula: v(t-) = v(t - d) + d a(t - d)
     }
 
     /// The contact mode a block resting relative to the plate (`w = 0`) enters at `t`.
@@ -341,7 +353,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
         let (vxp0, vzp0) = self.plate_velocity_start(t0);
         let (x0, vx0) = (y0[0] + p.x_m(t0), y0[1] + vxp0);
         let (z0, vz0) = (y0[2] + p.z_m(t0), y0[3] + vzp0);
-        let (vxp, vzp) = self.plate_velocity_end(t);
+        let (vxp, vzp) = self.plate_velocity_in_piece(t0, t);
         [
             x0 + vx0 * s + 0.5 * b * s * s - p.x_m(t), // formula: x = x0 + vx0 s + b s^2/2
             vx0 + b * s - vxp,
@@ -356,7 +368,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
         let (g, b, mu) = (self.params.g_mps2, self.params.bias_mps2, self.mu());
         let s = t - t0;
         let c = b - sg * mu * g;
-        let (vxp, vzp) = self.plate_velocity_end(t);
+        let (vxp, vzp) = self.plate_velocity_in_piece(t0, t);
         let (vxp0, vzp0) = self.plate_velocity_start(t0);
         // formula: w = w0 + (b - s mu g) tau - s mu (v_zp - v_zp0) - (v_xp - v_xp0)
         let w = y0[1] + c * s - sg * mu * (vzp - vzp0) - (vxp - vxp0);
@@ -373,10 +385,20 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
     /// curvature (forward differences on the mode's closed form, or on time for the
     /// guards that depend on time only), the step ends at the predicted minimum when the
     /// predicted minimum value is below half the current value; never below
-    /// `sample_s / 1024`.
+    /// `sample_s / 1024`. No probing when the next breakpoint is within two probe steps.
     fn graze_step(&self, mode: BlockMode, t: f64, y: &[f64; 4]) -> f64 {
         let mut step = self.sample_s;
         let h = self.sample_s / 64.0;
+        // The probes must stay in the current piece of a plate with breakpoints (a
+        // guard jumps there; the driver stops on the breakpoint anyway).
+        if self.has_breakpoints
+            && self
+                .plate
+                .breakpoint_after(t)
+                .is_some_and(|b| t + 2.0 * h >= b)
+        {
+            return step;
+        }
         let time_only =
             |i: usize| mode != BlockMode::Flight && (i == 0 || mode == BlockMode::Stick);
         for i in 0..self.guard_count(mode) {

@@ -299,3 +299,176 @@ fn viscous_block_under_bias_drifts_at_b_over_c() {
     );
     let _ = (PI, Method::Rk4, StepControl::Fixed { h_s: 1e-3 });
 }
+
+/// The two-velocity sawtooth of section 3.2.2 (slow 0.1 m/s for 30 ms, fast 0.3 m/s).
+fn default_saw() -> Sawtooth {
+    Sawtooth {
+        slow_velocity_mps: 0.1,
+        fast_velocity_mps: 0.3,
+        slow_duration_s: 0.03,
+    }
+}
+
+/// A run on a sawtooth from absolute rest (`w = -v_slow`) at t = 0, `transient` periods
+/// dropped, ending after `periods` whole periods.
+fn saw_run(
+    saw: &Sawtooth,
+    params: &BlockParams,
+    opts: BlockOptions,
+    transient: usize,
+    periods: usize,
+) -> BlockRun {
+    let opts = BlockOptions {
+        start: (0.0, [0.0, -saw.slow_velocity_mps, 0.0, 0.0]),
+        transient_periods: transient,
+        ..opts
+    };
+    simulate_block(params, saw, periods as f64 * saw.period_s(), &opts)
+}
+
+#[test]
+fn sawtooth_coulomb_drift_is_the_closed_form() {
+    // The asym engineer's repro: mu = 0.3, from absolute rest, 3 transient periods (the
+    // closed-form lock time from rest is 0.054 s < 3 T = 0.12 s), 20 measured periods.
+    // After the lock the motion is T-periodic, so the whole-period mean is exactly
+    // v_d = a - mu g T_f^2 / T = 0.0926425 m/s (physics::sawtooth). Closed-form flows with
+    // located events leave round-off only (~1e-15 m/s per event, ~70 events): 1e-12.
+    // With the flows integrated, DP5 is exact on constant accelerations and events are
+    // located to 1e-12 s: the drift is off by at most ~(0.4 m/s)(1e-12 s)/T per event: 1e-9.
+    let saw = default_saw();
+    let params = BlockParams::coulomb(G, 0.3, 0.0);
+    let expected = crate::physics::sawtooth::drift_velocity_mps(&saw, 0.3 * G);
+    for (opts, tol) in both_ways().into_iter().zip([1e-12, 1e-9]) {
+        let run = saw_run(&saw, &params, opts, 3, 23);
+        assert_eq!(run.outcome, crate::numerics::hybrid::Outcome::Completed);
+        assert!(
+            (run.mean_velocity_mps - expected).abs() < tol,
+            "closed forms {}: {} vs {expected}",
+            opts.closed_forms,
+            run.mean_velocity_mps
+        );
+    }
+}
+
+#[test]
+fn sawtooth_viscous_mean_velocity_is_the_plates_zero() {
+    // Linear law: <v> = <v_p> = 0 on the periodic orbit. Starting on that orbit
+    // (physics::sawtooth::linear_periodic_start_velocity_mps) the whole-period mean is
+    // zero from the first period; DP5 at rtol = atol = 1e-10 (the driver's default) gives
+    // a position error ~1e-10 m over 20 periods (0.8 s): 1e-8 m/s on the mean.
+    let saw = default_saw();
+    for c in [5.0, 50.0, 500.0] {
+        let v0 = crate::physics::sawtooth::linear_periodic_start_velocity_mps(&saw, c);
+        let opts = BlockOptions {
+            start: (0.0, [0.0, v0 - saw.slow_velocity_mps, 0.0, 0.0]),
+            transient_periods: 0,
+            ..BlockOptions::default()
+        };
+        let run = simulate_block(
+            &BlockParams::viscous(G, c, 0.0),
+            &saw,
+            20.0 * saw.period_s(),
+            &opts,
+        );
+        assert_eq!(
+            run.outcome,
+            crate::numerics::hybrid::Outcome::Completed,
+            "c = {c}"
+        );
+        assert!(
+            run.mean_velocity_mps.abs() < 1e-8,
+            "c = {c}: {}",
+            run.mean_velocity_mps
+        );
+    }
+    // The repro: from absolute rest, t_end = 0.92 s, c = 1/s (formerly a step-size underflow).
+    let run = saw_run(
+        &saw,
+        &BlockParams::viscous(G, 1.0, 0.0),
+        BlockOptions::default(),
+        3,
+        23,
+    );
+    assert_eq!(run.outcome, crate::numerics::hybrid::Outcome::Completed);
+}
+
+#[test]
+fn closed_form_segments_read_the_plate_of_their_own_piece() {
+    // A segment that starts on the breakpoint B(1) = 30 ms (fast stroke, -0.3 m/s from
+    // there) and lasts 0 or 1 ulp: the relative velocity must not change (the plate's
+    // velocity is -0.3 m/s throughout the segment; slip decelerates w by mu g tau only).
+    // Exact to round-off: w changes by at most mu g x 1 ulp.
+    let saw = default_saw();
+    let sys = BlockSystem::new(BlockParams::coulomb(G, 0.3, 0.0), &saw);
+    let b = saw.breakpoint(1);
+    let y0 = [0.0, 0.4, 0.0, 0.0];
+    for t in [b, f64::from_bits(b.to_bits() + 1), b + 1e-12] {
+        for mode in [BlockMode::SlipRight, BlockMode::Stick, BlockMode::Flight] {
+            let y = sys.exact(mode, b, &y0, t).expect("closed form");
+            let w0 = if mode == BlockMode::Stick { 0.0 } else { 0.4 };
+            assert!((y[1] - w0).abs() < 1e-10, "{mode:?} at {t}: {:?}", y);
+        }
+    }
+    // A segment that ends on the next breakpoint, B(2) = 40 ms, after 1 ulp-long and
+    // ordinary lengths: the left limit there is still the fast stroke's.
+    let b2 = saw.breakpoint(2);
+    for t0 in [f64::from_bits(b2.to_bits() - 1), b2 - 1e-6, b] {
+        let y = sys
+            .exact(BlockMode::SlipRight, t0, &y0, b2)
+            .expect("closed form");
+        let expected = 0.4 - 0.3 * G * (b2 - t0);
+        assert!((y[1] - expected).abs() < 1e-12, "from {t0}: {:?}", y);
+    }
+}
+
+#[test]
+fn sawtooth_drift_matches_the_closed_forms_in_every_regime() {
+    // The asym chapter's sweep (a, b, T_s, mu): stick in the slow stroke, stick in both,
+    // both sides of the boundary mu g T_f = a + b. Transient: the closed-form lock time
+    // from absolute rest plus two periods; 8 periods measured. Expected: v_d of
+    // physics::sawtooth; tolerance as in `sawtooth_coulomb_drift_is_the_closed_form`.
+    use crate::physics::sawtooth::{drift_velocity_mps, lock_time_s, steady_regime, Regime};
+    let cases = [
+        (0.1, 0.3, 0.03, 0.3, Regime::StickSlow),
+        (0.1, 0.2, 0.05, 0.05, Regime::StickSlow),
+        (0.2, 0.25, 0.01, 1.0, Regime::StickSlow),
+        (0.1, 0.15, 0.02, 0.02, Regime::StickSlow),
+        (0.1, 0.3, 0.03, 5.0, Regime::StickBoth),
+        (0.1, 0.3, 0.6, 0.3, Regime::StickBoth),
+        (0.1, 0.3, 0.03, 0.4 / (0.01 * G) * 0.99, Regime::StickSlow),
+        (0.1, 0.3, 0.03, 0.4 / (0.01 * G) * 1.01, Regime::StickBoth),
+    ];
+    let mut worst = 0.0f64;
+    for (a, b, ts, mu, regime) in cases {
+        let saw = Sawtooth {
+            slow_velocity_mps: a,
+            fast_velocity_mps: b,
+            slow_duration_s: ts,
+        };
+        let k = mu * G;
+        assert_eq!(steady_regime(&saw, k), regime);
+        let n0 = (lock_time_s(&saw, k, 0.0) / saw.period_s()).floor() as usize + 2;
+        let expected = drift_velocity_mps(&saw, k);
+        for (opts, tol) in both_ways().into_iter().zip([1e-12, 1e-9]) {
+            let run = saw_run(&saw, &BlockParams::coulomb(G, mu, 0.0), opts, n0, n0 + 8);
+            let err = (run.mean_velocity_mps - expected).abs();
+            assert!(
+                err < tol,
+                "{a} {b} {ts} {mu} closed {}: {} vs {expected}",
+                opts.closed_forms,
+                run.mean_velocity_mps
+            );
+            if opts.closed_forms {
+                worst = worst.max(err);
+            }
+            // The regime as simulated: sticking while the plate moves back.
+            let stuck_back = run.modes.stick > 0.0
+                && run
+                    .events
+                    .iter()
+                    .any(|e| e.to == BlockMode::Stick && saw.vx_mps(e.t_s) < 0.0);
+            assert_eq!(stuck_back, regime == Regime::StickBoth, "{a} {b} {ts} {mu}");
+        }
+    }
+    eprintln!("largest block-vs-closed-form drift difference: {worst:e} m/s");
+}

@@ -29,7 +29,8 @@ pub struct Budget {
 }
 
 impl Budget {
-    /// Residual relative to the largest term (1).
+    /// Residual relative to the largest term, with a floor of 1e-9 J so that a stick at
+    /// rest (every term zero to rounding) does not divide rounding by rounding (1).
     pub fn relative_residual(&self) -> f64 {
         let scale = [
             self.plate_work_j,
@@ -39,12 +40,8 @@ impl Budget {
             self.impact_j,
         ]
         .iter()
-        .fold(0.0f64, |a, b| a.max(b.abs()));
-        if scale == 0.0 {
-            0.0
-        } else {
-            self.residual_j.abs() / scale
-        }
+        .fold(1e-9f64, |a, b| a.max(b.abs()));
+        self.residual_j.abs() / scale
     }
 }
 

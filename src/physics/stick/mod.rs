@@ -139,6 +139,8 @@ pub struct StickModel {
     pub min_flight_sample_s: f64,
     /// Longest step in contact modes (s).
     pub max_contact_step_s: f64,
+    /// `atan(mu)`: the edge of the self-locking range (rad).
+    pub atan_mu: f64,
     /// Penetration depth below which a missed landing is reported as invalid (m).
     pub penetration_tol_m: f64,
 }
@@ -150,6 +152,7 @@ impl StickModel {
         StickModel {
             p,
             rate: p.relax_rate(),
+            atan_mu: p.mu.atan(),
             period_s: period,
             // A landing missed inside one such interval would need a dip below the plate
             // of at most A h^2/8 with |h_c''| <= A: about 0.1 micrometre here.

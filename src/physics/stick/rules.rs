@@ -81,8 +81,19 @@ impl StickModel {
                 "slide from theta = 0 at t = {t:.6} s: the sliding equations (C.14) are singular"
             )));
         }
-        let e = self.slide_eval(mode.sigma(), t, y);
-        if e.fz < 0.0 || mode.sigma() * e.xc_dd > 0.0 || !e.fz.is_finite() {
+        let sigma = mode.sigma();
+        let e = self.slide_eval(sigma, t, y);
+        // From rest on the cone's edge the slip acceleration is zero (pivot and slide share
+        // the force there): look a moment ahead along the slide's flow to see which way the
+        // slip goes (the sign of its jerk).
+        let h = 1e-6 * self.period_s;
+        let mut y1 = *y;
+        y1[TH] += h * y[OM];
+        y1[OM] += h * e.theta_dd;
+        y1[VXC] += h * e.xc_dd;
+        let e1 = self.slide_eval(sigma, t + h, &y1);
+        let ahead = y1[VXC] + h * e1.xc_dd; // slip velocity after 2h
+        if e.fz < 0.0 || !e.fz.is_finite() || sigma * ahead > 0.0 {
             return Next::Stop(StickStop::Invalid(format!(
                 "{} inconsistent at t = {t:.6} s",
                 mode.name()

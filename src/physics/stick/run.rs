@@ -1,7 +1,7 @@
 //! One run of the stick through the hybrid driver, and its summary.
 
 use super::energy::Budget;
-use super::{Mode, State, StickModel, StickStop, NSTATE, VXC, W_PLATE, XC};
+use super::{Mode, State, StickModel, StickStop, NSTATE, TH, VXC, W_PLATE, XC};
 use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment};
 use crate::numerics::ode::Stats;
 
@@ -69,6 +69,28 @@ pub struct Sample {
     pub y: State,
 }
 
+/// One landing (flight ended on the plate).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Landing {
+    /// Time (s).
+    pub t_s: f64,
+    /// Angle at the landing (rad).
+    pub theta_rad: f64,
+    /// Height of C above the plate at the located event (m).
+    pub h_c_m: f64,
+    /// Along-rod approach velocity of P relative to the plate (m/s).
+    pub w_mps: f64,
+    /// A sticking impact (impulse along the rod inside the cone) took place.
+    pub sticking: bool,
+    /// Angular momentum about C per unit mass before and after, with the lever at the
+    /// angle after the impact (m^2/s); equal for a sticking impact.
+    pub h_before: f64,
+    /// See `h_before`.
+    pub h_after: f64,
+    /// The mode after.
+    pub to: Mode,
+}
+
 /// Summary of a run.
 #[derive(Debug, Clone)]
 pub struct RunSummary {
@@ -102,10 +124,12 @@ pub struct RunSummary {
     pub sequence: String,
     /// Table 1 violations.
     pub violations: Violations,
-    /// Trace samples.
+    /// Trace samples (canonical states; energy accumulators are running totals).
     pub trace: Vec<Sample>,
     /// Events: (time s, from, to) with `to = None` for the stop.
     pub events: Vec<(f64, Mode, Option<Mode>)>,
+    /// Landings (when recording a sequence).
+    pub landings: Vec<Landing>,
     /// Final state.
     pub y_end: State,
     /// Final mode.
@@ -160,6 +184,15 @@ impl Watch<'_> {
         }
     }
 
+    /// Canonical state with the energy accumulators as running totals since the start.
+    fn running(&self, mode: Mode, t: f64, y: &State) -> State {
+        let mut y = self.model.canonical(mode, t, y);
+        for k in 0..4 {
+            y[W_PLATE + k] += self.acc[k];
+        }
+        y
+    }
+
     fn enter(&mut self, mode: Mode) {
         if self.last_mode != Some(mode) && self.sum.sequence.len() < self.rec.sequence_cap {
             self.sum.sequence.push(mode.letter());
@@ -180,18 +213,16 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
         if self.rec.trace_dt_s > 0.0 {
             while self.next_sample_t <= seg.t1 {
                 let t = self.next_sample_t.max(seg.t0);
-                self.sum.trace.push(Sample {
-                    t_s: t,
-                    mode,
-                    y: self.model.canonical(mode, t, &seg.eval(t)),
-                });
+                let y = self.running(mode, t, &seg.eval(t));
+                self.sum.trace.push(Sample { t_s: t, mode, y });
                 self.next_sample_t += self.rec.trace_dt_s;
             }
             // keep the segment's end so that events are drawn sharply
+            let y = self.running(mode, seg.t1, &seg.y1);
             self.sum.trace.push(Sample {
                 t_s: seg.t1,
                 mode,
-                y: self.model.canonical(mode, seg.t1, &seg.y1),
+                y,
             });
         }
     }
@@ -214,9 +245,25 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
             }
             self.sum.transitions[from.index()][m.index()] += 1;
             if from == Mode::Flight && guard == 0 {
+                let md = self.model;
                 self.sum.hops += 1;
-                if y[VXC] == 0.0 {
+                let w = md.approach_velocity(t, _before);
+                let sticking = _before[TH].tan().abs() <= md.p.mu && w < 0.0;
+                if sticking {
                     self.sum.sticking_landings += 1;
+                }
+                if self.rec.sequence_cap > 0 {
+                    let lever = y[TH];
+                    self.sum.landings.push(Landing {
+                        t_s: t,
+                        theta_rad: _before[TH],
+                        h_c_m: md.h_c(t, _before),
+                        w_mps: w,
+                        sticking,
+                        h_before: md.angular_momentum_about_c(t, _before, lever),
+                        h_after: md.angular_momentum_about_c(t, &md.canonical(m, t, y), lever),
+                        to: m,
+                    });
                 }
             }
             if from != Mode::Flight && from != Mode::Pivot && guard == 0 {
@@ -266,6 +313,7 @@ pub fn simulate_stick(
             violations: Violations::default(),
             trace: Vec::new(),
             events: Vec::new(),
+            landings: Vec::new(),
             y_end: y0,
             mode_end: Mode::Pivot,
         },

@@ -3,16 +3,17 @@
 //! Guards, by mode, in priority order (ties go to the lower index):
 //! - Flight: 0 `h_c` falling (landing); 1 `-h_c - tol` rising (a missed landing: invalid).
 //! - Pivot: 0 `F_z` falling (lift-off); 1 `mu F_z - F_x` falling and 2 `mu F_z + F_x`
-//!   falling (friction cone's edges); 3 `cos(theta)` falling (fell).
-//! - Slides: 0 slide denominator (jam); 1 `Q sign(den)` falling, `Q = k (theta -
-//!   theta_0) + gamma theta'` (normal force reaching zero: lift-off); 2 `-sigma xdot_c`
-//!   falling (slip stops); 3 `cos(theta)` falling (fell); 4 `sin(theta)` (C.14 singular:
+//!   falling (friction cone's edges); 3 `pi/2 - |theta|` falling (fell).
+//! - Slides: 0 `theta - sigma atan(mu)`, the zero of the slide denominator (jam); 1 `Q sign(den)` falling, `Q = k (theta -
+//!   theta_0) + gamma theta'` (normal force reaching zero: lift-off); 2 `-sigma xdot_c + 1e-12`
+//!   falling (slip stops); 3 `pi/2 - |theta|` falling (fell); 4 `theta` (C.14 singular:
 //!   invalid); 5 `sigma xdot_c - tol` rising (slip against friction: invalid).
 
 use super::rules::Next;
 use super::{Mode, State, StickModel, StickStop, D_IMPACT, NSTATE, OM, TH, VXC, W_PLATE};
 use crate::numerics::events::Direction;
 use crate::numerics::hybrid::{HybridSystem, Transition};
+use std::f64::consts::FRAC_PI_2;
 
 fn tr(n: Next) -> Transition<Mode, StickStop, NSTATE> {
     match n {
@@ -75,7 +76,7 @@ impl HybridSystem<NSTATE> for StickModel {
                 }
             }
             Mode::Pivot => match i {
-                3 => y[TH].cos(),
+                3 => FRAC_PI_2 - y[TH].abs(),
                 _ => {
                     let e = self.pivot_eval(t, y);
                     match i {
@@ -88,15 +89,18 @@ impl HybridSystem<NSTATE> for StickModel {
             Mode::SlideLeft | Mode::SlideRight => {
                 let sigma = mode.sigma();
                 match i {
-                    0 => self.slide_denominator(sigma, y[TH]),
+                    // same zeros and sign as L (sin - sigma mu cos) = L cos (tan - sigma mu), no trig
+                    0 => y[TH] - sigma * self.atan_mu,
                     1 => {
                         let q = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad)
                             + p.damping_nms_per_rad * y[OM];
-                        q * self.slide_denominator(sigma, y[TH]).signum()
+                        q * (y[TH] - sigma * self.atan_mu).signum()
                     }
-                    2 => -sigma * y[VXC],
-                    3 => y[TH].cos(),
-                    4 => y[TH].sin(),
+                    // slip speed + 1e-12 m/s: a slide entered from rest starts at +1e-12, not at 0,
+                    // so a slip that reverses within the first step is still seen
+                    2 => -sigma * y[VXC] + 1e-12,
+                    3 => FRAC_PI_2 - y[TH].abs(),
+                    4 => y[TH],
                     _ => sigma * y[VXC] - 1e-9,
                 }
             }

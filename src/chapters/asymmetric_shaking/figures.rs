@@ -1,0 +1,237 @@
+//! Figures of the chapter (only when figures are on): velocities over a few periods,
+//! drift against the asymmetry, drift against the drive number, the regime map, and
+//! the work-precision chart. Sweeps here feed figures only.
+
+use super::claims::{biharmonic, slip_transient, transient, Traces};
+use super::sims::{run_block, Numerics, Window};
+use super::Scene;
+use crate::error::Result;
+use crate::physics::plate::{PlateMotion, Sawtooth};
+use crate::physics::sawtooth::biharmonic::{always_slipping_drift, stick_forever_gamma};
+use crate::physics::sawtooth::sim::Law;
+use crate::physics::sawtooth::{drift_ratio, drift_velocity_mps, lock_time_s, steady_velocity_mps};
+use crate::plot::{save_chart, save_heatmap, save_panels, Chart, HeatMap, Legend, Series};
+use crate::sweep::{linspace, logspace, par_map};
+use std::path::Path;
+
+/// Draws every figure into `dir`; returns the written paths.
+pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<String>> {
+    let mut paths = Vec::new();
+    let saw = sc.saw;
+    let k = sc.k_mps2();
+    let coul = Law::Coulomb {
+        k_mps2: sc.k_mps2(),
+    };
+    let num = Numerics::default();
+    let measured = if quick { 2 } else { 6 };
+
+    // 1. Velocities over a few periods, both laws.
+    let ms = |v: &[(f64, f64, f64)], i: usize| -> Vec<(f64, f64)> {
+        v.iter()
+            .map(|p| (p.0 * 1e3, if i == 1 { p.1 } else { p.2 }))
+            .collect()
+    };
+    let vd = drift_velocity_mps(&saw, k);
+    // The closed-form periodic velocity from the first whole period after the lock.
+    let t_lock = lock_time_s(&saw, k, 0.0);
+    let t_from = (t_lock / saw.period_s()).ceil() * saw.period_s();
+    let t_to = tr.coulomb.last().map_or(t_from, |p| p.0);
+    let steady: Vec<(f64, f64)> = linspace(t_from, t_to, 800)
+        .into_iter()
+        .map(|t| (t * 1e3, steady_velocity_mps(&saw, k, t)))
+        .collect();
+    let c1 = Chart::new(
+        "Coulomb friction: the block locks onto the slow stroke",
+        "time (ms)",
+        "velocity (m/s)",
+    )
+    .dashed("plate", ms(&tr.coulomb, 2))
+    .line("block (simulated)", ms(&tr.coulomb, 1))
+    .points(
+        "closed-form periodic velocity",
+        steady.into_iter().step_by(10).collect(),
+    )
+    .hline(vd, "closed-form drift")
+    .vline(t_lock * 1e3, "first stick")
+    .legend(Legend::LowerLeft);
+    let c2 = Chart::new(
+        "Linear friction: the block follows the plate, mean zero",
+        "time (ms)",
+        "velocity (m/s)",
+    )
+    .dashed("plate", ms(&tr.linear, 2))
+    .line("block (simulated)", ms(&tr.linear, 1))
+    .hline(0.0, "zero")
+    .legend(Legend::LowerLeft);
+    paths.extend(save_panels(&[c1, c2], 1, dir, "velocities")?);
+
+    // 2. Drift against the asymmetry: sawtooth speed ratio, bi-harmonic eps.
+    let ratios = linspace(1.25, 6.0, if quick { 4 } else { 12 });
+    let a = saw.slow_velocity_mps;
+    let sim_r: Vec<(f64, f64)> = par_map(&ratios, "sawtooth ratio sweep", |&r| {
+        let s = Sawtooth {
+            fast_velocity_mps: r * a,
+            ..saw
+        };
+        let v = run_block(
+            coul,
+            &s,
+            0.0,
+            Window {
+                transient: transient(&s, k),
+                measured,
+            },
+            &num,
+            (0.0, 0.0),
+            0.0,
+        )
+        .mean_velocity_mps;
+        (r, v / a)
+    });
+    let y = k * saw.slow_duration_s / a;
+    let theory_r: Vec<(f64, f64)> = linspace(1.01, 6.0, 200)
+        .into_iter()
+        .map(|r| (r, drift_ratio(r, y)))
+        .collect();
+    let p1 = Chart::new(
+        &format!("Sawtooth, friction number mu g t_slow / v_slow = {y:.3}"),
+        "speed ratio v_fast / v_slow",
+        "drift / v_slow",
+    )
+    .line("closed form", theory_r)
+    .points("simulation", sim_r);
+    let vb = 0.5 * (saw.slow_velocity_mps + saw.fast_velocity_mps);
+    let epss = linspace(-0.45, 0.45, if quick { 5 } else { 19 });
+    let mut p2 = Chart::new(
+        "Bi-harmonic drive v_p = V (sin wt + eps cos 2wt)",
+        "asymmetry eps",
+        "drift / V",
+    )
+    .dashed(
+        "limit eps (Gamma -> infinity)",
+        vec![(-0.45, -0.45), (0.45, 0.45)],
+    );
+    for gamma in [3.0, 10.0] {
+        let pts: Vec<(f64, f64)> = par_map(&epss, "bi-harmonic eps sweep", |&e| {
+            let p = biharmonic(vb, gamma, e, k);
+            let w = Window {
+                transient: slip_transient(gamma),
+                measured: 4,
+            };
+            (
+                e,
+                run_block(coul, &p, 0.0, w, &num, (0.0, 0.0), 0.0).mean_velocity_mps / vb,
+            )
+        });
+        let theory: Vec<(f64, f64)> = linspace(-0.45, 0.45, 91)
+            .into_iter()
+            .filter_map(|e| always_slipping_drift(gamma, e).map(|d| (e, d)))
+            .collect();
+        p2 = p2
+            .line(&format!("always slipping, Gamma = {gamma}"), theory)
+            .points(&format!("simulation, Gamma = {gamma}"), pts);
+    }
+    paths.extend(save_panels(&[p1, p2], 2, dir, "drift_vs_asymmetry")?);
+
+    // 3. Bi-harmonic drift against the drive number.
+    let gammas = logspace(0.5, 100.0, if quick { 6 } else { 30 });
+    let mut c3 = Chart::new(
+        "Bi-harmonic drift against the drive number",
+        "Gamma = V omega / (mu g)",
+        "drift / (eps V)",
+    )
+    .log_x();
+    for eps in [0.1, 0.3] {
+        let pts: Vec<(f64, f64)> = par_map(&gammas, "bi-harmonic Gamma sweep", |&g| {
+            let p = biharmonic(vb, g, eps, k);
+            let w = Window {
+                transient: slip_transient(g),
+                measured: 4,
+            };
+            (
+                g,
+                run_block(coul, &p, 0.0, w, &num, (0.0, 0.0), 0.0).mean_velocity_mps / (eps * vb),
+            )
+        });
+        let theory: Vec<(f64, f64)> = logspace(0.5, 100.0, 300)
+            .into_iter()
+            .filter_map(|g| always_slipping_drift(g, eps).map(|d| (g, d / eps)))
+            .collect();
+        c3 = c3
+            .points(&format!("simulation, eps = {eps}"), pts)
+            .line(&format!("always slipping, eps = {eps}"), theory);
+        c3 = c3.vline(
+            stick_forever_gamma(eps),
+            &format!("Gamma_stick, eps = {eps}"),
+        );
+    }
+    c3 = c3.hline(1.0, "limit eps V");
+    paths.extend(save_chart(&c3, dir, "drift_vs_drive")?);
+
+    // 4. Regime map of the sawtooth (closed form) with the boundary y = r (r + 1).
+    let rs = linspace(1.05, 4.0, 60);
+    let ys = linspace(0.05, 20.0, 60);
+    let values: Vec<Vec<f64>> = ys
+        .iter()
+        .map(|&y| rs.iter().map(|&r| drift_ratio(r, y)).collect())
+        .collect();
+    let boundary: Vec<(f64, f64)> = rs
+        .iter()
+        .map(|&r| (r, r * (r + 1.0)))
+        .filter(|p| p.1 <= 20.0)
+        .collect();
+    let here = vec![(saw.fast_velocity_mps / a, y)];
+    let h = HeatMap::new(
+        "Sawtooth regimes: drift / v_slow (closed form)",
+        "speed ratio v_fast / v_slow",
+        "friction number mu g t_slow / v_slow",
+        rs,
+        ys,
+        values,
+        "drift / v_slow",
+    )
+    .overlay(Series::line(
+        "stick in both strokes above: mu g t_fast = v_slow + v_fast",
+        boundary,
+    ))
+    .overlay(Series::points("this scene", here));
+    paths.extend(save_heatmap(&h, dir, "regime_map")?);
+
+    // 5. Work-precision (full mode: the rows come from the checks).
+    if !tr.work.is_empty() {
+        let floor = 1e-17; // errors of exactly 0 drawn at the floor
+        let mut charts = Vec::new();
+        for drive in ["sawtooth", "bi-harmonic"] {
+            let pick = |key: &str| -> Vec<(f64, f64)> {
+                tr.work
+                    .iter()
+                    .filter(|w| w.0 == drive && w.1.starts_with(key))
+                    .map(|w| ((w.2 as f64).max(1.0), w.3.max(floor)))
+                    .collect()
+            };
+            let reference = if drive == "sawtooth" {
+                "closed-form drift"
+            } else {
+                "closed-form-flow run"
+            };
+            charts.push(
+                Chart::new(
+                    &format!("{drive}: error of the Coulomb drift against work"),
+                    "right-hand-side evaluations",
+                    &format!("|drift - {reference}| (m/s)"),
+                )
+                .log_x()
+                .log_y()
+                .line("DP5, located events (tol 1e-3 .. 1e-12)", pick("DP5"))
+                .points("DP5 points", pick("DP5"))
+                .line(
+                    "RK4 fixed step, no event location (T/15 .. T/1023)",
+                    pick("RK4"),
+                )
+                .hline(1e-12, "claim tolerance"),
+            );
+        }
+        paths.extend(save_panels(&charts, 2, dir, "work_precision")?);
+    }
+    Ok(paths)
+}

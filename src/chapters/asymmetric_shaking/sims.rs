@@ -1,0 +1,276 @@
+//! The simulations of the chapter: the event-driven block of
+//! [`crate::physics::sawtooth::sim`] (Coulomb or viscous contact) run on the chapter's
+//! plates by the hybrid driver, with an observer that reads the window's mean velocity,
+//! the velocity extremes, the first stick and the friction direction off every segment.
+
+use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment};
+use crate::numerics::ode::{Method, Stats, StepControl};
+use crate::physics::plate::PlateMotion;
+use crate::physics::sawtooth::sim::{Block, Contact, Law, Mode};
+
+/// Whole periods of a run: `transient` dropped, then `measured` averaged.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Window {
+    /// Periods dropped as transient.
+    pub transient: usize,
+    /// Periods averaged.
+    pub measured: usize,
+}
+
+/// What a chapter run of the block returns.
+#[derive(Debug, Clone)]
+pub struct DriftRun {
+    /// Mean block velocity over the window (m/s): `(x(t_b) - x(t_a)) / (t_b - t_a)`.
+    pub mean_velocity_mps: f64,
+    /// Largest absolute block velocity inside the window (m/s).
+    pub v_max_mps: f64,
+    /// Smallest absolute block velocity inside the window (m/s).
+    pub v_min_mps: f64,
+    /// Time of the first slip-to-stick event (s), if any.
+    pub first_stick_s: Option<f64>,
+    /// True if the block stuck during a stroke with negative plate velocity in the window.
+    pub stuck_in_backward_stroke: bool,
+    /// True if, in every segment of the window, the block slipped with its friction
+    /// pointing along the plate's velocity (the document's "sliding relatively opposite
+    /// to the direction of the instantaneous plate velocity").
+    pub friction_along_plate: bool,
+    /// Absolute velocity of the block at the window's ends (m/s).
+    pub v_window_mps: (f64, f64),
+    /// Sampled `(t, block velocity, plate velocity)` inside `trace_s` (figures).
+    pub trace: Vec<(f64, f64, f64)>,
+    /// Integration work (zero with closed forms).
+    pub stats: Stats,
+    /// Guard evaluations spent locating events.
+    pub locate_evals: u64,
+    /// Events (contact changes).
+    pub events: usize,
+    /// How the run ended (`Completed` unless the driver stopped it).
+    pub outcome: Outcome<()>,
+}
+
+/// The segment's state at `t`: its end states at its ends, its dense output inside.
+fn state_at(seg: &Segment<'_, 2>, t: f64) -> [f64; 2] {
+    if t <= seg.t0 {
+        seg.y0
+    } else if t >= seg.t1 {
+        seg.y1
+    } else {
+        seg.eval(t)
+    }
+}
+
+struct Watch<'b, 'a, P: PlateMotion + ?Sized> {
+    block: &'b Block<'a, P>,
+    window: (f64, f64),
+    trace_s: (f64, f64),
+    trace_dt: f64,
+    v_max: f64,
+    v_min: f64,
+    first_stick: Option<f64>,
+    backward_stick: bool,
+    against_plate: bool,
+    ends: [Option<[f64; 2]>; 2],
+    trace: Vec<(f64, f64, f64)>,
+}
+
+impl<P: PlateMotion + ?Sized> Observer<Mode, 2> for Watch<'_, '_, P> {
+    fn segment(&mut self, mode: Mode, seg: &Segment<'_, 2>) {
+        let (a, b) = self.window;
+        // Window ends: the first segment that reaches t_a, the last that reaches t_b.
+        if seg.t0 <= a && a <= seg.t1 && self.ends[0].is_none() {
+            self.ends[0] = Some(state_at(seg, a));
+        }
+        if seg.t0 <= b && b <= seg.t1 {
+            self.ends[1] = Some(state_at(seg, b));
+        }
+        if seg.t1 > a && seg.t0 < b && seg.t1 > seg.t0 {
+            // Extremes: ends and 7 interior points of the part inside the window.
+            let (s0, s1) = (seg.t0.max(a), seg.t1.min(b));
+            for j in 0..=8 {
+                let v = state_at(seg, s0 + (s1 - s0) * j as f64 / 8.0)[1];
+                self.v_max = self.v_max.max(v);
+                self.v_min = self.v_min.min(v);
+            }
+            let vp = self.block.vp(mode, 0.5 * (seg.t0 + seg.t1));
+            if mode.contact == Contact::Stick && vp < 0.0 {
+                self.backward_stick = true;
+            }
+            // SlipBack: friction +mu g; SlipFwd: friction -mu g.
+            let along = matches!(
+                (mode.contact, vp > 0.0, vp < 0.0),
+                (Contact::SlipBack, true, _) | (Contact::SlipFwd, _, true)
+            );
+            self.against_plate |= !along;
+        }
+        let (ta, tb) = self.trace_s;
+        if seg.t1 >= ta && seg.t0 <= tb && self.trace_dt > 0.0 {
+            let (s0, s1) = (seg.t0.max(ta), seg.t1.min(tb));
+            let n = ((s1 - s0) / self.trace_dt).ceil().max(1.0) as usize;
+            for j in 0..=n {
+                let t = s0 + (s1 - s0) * j as f64 / n as f64;
+                self.trace
+                    .push((t, state_at(seg, t)[1], self.block.vp(mode, t)));
+            }
+        }
+    }
+
+    fn event(
+        &mut self,
+        t_s: f64,
+        from: Mode,
+        _guard: usize,
+        _before: &[f64; 2],
+        after: Option<(Mode, &[f64; 2])>,
+    ) {
+        if let Some((to, _)) = after {
+            if to.contact == Contact::Stick
+                && from.contact != Contact::Stick
+                && self.first_stick.is_none()
+            {
+                self.first_stick = Some(t_s);
+            }
+        }
+    }
+}
+
+/// How to run the block: closed forms (default) or integrated flows, method and steps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Numerics {
+    /// Use the closed forms of stick and Coulomb slip.
+    pub closed_forms: bool,
+    /// Driver options (method, step control, event location).
+    pub hybrid: Options,
+    /// Guard samples per period (and longest step) on smooth plates; a piecewise-constant
+    /// plate needs none (see `Block::new`).
+    pub samples_per_period: usize,
+}
+
+impl Default for Numerics {
+    /// Closed forms, DP5 at rtol = atol = 1e-12 (viscous mode), located events, 64
+    /// guard samples per period.
+    fn default() -> Self {
+        Numerics {
+            closed_forms: true,
+            hybrid: Options {
+                control: StepControl::tol(1e-12, 1e-12),
+                record_events: false,
+                ..Options::default()
+            },
+            samples_per_period: 64,
+        }
+    }
+}
+
+impl Numerics {
+    /// Integrated flows, DP5 with tolerance `tol`, located events.
+    pub fn dopri(tol: f64) -> Self {
+        let hybrid = Options {
+            method: Method::Dopri5,
+            control: StepControl::tol(tol, tol),
+            ..Numerics::default().hybrid
+        };
+        Numerics {
+            closed_forms: false,
+            hybrid,
+            ..Numerics::default()
+        }
+    }
+
+    /// Integrated flows, fixed RK4 steps of `period / steps_per_period`, switches taken
+    /// at the end of the step that saw them (no location).
+    pub fn fixed_rk4(steps_per_period: usize, period_s: f64) -> Self {
+        let h_s = period_s / steps_per_period as f64;
+        let hybrid = Options {
+            method: Method::Rk4,
+            control: StepControl::Fixed { h_s },
+            locate_events: false,
+            ..Numerics::default().hybrid
+        };
+        Numerics {
+            closed_forms: false,
+            hybrid,
+            samples_per_period: steps_per_period,
+        }
+    }
+}
+
+/// Runs a block that starts at x = 0 with velocity `v0_mps` at t = 0 on `plate` over
+/// `window`; traces `trace_s` every `trace_dt` (0: no trace).
+pub fn run_block<P: PlateMotion + ?Sized>(
+    law: Law,
+    plate: &P,
+    v0_mps: f64,
+    window: Window,
+    num: &Numerics,
+    trace_s: (f64, f64),
+    trace_dt: f64,
+) -> DriftRun {
+    let period = plate.period_s();
+    let mut block = Block::new(plate, law);
+    block.closed_forms = num.closed_forms;
+    if !block.piecewise_constant {
+        block.sample_s = period / num.samples_per_period.max(1) as f64;
+    }
+    // Window ends on the plate's own breakpoint floats when there are some (so no
+    // sliver step is left between the last breakpoint and the end).
+    let on_grid = |n: usize| {
+        let t = n as f64 * period;
+        match block.plate().breakpoint_after(t - 1e-9 * period) {
+            Some(b) if (b - t).abs() <= 1e-9 * period => b,
+            _ => t,
+        }
+    };
+    let t_end = on_grid(window.transient + window.measured);
+    let win = (on_grid(window.transient), t_end);
+    let mut w = Watch {
+        block: &block,
+        window: win,
+        trace_s,
+        trace_dt,
+        v_max: f64::NEG_INFINITY,
+        v_min: f64::INFINITY,
+        first_stick: None,
+        backward_stick: false,
+        against_plate: false,
+        ends: [None, None],
+        trace: Vec::new(),
+    };
+    let mode0 = block.start_mode(0.0, v0_mps);
+    let run = simulate(
+        &block,
+        mode0,
+        0.0,
+        [0.0, v0_mps],
+        t_end,
+        &num.hybrid,
+        &mut w,
+    );
+    let mean = match w.ends {
+        [Some(ya), Some(yb)] if window.measured > 0 && run.outcome == Outcome::Completed => {
+            (yb[0] - ya[0]) / (win.1 - win.0)
+        } // formula: <v> = (x(t_b) - x(t_a)) / (t_b - t_a)
+        _ => f64::NAN,
+    };
+    DriftRun {
+        mean_velocity_mps: mean,
+        v_max_mps: w.v_max,
+        v_min_mps: w.v_min,
+        first_stick_s: w.first_stick,
+        stuck_in_backward_stroke: w.backward_stick,
+        friction_along_plate: !w.against_plate,
+        v_window_mps: (
+            w.ends[0].map_or(f64::NAN, |y| y[1]),
+            w.ends[1].map_or(f64::NAN, |y| y[1]),
+        ),
+        trace: w.trace,
+        stats: run.stats,
+        locate_evals: run.locate_evals,
+        events: run.event_count,
+        outcome: run.outcome,
+    }
+}
+
+/// Mean block velocity over the window (m/s) of a run from rest.
+pub fn drift<P: PlateMotion + ?Sized>(law: Law, plate: &P, window: Window, num: &Numerics) -> f64 {
+    run_block(law, plate, 0.0, window, num, (0.0, 0.0), 0.0).mean_velocity_mps
+}

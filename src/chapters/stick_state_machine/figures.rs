@@ -1,0 +1,304 @@
+//! The chapter's figures (drawn only when figures are on; the results never depend on
+//! them). Sweeps run in parallel with `sweep::par_map` and are summed in order.
+
+use super::evidence::Evidence;
+use super::run_scene;
+use crate::chapters::Context;
+use crate::error::Result;
+use crate::numerics::hybrid::Options;
+use crate::physics::stick::run::{Recording, RunSummary, Sample, StickOutcome};
+use crate::physics::stick::{
+    Mode, StickModel, StickParams, D_DAMP, D_FRIC, D_IMPACT, TH, W_PLATE, XC, ZC,
+};
+use crate::plot::{save_chart, save_heatmap, save_panels, Chart, HeatMap, Legend, Series};
+use crate::sweep::{linspace, par_map};
+use std::path::Path;
+
+/// Draws every figure; returns the written paths.
+pub fn draw_all(
+    dir: &Path,
+    p: &StickParams,
+    _main: &RunSummary,
+    ev: &Evidence,
+    ctx: &Context,
+    opts: &Options,
+) -> Result<Vec<String>> {
+    let mut out = Vec::new();
+    let t = p.period_s();
+    // a traced run of 14 cycles; show cycles 10 to 14 (past the start transient)
+    let traced = run_scene(
+        p,
+        14.0 * t,
+        opts,
+        Recording {
+            sequence_cap: 0,
+            trace_dt_s: t / 200.0,
+            check_invariants: false,
+        },
+    );
+    let window: Vec<&Sample> = traced.trace.iter().filter(|s| s.t_s >= 10.0 * t).collect();
+    out.extend(time_series(dir, p, &window)?);
+    out.extend(snapshots(dir, p, &window)?);
+    out.extend(energy(dir, p, opts)?);
+    out.extend(speed_sweeps(dir, ev, opts, ctx)?);
+    out.extend(map(dir, ev, opts, ctx)?);
+    Ok(out)
+}
+
+/// Shades the phases of `samples` on `c`, one colour per mode (band colours cycle with
+/// the band index: pad with empty bands so that the index modulo 5 is the mode's).
+fn shade(mut c: Chart, samples: &[&Sample]) -> Chart {
+    let mut labelled = [false; 4];
+    let mut i = 0;
+    while i < samples.len() {
+        let m = samples[i].mode;
+        let mut j = i;
+        while j + 1 < samples.len() && samples[j + 1].mode == m {
+            j += 1;
+        }
+        let (a, b) = (samples[i].t_s, samples[(j + 1).min(samples.len() - 1)].t_s);
+        while c.bands.len() % 5 != m.index() {
+            c = c.band(-1e9, -1e9, "");
+        }
+        let label = if labelled[m.index()] { "" } else { m.name() };
+        labelled[m.index()] = true;
+        c = c.band(a, b, label);
+        i = j + 1;
+    }
+    c
+}
+
+fn time_series(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>> {
+    let m = StickModel::new(*p);
+    let pts = |f: &dyn Fn(&Sample) -> f64| w.iter().map(|s| (s.t_s, f(s))).collect::<Vec<_>>();
+    let mm = 1e3;
+    let c1 = shade(Chart::new("Foot C and plate", "t (s)", "height (mm)"), w)
+        .line("z_C", pts(&|s| s.y[ZC] * mm))
+        .dashed("z_s (plate)", pts(&|s| m.plate(s.t_s).0 * mm));
+    let c2 = shade(Chart::new("Tip P", "t (s)", "z_P (mm)"), w)
+        .line("z_P", pts(&|s| m.tip(&s.y)[1] * mm));
+    let c3 = shade(Chart::new("Angle", "t (s)", "theta (rad)"), w)
+        .line("theta", pts(&|s| s.y[TH]))
+        .hline(p.theta0_rad, "theta_0")
+        .hline(p.mu.atan(), "atan(mu)");
+    let c4 = shade(Chart::new("Foot position", "t (s)", "x_C (mm)"), w)
+        .line("x_C", pts(&|s| s.y[XC] * mm))
+        .legend(Legend::UpperLeft);
+    save_panels(&[c1, c2, c3, c4], 2, dir, "time_series")
+}
+
+fn snapshots(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>> {
+    let m = StickModel::new(*p);
+    let t = p.period_s();
+    let mut c = Chart::new(
+        "Stick snapshots every T/8 over two cycles (offset 40 mm per frame; colour = mode)",
+        "x_C - x_C(first) + 40 mm x frame (mm)",
+        "z (mm)",
+    )
+    .legend(Legend::LowerRight);
+    let mut named = [false; 4];
+    let x_first = w.first().map(|s| s.y[XC]).unwrap_or(0.0);
+    let t0 = w.first().map(|s| s.t_s).unwrap_or(0.0);
+    for k in 0..=16 {
+        let tk = t0 + k as f64 * t / 8.0;
+        let Some(s) = w
+            .iter()
+            .min_by(|a, b| (a.t_s - tk).abs().total_cmp(&(b.t_s - tk).abs()))
+        else {
+            continue;
+        };
+        let off = 40.0 * k as f64;
+        let [xp, zp, _, _] = m.tip(&s.y);
+        let xc = (s.y[XC] - x_first) * 1e3 + off;
+        let zs = m.plate(s.t_s).0 * 1e3;
+        let label = if named[s.mode.index()] {
+            ""
+        } else {
+            s.mode.name()
+        };
+        named[s.mode.index()] = true;
+        c = c.series(
+            Series::line(
+                label,
+                vec![(xc, s.y[ZC] * 1e3), ((xp - x_first) * 1e3 + off, zp * 1e3)],
+            )
+            .color(s.mode.index()),
+        );
+        c = c.series(Series::line("", vec![(xc - 12.0, zs), (xc + 12.0, zs)]).color(6));
+    }
+    save_chart(&c, dir, "snapshots")
+}
+
+fn energy(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
+    let s = run_scene(
+        p,
+        2.0,
+        opts,
+        Recording {
+            sequence_cap: 0,
+            trace_dt_s: p.period_s() / 8.0,
+            check_invariants: false,
+        },
+    );
+    let m = StickModel::new(*p);
+    let Some(first) = s.trace.first() else {
+        return Ok(Vec::new());
+    };
+    let e0 = m.mechanical_energy(&first.y);
+    let pts =
+        |f: &dyn Fn(&Sample) -> f64| s.trace.iter().map(|x| (x.t_s, f(x))).collect::<Vec<_>>();
+    let c = Chart::new("Energy budget (cumulative)", "t (s)", "energy (J)")
+        .line("plate work W", pts(&|x| x.y[W_PLATE]))
+        .line("friction", pts(&|x| x.y[D_FRIC]))
+        .line("damper", pts(&|x| x.y[D_DAMP]))
+        .line("impacts", pts(&|x| x.y[D_IMPACT]))
+        .line(
+            "change of mechanical energy",
+            pts(&|x| m.mechanical_energy(&x.y) - e0),
+        )
+        .legend(Legend::UpperLeft);
+    let r = Chart::new("Budget residual W - dE - losses", "t (s)", "|residual| (J)")
+        .line(
+            "|residual|",
+            pts(&|x| {
+                let b = x.y[W_PLATE]
+                    - (m.mechanical_energy(&x.y) - e0)
+                    - x.y[D_FRIC]
+                    - x.y[D_DAMP]
+                    - x.y[D_IMPACT];
+                b.abs().max(1e-16)
+            }),
+        )
+        .log_y();
+    save_panels(&[c, r], 2, dir, "energy_budget")
+}
+
+fn mean_speed(s: &RunSummary) -> f64 {
+    if s.outcome == StickOutcome::Completed {
+        s.mean_velocity_mps
+    } else {
+        f64::NAN
+    }
+}
+
+fn speed_sweeps(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
+    let n = if ctx.quick { 5 } else { 23 };
+    let dur = if ctx.quick { 1.0 } else { 3.0 };
+    let gammas = linspace(1.0, 12.0, n);
+    let freqs = linspace(10.0, 60.0, n);
+    let mut items = Vec::new();
+    for (si, base) in ev.params.iter().enumerate() {
+        for &g in &gammas {
+            items.push((si, 0usize, g, *base));
+        }
+        for &f in &freqs {
+            items.push((si, 1usize, f, *base));
+        }
+    }
+    let speeds = par_map(&items, "stick speed sweeps", |&(_, kind, v, b)| {
+        let p = if kind == 0 {
+            StickParams::new(
+                b.length_m,
+                b.mass_kg,
+                b.stiffness_nm_per_rad,
+                b.damping_nms_per_rad,
+                b.mu,
+                b.theta0_rad,
+                b.g_mps2,
+                v,
+                b.frequency_hz(),
+            )
+        } else {
+            StickParams::new(
+                b.length_m,
+                b.mass_kg,
+                b.stiffness_nm_per_rad,
+                b.damping_nms_per_rad,
+                b.mu,
+                b.theta0_rad,
+                b.g_mps2,
+                b.gamma_accel(),
+                v,
+            )
+        };
+        mean_speed(&run_scene(&p, dur, opts, Recording::default()))
+    });
+    let series = |si: usize, kind: usize| -> Vec<(f64, f64)> {
+        items
+            .iter()
+            .zip(&speeds)
+            .filter(|((s, k, _, _), _)| *s == si && *k == kind)
+            .map(|((_, _, v, _), &sp)| (*v, sp))
+            .collect()
+    };
+    let names = ["authors' scene", "self-locking scene"];
+    let mut cg = Chart::new(
+        "Mean speed of C against Gamma (f fixed)",
+        "Gamma = delta omega^2 / g",
+        "mean velocity (m/s)",
+    );
+    let mut cf = Chart::new(
+        "Mean speed of C against frequency (Gamma fixed)",
+        "f (Hz)",
+        "mean velocity (m/s)",
+    );
+    for (si, name) in names.iter().enumerate() {
+        cg = cg.series(Series::line(name, series(si, 0)).color(si));
+        cf = cf.series(Series::line(name, series(si, 1)).color(si));
+    }
+    save_panels(&[cg, cf], 2, dir, "speed_sweeps")
+}
+
+fn map(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
+    let n = if ctx.quick { 6 } else { 24 };
+    let dur = if ctx.quick { 1.0 } else { 3.0 };
+    let ths = linspace(0.05, 0.9, n);
+    let mus = linspace(0.1, 0.9, n);
+    let base = ev.params[1];
+    let items: Vec<(f64, f64)> = mus
+        .iter()
+        .flat_map(|&mu| ths.iter().map(move |&th| (th, mu)))
+        .collect();
+    let res = par_map(&items, "stick (theta_0, mu) map", |&(th, mu)| {
+        let mut p = base;
+        p.theta0_rad = th;
+        p.mu = mu;
+        let s = run_scene(&p, dur, opts, Recording::default());
+        (mean_speed(&s), s.outcome.label())
+    });
+    let values: Vec<Vec<f64>> = res
+        .chunks(n)
+        .map(|row| row.iter().map(|r| r.0).collect())
+        .collect();
+    let mark = |label: &str| -> Vec<(f64, f64)> {
+        items
+            .iter()
+            .zip(&res)
+            .filter(|(_, r)| r.1 == label)
+            .map(|(x, _)| *x)
+            .collect()
+    };
+    let boundary: Vec<(f64, f64)> = linspace(0.05, 0.9, 60)
+        .into_iter()
+        .map(|t| (t, t.tan()))
+        .filter(|(_, m)| *m <= 0.9)
+        .collect();
+    let mut h = HeatMap::new(
+        "Mean speed over (theta_0, mu), self-locking scene's plate (grey: not completed)",
+        "theta_0 (rad)",
+        "mu",
+        ths,
+        mus,
+        values,
+        "mean velocity (m/s)",
+    )
+    .overlay(Series::line("self-locking edge mu = tan(theta_0)", boundary).color(6));
+    for (i, label) in ["fell", "zeno", "invalid"].iter().enumerate() {
+        let pts = mark(label);
+        if !pts.is_empty() {
+            h = h.overlay(Series::points(label, pts).color(i + 1));
+        }
+    }
+    let _ = Mode::ALL;
+    save_heatmap(&h, dir, "speed_map")
+}

@@ -1,0 +1,243 @@
+//! Chapter `stick-state-machine` (document sections 4 and 5): the hybrid simulation of
+//! the leaning stick: flight in closed form, pivot and slides integrated with
+//! Dormand-Prince 5(4), the collision map, the transition rules decided by the contact
+//! conditions, and the energy budget. Every equation, every row of Table 1 and every
+//! rule of Algorithms 1 to 4 gets a claim (see [`claims`]).
+
+mod claims;
+mod evidence;
+mod figures;
+
+use super::Context;
+use crate::error::{check, non_negative, positive, Result};
+use crate::numerics::hybrid::Options;
+use crate::numerics::ode::StepControl;
+use crate::physics::stick::run::{initial_state, simulate_stick, Recording, RunSummary};
+use crate::physics::stick::{
+    authors_scene, jamming_scene, CollisionAngle, Mode, StickModel, StickParams,
+};
+use serde_json::{json, Map, Value};
+
+/// Chapter id.
+pub const ID: &str = "stick-state-machine";
+
+/// The scene whose values the flags override.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Scene {
+    /// Self-locking scene: the authors' stick with theta_0 = 0.3 rad (tan = 0.309 < mu =
+    /// 0.4) on a plate at Gamma = 3, 30 Hz, g = 9.81 m/s^2: walks by stick-slip.
+    Jamming,
+    /// The authors' own scene: L = 0.15 m, m = 1 kg, k = 10 N m/rad, gamma = 0.01 N m
+    /// s/rad, mu = 0.4, static angle 0.5 rad, Gamma = 10, f = 30 Hz, g = 10 m/s^2.
+    Authors,
+}
+
+/// Flags of the chapter. Unset physical flags take the chosen scene's value.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Args {
+    /// Scene whose values the other flags override [default: jamming].
+    #[arg(long, value_enum, default_value_t = Scene::Jamming)]
+    pub scene: Scene,
+    /// Rod length L (m) [scene: 0.15].
+    #[arg(long = "length-m")]
+    pub length_m: Option<f64>,
+    /// Tip mass m (kg) [scene: 1].
+    #[arg(long = "mass-kg")]
+    pub mass_kg: Option<f64>,
+    /// Torsion-spring stiffness k (N m/rad) [scene: 10].
+    #[arg(long)]
+    pub stiffness: Option<f64>,
+    /// Torsion damper gamma (N m s/rad) [scene: 0.01].
+    #[arg(long)]
+    pub damping: Option<f64>,
+    /// Coulomb friction coefficient mu at the foot C (1) [scene: 0.4].
+    #[arg(long)]
+    pub mu: Option<f64>,
+    /// Spring rest angle theta_0 from the vertical (rad), in (-pi/2, pi/2)
+    /// [jamming: 0.3; authors: 0.4281, from k (0.5 - theta_0) = m g L sin(0.5)].
+    #[arg(long = "theta0-rad")]
+    pub theta0_rad: Option<f64>,
+    /// Peak plate acceleration over g, Gamma = delta omega^2 / g (1) [jamming: 3; authors: 10].
+    #[arg(long)]
+    pub gamma: Option<f64>,
+    /// Plate frequency f (Hz) [scene: 30].
+    #[arg(long = "frequency-hz")]
+    pub frequency_hz: Option<f64>,
+    /// Simulated time (s) [10; 2 with --quick].
+    #[arg(long = "duration-s")]
+    pub duration_s: Option<f64>,
+    /// Lever arm of the collision map: `actual` (the angle at landing, what the physics
+    /// supports) or `reset` (the document's theta_0) [default: actual].
+    #[arg(long = "collision-angle", value_enum, default_value_t = CollisionAngle::Actual)]
+    pub collision_angle: CollisionAngle,
+    /// Relative (and absolute) tolerance of Dormand-Prince in the contact modes (1) [1e-10].
+    #[arg(long, default_value_t = 1e-10)]
+    pub rtol: f64,
+}
+
+/// The scene's parameters with `g` (m/s^2): the flag, or the scene's own (10 for the
+/// authors' scene, 9.81 otherwise).
+pub fn scene_params(scene: Scene, g_flag: Option<f64>) -> StickParams {
+    match scene {
+        Scene::Authors => authors_scene(g_flag.unwrap_or(10.0)),
+        Scene::Jamming => jamming_scene(g_flag.unwrap_or(Context::G_DEFAULT_MPS2)),
+    }
+}
+
+/// Validated parameters, duration (s) and options from the flags.
+pub fn setup(args: &Args, ctx: &Context) -> Result<(StickParams, f64, Options)> {
+    let base = scene_params(args.scene, ctx.g_mps2);
+    let half_pi = std::f64::consts::FRAC_PI_2;
+    let l = positive("--length-m", args.length_m.unwrap_or(base.length_m), "m")?;
+    let m = positive("--mass-kg", args.mass_kg.unwrap_or(base.mass_kg), "kg")?;
+    let k = non_negative(
+        "--stiffness",
+        args.stiffness.unwrap_or(base.stiffness_nm_per_rad),
+        "N m/rad",
+    )?;
+    let c = non_negative(
+        "--damping",
+        args.damping.unwrap_or(base.damping_nms_per_rad),
+        "N m s/rad",
+    )?;
+    let mu = non_negative("--mu", args.mu.unwrap_or(base.mu), "1")?;
+    let th0 = check(
+        "--theta0-rad",
+        args.theta0_rad.unwrap_or(base.theta0_rad),
+        |v| v.abs() < half_pi,
+        "-pi/2 < value < pi/2 (rad), i.e. strictly between -90 and 90 degrees",
+    )?;
+    let gam = non_negative("--gamma", args.gamma.unwrap_or(base.gamma_accel()), "1")?;
+    let f = positive(
+        "--frequency-hz",
+        args.frequency_hz.unwrap_or(base.frequency_hz()),
+        "Hz",
+    )?;
+    let default_duration = if ctx.quick { 2.0 } else { 10.0 };
+    let dur = check(
+        "--duration-s",
+        args.duration_s.unwrap_or(default_duration),
+        |v| v > 0.0 && v <= 1e4,
+        "0 < value <= 10000 (s)",
+    )?;
+    let rtol = check(
+        "--rtol",
+        args.rtol,
+        |v| (1e-14..=1e-2).contains(&v),
+        "1e-14 <= value <= 1e-2 (1)",
+    )?;
+    let mut p = StickParams::new(l, m, k, c, mu, th0, base.g_mps2, gam, f);
+    p.collision_angle = args.collision_angle;
+    let opts = Options {
+        control: StepControl::tol(rtol, rtol),
+        ..Options::default()
+    };
+    Ok((p, dur, opts))
+}
+
+/// One run of a scene from its static equilibrium (or theta_0 if the spring cannot hold
+/// the stick up), C at x = 0 on the plate at t = 0.
+pub fn run_scene(p: &StickParams, duration_s: f64, opts: &Options, rec: Recording) -> RunSummary {
+    let model = StickModel::new(*p);
+    let th = p.static_angle().unwrap_or(p.theta0_rad);
+    let y0 = initial_state(&model, 0.0, th);
+    simulate_stick(&model, 0.0, y0, duration_s, opts, rec)
+}
+
+/// The `event_counts` object: transitions `from_to_to` that occurred, plus `jams`.
+pub fn event_counts(s: &RunSummary) -> Value {
+    let mut o = Map::new();
+    for from in Mode::ALL {
+        for to in Mode::ALL {
+            let n = s.transitions[from.index()][to.index()];
+            if n > 0 {
+                o.insert(format!("{}_to_{}", from.name(), to.name()), json!(n));
+            }
+        }
+    }
+    o.insert("jams".into(), json!(s.jams));
+    Value::Object(o)
+}
+
+/// The `phase_fractions` object.
+pub fn phase_fractions(s: &RunSummary) -> Value {
+    let f = s.phase_fractions();
+    let mut o = Map::new();
+    for m in Mode::ALL {
+        o.insert(m.name().into(), json!(round(f[m.index()], 6)));
+    }
+    Value::Object(o)
+}
+
+/// Rounds to `d` significant digits for the results (keeps JSON and tables stable
+/// beyond the checked accuracy).
+pub fn round(x: f64, d: i32) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return if x.is_finite() { 0.0 } else { f64::NAN };
+    }
+    let e = d - 1 - x.abs().log10().floor() as i32;
+    let s = 10f64.powi(e);
+    (x * s).round() / s
+}
+
+/// Runs the chapter.
+pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
+    let (p, dur, opts) = setup(args, ctx)?;
+    let mut r = super::info(ID).expect("registered").report();
+    r.param("scene", format!("{:?}", args.scene).to_lowercase());
+    r.param("length_m", p.length_m);
+    r.param("mass_kg", p.mass_kg);
+    r.param("stiffness_nm_per_rad", p.stiffness_nm_per_rad);
+    r.param("damping_nms_per_rad", p.damping_nms_per_rad);
+    r.param("mu", p.mu);
+    r.param("theta0_rad", round(p.theta0_rad, 10));
+    r.param("gamma", p.gamma_accel());
+    r.param("frequency_hz", p.frequency_hz());
+    r.param("g_mps2", p.g_mps2);
+    r.param("duration_s", dur);
+    r.param(
+        "collision_angle",
+        format!("{:?}", p.collision_angle).to_lowercase(),
+    );
+    r.param("rtol", args.rtol);
+
+    let rec = Recording {
+        sequence_cap: 4000,
+        trace_dt_s: 0.0,
+        check_invariants: true,
+    };
+    let main = run_scene(&p, dur, &opts, rec);
+    let reason = match &main.outcome {
+        crate::physics::stick::run::StickOutcome::Invalid(why) => why.clone(),
+        _ => String::new(),
+    };
+    r.result("outcome", main.outcome.label());
+    r.result("outcome_reason", reason);
+    r.result("end_time_s", round(main.end_time_s, 9));
+    r.result("mean_velocity_mps", round(main.mean_velocity_mps, 6));
+    r.result("phase_fractions", phase_fractions(&main));
+    r.result("event_counts", event_counts(&main));
+    r.result("hops", main.hops as u64);
+    let b = &main.budget;
+    r.result(
+        "energy_budget_j",
+        json!({
+            "plate_work": round(b.plate_work_j, 6),
+            "delta_mechanical": round(b.delta_mechanical_j, 6),
+            "friction": round(b.friction_j, 6),
+            "damper": round(b.damper_j, 6),
+            "impact": round(b.impact_j, 6),
+            "relative_residual_below_1e-5": b.relative_residual() < 1e-5,
+        }),
+    );
+
+    let ev = evidence::collect(ctx, &opts);
+    claims::add_all(&mut r, &ev, &main, &p);
+    r.table("stick-scenes", evidence::scenes_table(&ev));
+
+    if let Some(dir) = ctx.figure_dir(ID) {
+        let paths = figures::draw_all(&dir, &p, &main, &ev, ctx, &opts)?;
+        r.figures.extend(paths);
+    }
+    Ok(r)
+}

@@ -1,0 +1,37 @@
+//! Helpers shared by the integration tests: the command line run in-process, and the
+//! bad-input contract (exit code 2, nothing on stdout, one stderr line naming the flag).
+#![allow(dead_code)] // each test binary uses its own subset
+
+use locomotion_workbook::cli::run_cli;
+
+/// Runs `workbook <args...>` in-process; returns (exit code, stdout, stderr).
+pub fn run(args: &[&str]) -> (i32, String, String) {
+    let (mut out, mut err) = (Vec::new(), Vec::new());
+    let full = std::iter::once("workbook").chain(args.iter().copied());
+    let code = run_cli(full, &mut out, &mut err);
+    (
+        code,
+        String::from_utf8(out).expect("utf-8 stdout"),
+        String::from_utf8(err).expect("utf-8 stderr"),
+    )
+}
+
+/// Runs `workbook <prefix...> <args...>`.
+pub fn run_with(prefix: &[&str], args: &[&str]) -> (i32, String, String) {
+    let all: Vec<&str> = prefix.iter().chain(args).copied().collect();
+    run(&all)
+}
+
+/// Asserts the bad-input contract for `workbook <args...>`: exit code 2, empty stdout,
+/// exactly one stderr line, and that line names `flag`.
+pub fn assert_bad_input(args: &[&str], flag: &str) {
+    let (code, out, err) = run(args);
+    assert_eq!(code, 2, "{args:?}: exit code");
+    assert!(out.is_empty(), "{args:?}: stdout {out}");
+    assert_eq!(
+        err.trim_end().lines().count(),
+        1,
+        "{args:?}: one line, got {err}"
+    );
+    assert!(err.contains(flag), "{args:?}: {err} should name {flag}");
+}
