@@ -13,12 +13,13 @@
 //!   slip before takeoff scales with b);
 //! - the chapter's JSON keys, verdicts, failures and bad input per flag.
 
+mod common;
+
 use locomotion_workbook::chapters::speed_vs_accuracy::block_scene::BlockScene;
 use locomotion_workbook::chapters::speed_vs_accuracy::economy::flight_map_drift;
 use locomotion_workbook::chapters::speed_vs_accuracy::measure::{
     drift_block_model, drift_mj, window, Measured,
 };
-use locomotion_workbook::cli::run_cli;
 use locomotion_workbook::numerics::hybrid::{Options, Transition};
 use locomotion_workbook::numerics::ode::StepControl;
 use locomotion_workbook::physics::block::{BlockMode, BlockSystem};
@@ -26,15 +27,7 @@ use locomotion_workbook::physics::plate::PlateMotion;
 use serde_json::Value;
 
 fn run(args: &[&str]) -> (i32, String, String) {
-    let (mut out, mut err) = (Vec::new(), Vec::new());
-    let mut full = vec!["workbook", "speed-vs-accuracy"];
-    full.extend_from_slice(args);
-    let code = run_cli(full, &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-    )
+    common::run_with(&["speed-vs-accuracy"], args)
 }
 
 fn scene() -> BlockScene {
@@ -323,10 +316,9 @@ fn bad_input_names_the_flag() {
         ("--restitution", "0.9"),
         ("--restitution", "NaN"),
     ] {
-        let (code, out, err) = run(&[flag, bad, "--quick", "--no-figures"]);
-        assert_eq!(code, 2, "{flag} {bad}");
-        assert!(out.is_empty(), "{flag} {bad}: {out}");
-        assert_eq!(err.trim_end().lines().count(), 1, "{flag} {bad}: {err}");
-        assert!(err.contains(flag), "{flag} {bad}: {err}");
+        common::assert_bad_input(
+            &["speed-vs-accuracy", flag, bad, "--quick", "--no-figures"],
+            flag,
+        );
     }
 }
