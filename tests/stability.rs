@@ -20,9 +20,10 @@
 use locomotion_workbook::numerics::events::Direction;
 use locomotion_workbook::numerics::hybrid::{simulate, HybridSystem, Options, Outcome, Transition};
 use locomotion_workbook::numerics::ode::{Integrator, Method, OdeError, StepControl};
-use locomotion_workbook::numerics::timestepping::{
-    self as mj, ContactModel, ContactStatus, MjOptions,
-};
+use locomotion_workbook::numerics::timestepping::{self as mj, ContactStatus, MjOptions};
+use locomotion_workbook::physics::block::contact_form::BlockContact;
+use locomotion_workbook::physics::block::BlockParams;
+use locomotion_workbook::physics::plate::{Axis, Harmonic};
 use std::f64::consts::TAU;
 
 const G: f64 = 9.81;
@@ -255,32 +256,6 @@ fn unlocated_stick_slip_switches_are_late_by_up_to_a_step() {
 
 // ---------------------------------------------------------------- Zeno
 
-/// The same ball as a Moreau-Jean contact model: q = (x, z).
-struct MjBall {
-    e: f64,
-}
-
-impl ContactModel<2> for MjBall {
-    fn inv_mass(&self, _t: f64, _q: &[f64; 2], _h: f64) -> [[f64; 2]; 2] {
-        [[1.0, 0.0], [0.0, 1.0]]
-    }
-    fn free_velocity(&self, _t: f64, _q: &[f64; 2], v: &[f64; 2], h: f64) -> [f64; 2] {
-        [v[0], v[1] - G * h]
-    }
-    fn gap(&self, _t: f64, q: &[f64; 2]) -> f64 {
-        q[1]
-    }
-    fn jacobians(&self, _t: f64, _q: &[f64; 2]) -> ([f64; 2], [f64; 2]) {
-        ([0.0, 1.0], [1.0, 0.0])
-    }
-    fn restitution(&self) -> f64 {
-        self.e
-    }
-    fn mu(&self) -> f64 {
-        0.5
-    }
-}
-
 #[test]
 fn zeno_bouncing_stops_the_event_driver_and_moreau_jean_passes_to_rest() {
     // Closed form: from 1 m, t1 = sqrt(2/g); flights 2 t1 e^k sum to
@@ -314,8 +289,14 @@ fn zeno_bouncing_stops_the_event_driver_and_moreau_jean_passes_to_rest() {
     let h = 1e-3;
     let mut rest_from = f64::NAN;
     let mut impacts = 0;
+    // The same ball for Moreau-Jean: the block model's contact form (a point mass,
+    // q = (x, z)) on a plate at rest, no bias.
+    let floor = Harmonic::sine(Axis::Z, 0.0, 1.0);
+    let mut params = BlockParams::coulomb(G, 0.5, 0.0);
+    params.restitution = e;
+    let mj_ball = BlockContact::new(params, &floor).expect("Coulomb friction");
     let run = mj::simulate(
-        &MjBall { e },
+        &mj_ball,
         0.0,
         [0.0, 1.0],
         [0.0, 0.0],
