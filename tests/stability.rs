@@ -18,7 +18,9 @@
 //!   same state crosses theta = 0 smoothly.
 
 use locomotion_workbook::numerics::events::Direction;
-use locomotion_workbook::numerics::hybrid::{simulate, HybridSystem, Options, Outcome, Transition};
+use locomotion_workbook::numerics::hybrid::{
+    simulate, HybridSystem, Options, Outcome, Run, Transition,
+};
 use locomotion_workbook::numerics::ode::{Integrator, Method, OdeError, StepControl};
 use locomotion_workbook::numerics::timestepping::{self as mj, ContactStatus, MjOptions};
 use locomotion_workbook::physics::block::contact_form::BlockContact;
@@ -90,21 +92,45 @@ fn the_failure_is_stability_not_accuracy() {
 
 // ---------------------------------------------------------------- events
 
-/// A ball above a fixed floor (height, velocity); guard: height falling. e = 0 stops.
-struct Ball {
+/// A point under constant acceleration `accel` (m/s^2), state `(position, velocity)`,
+/// with one guard: component `watch` falling through zero. At the event the velocity is
+/// reversed and scaled by `e` if `e > 0` (a bounce), else the run stops.
+/// - A ball above a fixed floor: `accel = -g`, `watch = 0` (height), restitution `e`.
+/// - A block sliding on a floor: `accel = -mu g`, `watch = 1` (velocity), `e = 0`: the
+///   slip-to-stick switch stops the run.
+struct Uniform {
+    accel: f64,
+    watch: usize,
     e: f64,
 }
 
-impl HybridSystem<2> for Ball {
+impl Uniform {
+    fn ball(e: f64) -> Self {
+        Uniform {
+            accel: -G,
+            watch: 0,
+            e,
+        }
+    }
+    fn slider(mu: f64) -> Self {
+        Uniform {
+            accel: -mu * G,
+            watch: 1,
+            e: 0.0,
+        }
+    }
+}
+
+impl HybridSystem<2> for Uniform {
     type Mode = ();
     type Stop = &'static str;
     fn flow(&self, _m: (), _t: f64, y: &[f64; 2]) -> [f64; 2] {
-        [y[1], -G]
+        [y[1], self.accel]
     }
     fn max_step(&self, _m: (), _t: f64, y: &[f64; 2]) -> f64 {
         // Leaving the floor, step at most to the apex so the guard is seen positive.
-        if y[0] <= 0.0 && y[1] > 0.0 {
-            y[1] / G
+        if self.watch == 0 && y[0] <= 0.0 && y[1] > 0.0 {
+            y[1] / -self.accel
         } else {
             f64::INFINITY
         }
@@ -113,7 +139,7 @@ impl HybridSystem<2> for Ball {
         1
     }
     fn guard(&self, _m: (), _i: usize, _t: f64, y: &[f64; 2]) -> f64 {
-        y[0]
+        y[self.watch]
     }
     fn direction(&self, _m: (), _i: usize) -> Direction {
         Direction::Falling
@@ -126,45 +152,13 @@ impl HybridSystem<2> for Ball {
         y: &[f64; 2],
     ) -> Transition<(), &'static str, 2> {
         if self.e == 0.0 {
-            Transition::Stop("landed")
+            Transition::Stop("event")
         } else {
             Transition::To {
                 mode: (),
                 state: [0.0, -self.e * y[1]],
             }
         }
-    }
-}
-
-/// A block sliding on a floor (position, velocity > 0), decelerating at mu g; guard:
-/// velocity falling through zero (the slip-to-stick switch), which stops the run.
-struct Slider {
-    mu: f64,
-}
-
-impl HybridSystem<2> for Slider {
-    type Mode = ();
-    type Stop = &'static str;
-    fn flow(&self, _m: (), _t: f64, _y: &[f64; 2]) -> [f64; 2] {
-        [_y[1], -self.mu * G]
-    }
-    fn guard_count(&self, _m: ()) -> usize {
-        1
-    }
-    fn guard(&self, _m: (), _i: usize, _t: f64, y: &[f64; 2]) -> f64 {
-        y[1]
-    }
-    fn direction(&self, _m: (), _i: usize) -> Direction {
-        Direction::Falling
-    }
-    fn on_event(
-        &self,
-        _m: (),
-        _i: usize,
-        _t: f64,
-        _y: &[f64; 2],
-    ) -> Transition<(), &'static str, 2> {
-        Transition::Stop("stuck")
     }
 }
 
@@ -177,6 +171,20 @@ fn fixed(method: Method, h: f64, locate: bool) -> Options {
     }
 }
 
+/// `sys` from `y0` at t = 0 with RK4 at the fixed step `h`, events located or not,
+/// until the event stops it (or t = 2 s).
+fn rk4_run(sys: &Uniform, y0: [f64; 2], h: f64, locate: bool) -> Run<(), &'static str, 2> {
+    simulate(
+        sys,
+        (),
+        0.0,
+        y0,
+        2.0,
+        &fixed(Method::Rk4, h, locate),
+        &mut (),
+    )
+}
+
 #[test]
 fn unlocated_impacts_are_late_by_up_to_a_step_located_ones_exact() {
     // Closed form: the ball dropped from 1 m lands at sqrt(2/g). Unlocated, the event
@@ -186,27 +194,11 @@ fn unlocated_impacts_are_late_by_up_to_a_step_located_ones_exact() {
     let exact = (2.0 / G).sqrt();
     let mut errs = Vec::new();
     for h in [1e-2, 1e-3, 1e-4] {
-        let run = simulate(
-            &Ball { e: 0.0 },
-            (),
-            0.0,
-            [1.0, 0.0],
-            2.0,
-            &fixed(Method::Rk4, h, false),
-            &mut (),
-        );
+        let run = rk4_run(&Uniform::ball(0.0), [1.0, 0.0], h, false);
         let err = run.t_end_s - exact;
         assert!(err > 0.0 && err <= h * (1.0 + 1e-9), "h {h}: late by {err}");
         errs.push(err);
-        let run = simulate(
-            &Ball { e: 0.0 },
-            (),
-            0.0,
-            [1.0, 0.0],
-            2.0,
-            &fixed(Method::Rk4, h, true),
-            &mut (),
-        );
+        let run = rk4_run(&Uniform::ball(0.0), [1.0, 0.0], h, true);
         assert!(
             (run.t_end_s - exact).abs() < 1e-12,
             "located: {}",
@@ -225,26 +217,10 @@ fn unlocated_stick_slip_switches_are_late_by_up_to_a_step() {
     let (v0, mu) = (1.0, 0.4);
     let exact = v0 / (mu * G);
     for h in [1e-2, 1e-3] {
-        let run = simulate(
-            &Slider { mu },
-            (),
-            0.0,
-            [0.0, v0],
-            2.0,
-            &fixed(Method::Rk4, h, false),
-            &mut (),
-        );
+        let run = rk4_run(&Uniform::slider(mu), [0.0, v0], h, false);
         let late = run.t_end_s - exact;
         assert!(late > 0.0 && late <= h * (1.0 + 1e-9), "h {h}: {late}");
-        let run = simulate(
-            &Slider { mu },
-            (),
-            0.0,
-            [0.0, v0],
-            2.0,
-            &fixed(Method::Rk4, h, true),
-            &mut (),
-        );
+        let run = rk4_run(&Uniform::slider(mu), [0.0, v0], h, true);
         assert!(
             (run.t_end_s - exact).abs() < 1e-12,
             "located: {}",
@@ -265,7 +241,7 @@ fn zeno_bouncing_stops_the_event_driver_and_moreau_jean_passes_to_rest() {
     let t_inf = t1 * (1.0 + e) / (1.0 - e);
     // Event-driven: infinitely many events before t_inf; the driver stops there.
     let run = simulate(
-        &Ball { e },
+        &Uniform::ball(e),
         (),
         0.0,
         [1.0, 0.0],
