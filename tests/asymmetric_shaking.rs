@@ -15,13 +15,12 @@
 //! linear law at rtol = atol = 1e-12: 1e-9 m/s (see `claims::LINEAR_TOL`).
 
 use locomotion_workbook::chapters::asymmetric_shaking::claims::slip_transient;
-use locomotion_workbook::chapters::asymmetric_shaking::sims::{run_block, Numerics, Window};
+use locomotion_workbook::chapters::asymmetric_shaking::sims::{run_block, Law, Numerics, Window};
 use locomotion_workbook::cli::run_cli;
 use locomotion_workbook::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion, Sawtooth};
 use locomotion_workbook::physics::sawtooth::biharmonic::{
     always_slipping_drift, stick_forever_gamma,
 };
-use locomotion_workbook::physics::sawtooth::sim::Law;
 use locomotion_workbook::physics::sawtooth::{
     drift_velocity_mps, linear_periodic_start_velocity_mps, lock_time_s, steady_regime,
     steady_velocity_mps, Mirrored, Regime,

@@ -459,29 +459,31 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                 t = t1;
                 y = y1;
                 std::mem::swap(&mut guards0, &mut guards1);
-                if Some(t1) == bp {
-                    integ.restart();
-                    match sys.on_breakpoint(mode, t, &y) {
-                        Transition::To { mode: m, state } => {
-                            if m != mode {
-                                run.event_count += 1;
-                                if opts.record_events {
-                                    run.events.push(EventRecord {
-                                        t_s: t,
-                                        from: mode,
-                                        guard: usize::MAX,
-                                        to: Some(m),
-                                    });
-                                }
-                            }
-                            mode = m;
-                            y = state;
-                            // Guards may jump at a breakpoint: re-evaluate them.
-                            fresh_mode = true;
+            }
+        }
+        // On a breakpoint (reached by a step, or by an event located exactly on it,
+        // after that event's transition): the breakpoint's transition.
+        if Some(t) == bp {
+            integ.restart();
+            match sys.on_breakpoint(mode, t, &y) {
+                Transition::To { mode: m, state } => {
+                    if m != mode {
+                        run.event_count += 1;
+                        if opts.record_events {
+                            run.events.push(EventRecord {
+                                t_s: t,
+                                from: mode,
+                                guard: usize::MAX,
+                                to: Some(m),
+                            });
                         }
-                        Transition::Stop(x) => break 'outer Outcome::Stopped(x),
                     }
+                    mode = m;
+                    y = state;
+                    // Guards may jump at a breakpoint: re-evaluate them.
+                    fresh_mode = true;
                 }
+                Transition::Stop(x) => break 'outer Outcome::Stopped(x),
             }
         }
     };

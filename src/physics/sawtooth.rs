@@ -19,11 +19,10 @@
 //! Linear law `v' = -c (v - v_p)`: the mean velocity over a period of the periodic orbit
 //! equals the plate's, zero ([`linear_periodic_start_velocity_mps`] gives the orbit).
 //!
-//! The smooth drive `v_p = V (sin wt + eps cos 2wt)` is in [`biharmonic`]; the hybrid
-//! block models used to check every closed form are in [`sim`].
+//! The smooth drive `v_p = V (sin wt + eps cos 2wt)` is in [`biharmonic`]; every closed
+//! form is checked against the shared block model, [`crate::physics::block`].
 
 pub mod biharmonic;
-pub mod sim;
 
 use super::plate::{PlateMotion, Sawtooth};
 
@@ -183,90 +182,6 @@ impl<P: PlateMotion> PlateMotion for Mirrored<P> {
     }
     fn breakpoint_after(&self, t: f64) -> Option<f64> {
         self.0.breakpoint_after(t)
-    }
-}
-
-/// A plate whose breakpoints survive rounding (a wrapper for event-driven models).
-///
-/// Two things went wrong with the bare [`Sawtooth`] at its breakpoints before it got
-/// canonical breakpoint floats (main, commit 7124b36), because `t - floor(t/T) T`
-/// rounds: (1) the velocity at the float returned by [`PlateMotion::breakpoint_after`]
-/// could still be the old stroke's, and (2) a time that lands a few ulps *before* a
-/// breakpoint (a sum of fixed steps, `0.09 + 32 x 0.000625 = 0.10999999999999999`)
-/// counted as "at" it, so `breakpoint_after` returned the next one and the stroke change
-/// was skipped. The sawtooth is now exact; this wrapper keeps any piecewise plate safe:
-/// it makes one float `b` per breakpoint the dividing line (within
-/// `d = 1e-12 T + 32 ulps(t)` of `b` it evaluates velocity and acceleration on the side
-/// of `b` where `t` lies; times `>= b` get the new piece) and returns `b` itself to any
-/// time before it, so a driver steps onto it. On the canonical sawtooth it changes
-/// nothing.
-#[derive(Debug, Clone, Copy)]
-pub struct Snapped<'a, P: ?Sized>(pub &'a P);
-
-impl<P: PlateMotion + ?Sized> Snapped<'_, P> {
-    /// Half-width of the window around a breakpoint (s): wider than the plate's own
-    /// "at a breakpoint" tolerance (8 ulps of max(t, T)).
-    fn window(&self, t: f64) -> f64 {
-        1e-12 * self.0.period_s() + 32.0 * f64::EPSILON * t.abs()
-    }
-
-    /// The breakpoint at or after `t - d`, in one canonical float: the plate can return
-    /// two floats an ulp or two apart for the same breakpoint (`0.28 + 0.03` from one
-    /// period, `0.24 + 0.04 + 0.03` from the one before); this one is computed from a
-    /// time `d` before the breakpoint, safely inside the stroke that it ends.
-    fn near(&self, t: f64) -> Option<f64> {
-        let b = self.0.breakpoint_after(t - self.window(t))?;
-        self.0.breakpoint_after(b - self.window(b))
-    }
-
-    /// `t`, or, within `d` of a breakpoint `b`, a time safely on the same side of it:
-    /// `b - d` for `t < b` (the old stroke), `b + d` for `t >= b` (the new one).
-    fn snap(&self, t: f64) -> f64 {
-        let d = self.window(t);
-        match self.near(t) {
-            Some(b) if (b - t).abs() <= d => {
-                if t < b {
-                    b - d
-                } else {
-                    b + d
-                }
-            }
-            _ => t,
-        }
-    }
-}
-
-impl<P: PlateMotion + ?Sized> PlateMotion for Snapped<'_, P> {
-    fn x_m(&self, t: f64) -> f64 {
-        self.0.x_m(t)
-    }
-    fn vx_mps(&self, t: f64) -> f64 {
-        self.0.vx_mps(self.snap(t))
-    }
-    fn ax_mps2(&self, t: f64) -> f64 {
-        self.0.ax_mps2(self.snap(t))
-    }
-    fn z_m(&self, t: f64) -> f64 {
-        self.0.z_m(t)
-    }
-    fn vz_mps(&self, t: f64) -> f64 {
-        self.0.vz_mps(self.snap(t))
-    }
-    fn az_mps2(&self, t: f64) -> f64 {
-        self.0.az_mps2(self.snap(t))
-    }
-    fn period_s(&self) -> f64 {
-        self.0.period_s()
-    }
-    fn breakpoint_after(&self, t: f64) -> Option<f64> {
-        // The breakpoint at or after t - d: itself if still ahead of t, else the next
-        // (the one at or after b + 2d, inside the following stroke).
-        let b = self.near(t)?;
-        if b > t {
-            Some(b)
-        } else {
-            self.near(b + 2.0 * self.window(b))
-        }
     }
 }
 

@@ -1,11 +1,10 @@
 //! The checks of the chapter: every claim of section 3.2 against the closed forms of
 //! `physics::sawtooth` and the event-driven simulation of `physics::block`.
 
-use super::sims::{run_block, DriftRun, Numerics, Window};
+use super::sims::{run_block, DriftRun, Law, Numerics, Window};
 use super::Scene;
 use crate::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion, Sawtooth};
 use crate::physics::sawtooth::biharmonic::{always_slipping_drift, stick_forever_gamma};
-use crate::physics::sawtooth::sim::Law;
 use crate::physics::sawtooth::{
     drift_velocity_mps, lock_time_s, slipping_impulse_per_mass, steady_regime, Mirrored, Regime,
 };

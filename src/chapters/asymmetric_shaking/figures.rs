@@ -3,12 +3,11 @@
 //! the work-precision chart. Sweeps here feed figures only.
 
 use super::claims::{biharmonic, slip_transient, transient, Traces};
-use super::sims::{run_block, Numerics, Window};
+use super::sims::{run_block, Law, Numerics, Window};
 use super::Scene;
 use crate::error::Result;
 use crate::physics::plate::{PlateMotion, Sawtooth};
 use crate::physics::sawtooth::biharmonic::{always_slipping_drift, stick_forever_gamma};
-use crate::physics::sawtooth::sim::Law;
 use crate::physics::sawtooth::{drift_ratio, drift_velocity_mps, lock_time_s, steady_velocity_mps};
 use crate::plot::{save_chart, save_heatmap, save_panels, Chart, HeatMap, Legend, Series};
 use crate::sweep::{linspace, logspace, par_map};

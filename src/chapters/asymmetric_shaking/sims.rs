@@ -1,12 +1,41 @@
-//! The simulations of the chapter: the event-driven block of
-//! [`crate::physics::sawtooth::sim`] (Coulomb or viscous contact) run on the chapter's
-//! plates by the hybrid driver, with an observer that reads the window's mean velocity,
-//! the velocity extremes, the first stick and the friction direction off every segment.
+//! The simulations of the chapter: the shared block model of [`crate::physics::block`]
+//! (Coulomb or viscous contact) run on the chapter's plates by the hybrid driver, with an
+//! observer that reads the window's mean velocity, the velocity extremes, the first stick
+//! and the friction direction off every segment.
 
-use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment};
+use crate::numerics::hybrid::{Observer, Options, Outcome, Segment};
 use crate::numerics::ode::{Method, Stats, StepControl};
+use crate::physics::block::{
+    simulate_block_observed, BlockMode, BlockOptions, BlockParams, BlockStop, BlockSystem,
+};
 use crate::physics::plate::PlateMotion;
-use crate::physics::sawtooth::sim::{Block, Contact, Law, Mode};
+
+/// The friction law of the chapter's block (the plates move horizontally only, so the
+/// normal force per unit mass is g and Coulomb friction is bounded by `k = mu g`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Law {
+    /// Coulomb friction: slip deceleration bound `k = mu g` (m/s^2).
+    Coulomb {
+        /// `mu g` (m/s^2).
+        k_mps2: f64,
+    },
+    /// Linear viscous friction `F/m = -c (v - v_p)`.
+    Viscous {
+        /// `c` (1/s).
+        c_per_s: f64,
+    },
+}
+
+impl Law {
+    /// The block's parameters: a unit normal force per unit mass (`g = 1`, exact for
+    /// horizontal plates) and `mu = k`, so that `mu n = k` holds without round-off.
+    fn params(self) -> BlockParams {
+        match self {
+            Law::Coulomb { k_mps2 } => BlockParams::coulomb(1.0, k_mps2, 0.0),
+            Law::Viscous { c_per_s } => BlockParams::viscous(1.0, c_per_s, 0.0),
+        }
+    }
+}
 
 /// Whole periods of a run: `transient` dropped, then `measured` averaged.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -45,22 +74,35 @@ pub struct DriftRun {
     /// Events (contact changes).
     pub events: usize,
     /// How the run ended (`Completed` unless the driver stopped it).
-    pub outcome: Outcome<()>,
+    pub outcome: Outcome<BlockStop>,
 }
 
-/// The segment's state at `t`: its end states at its ends, its dense output inside.
-fn state_at(seg: &Segment<'_, 2>, t: f64) -> [f64; 2] {
-    if t <= seg.t0 {
+/// The segment's absolute `(x, v)` at `t`: its end states at its ends, its dense output
+/// inside, with the plate of the segment's own piece.
+fn state_at<P: PlateMotion + ?Sized>(
+    sys: &BlockSystem<'_, P>,
+    seg: &Segment<'_, 4>,
+    t: f64,
+) -> (f64, f64) {
+    let y = if t <= seg.t0 {
         seg.y0
     } else if t >= seg.t1 {
         seg.y1
     } else {
         seg.eval(t)
-    }
+    };
+    let t = t.clamp(seg.t0, seg.t1);
+    let a = sys.absolute_in_piece(seg.t0, t, &y);
+    (a[0], a[1])
+}
+
+/// Plate velocity (m/s) at `t` in the piece of the segment `[t0, t1]`.
+fn plate_velocity<P: PlateMotion + ?Sized>(sys: &BlockSystem<'_, P>, t0: f64, t: f64) -> f64 {
+    sys.absolute_in_piece(t0, t, &[0.0; 4])[1]
 }
 
 struct Watch<'b, 'a, P: PlateMotion + ?Sized> {
-    block: &'b Block<'a, P>,
+    sys: &'b BlockSystem<'a, P>,
     window: (f64, f64),
     trace_s: (f64, f64),
     trace_dt: f64,
@@ -69,36 +111,37 @@ struct Watch<'b, 'a, P: PlateMotion + ?Sized> {
     first_stick: Option<f64>,
     backward_stick: bool,
     against_plate: bool,
-    ends: [Option<[f64; 2]>; 2],
+    ends: [Option<(f64, f64)>; 2],
     trace: Vec<(f64, f64, f64)>,
 }
 
-impl<P: PlateMotion + ?Sized> Observer<Mode, 2> for Watch<'_, '_, P> {
-    fn segment(&mut self, mode: Mode, seg: &Segment<'_, 2>) {
+impl<P: PlateMotion + ?Sized> Observer<BlockMode, 4> for Watch<'_, '_, P> {
+    fn segment(&mut self, mode: BlockMode, seg: &Segment<'_, 4>) {
+        let sys = self.sys;
         let (a, b) = self.window;
         // Window ends: the first segment that reaches t_a, the last that reaches t_b.
         if seg.t0 <= a && a <= seg.t1 && self.ends[0].is_none() {
-            self.ends[0] = Some(state_at(seg, a));
+            self.ends[0] = Some(state_at(sys, seg, a));
         }
         if seg.t0 <= b && b <= seg.t1 {
-            self.ends[1] = Some(state_at(seg, b));
+            self.ends[1] = Some(state_at(sys, seg, b));
         }
         if seg.t1 > a && seg.t0 < b && seg.t1 > seg.t0 {
             // Extremes: ends and 7 interior points of the part inside the window.
             let (s0, s1) = (seg.t0.max(a), seg.t1.min(b));
             for j in 0..=8 {
-                let v = state_at(seg, s0 + (s1 - s0) * j as f64 / 8.0)[1];
+                let v = state_at(sys, seg, s0 + (s1 - s0) * j as f64 / 8.0).1;
                 self.v_max = self.v_max.max(v);
                 self.v_min = self.v_min.min(v);
             }
-            let vp = self.block.vp(mode, 0.5 * (seg.t0 + seg.t1));
-            if mode.contact == Contact::Stick && vp < 0.0 {
+            let vp = plate_velocity(sys, seg.t0, 0.5 * (seg.t0 + seg.t1));
+            if mode == BlockMode::Stick && vp < 0.0 {
                 self.backward_stick = true;
             }
-            // SlipBack: friction +mu g; SlipFwd: friction -mu g.
+            // SlipLeft (slower than the plate): friction +mu g; SlipRight: -mu g.
             let along = matches!(
-                (mode.contact, vp > 0.0, vp < 0.0),
-                (Contact::SlipBack, true, _) | (Contact::SlipFwd, _, true)
+                (mode, vp > 0.0, vp < 0.0),
+                (BlockMode::SlipLeft, true, _) | (BlockMode::SlipRight, _, true)
             );
             self.against_plate |= !along;
         }
@@ -108,8 +151,8 @@ impl<P: PlateMotion + ?Sized> Observer<Mode, 2> for Watch<'_, '_, P> {
             let n = ((s1 - s0) / self.trace_dt).ceil().max(1.0) as usize;
             for j in 0..=n {
                 let t = s0 + (s1 - s0) * j as f64 / n as f64;
-                self.trace
-                    .push((t, state_at(seg, t)[1], self.block.vp(mode, t)));
+                let vp = plate_velocity(sys, seg.t0, t.clamp(seg.t0, seg.t1));
+                self.trace.push((t, state_at(sys, seg, t).1, vp));
             }
         }
     }
@@ -117,16 +160,13 @@ impl<P: PlateMotion + ?Sized> Observer<Mode, 2> for Watch<'_, '_, P> {
     fn event(
         &mut self,
         t_s: f64,
-        from: Mode,
+        from: BlockMode,
         _guard: usize,
-        _before: &[f64; 2],
-        after: Option<(Mode, &[f64; 2])>,
+        _before: &[f64; 4],
+        after: Option<(BlockMode, &[f64; 4])>,
     ) {
         if let Some((to, _)) = after {
-            if to.contact == Contact::Stick
-                && from.contact != Contact::Stick
-                && self.first_stick.is_none()
-            {
+            if to == BlockMode::Stick && from != BlockMode::Stick && self.first_stick.is_none() {
                 self.first_stick = Some(t_s);
             }
         }
@@ -141,7 +181,7 @@ pub struct Numerics {
     /// Driver options (method, step control, event location).
     pub hybrid: Options,
     /// Guard samples per period (and longest step) on smooth plates; a piecewise-constant
-    /// plate needs none (see `Block::new`).
+    /// plate needs one (see [`run_block`]).
     pub samples_per_period: usize,
 }
 
@@ -194,6 +234,16 @@ impl Numerics {
     }
 }
 
+/// True if the plate has breakpoints and no acceleration between them (the sawtooth:
+/// checked on 64 points of a period). Then every guard is linear in time within a piece
+/// and crosses zero at most once, and the steps end on the breakpoints anyway: one
+/// guard sample per period is enough.
+fn piecewise_constant<P: PlateMotion + ?Sized>(plate: &P) -> bool {
+    let period = plate.period_s();
+    plate.breakpoint_after(0.0).is_some()
+        && (0..64).all(|i| plate.ax_mps2((i as f64 + 0.5) * period / 64.0) == 0.0)
+}
+
 /// Runs a block that starts at x = 0 with velocity `v0_mps` at t = 0 on `plate` over
 /// `window`; traces `trace_s` every `trace_dt` (0: no trace).
 pub fn run_block<P: PlateMotion + ?Sized>(
@@ -206,16 +256,21 @@ pub fn run_block<P: PlateMotion + ?Sized>(
     trace_dt: f64,
 ) -> DriftRun {
     let period = plate.period_s();
-    let mut block = Block::new(plate, law);
-    block.closed_forms = num.closed_forms;
-    if !block.piecewise_constant {
-        block.sample_s = period / num.samples_per_period.max(1) as f64;
-    }
+    let params = law.params();
+    let sys = BlockSystem::new(params, plate);
+    // Fixed steps keep their own step length; otherwise a piecewise-constant plate
+    // needs one guard sample per period.
+    let fixed = matches!(num.hybrid.control, StepControl::Fixed { .. });
+    let samples_per_period = if piecewise_constant(plate) && !fixed {
+        1
+    } else {
+        num.samples_per_period
+    };
     // Window ends on the plate's own breakpoint floats when there are some (so no
     // sliver step is left between the last breakpoint and the end).
     let on_grid = |n: usize| {
         let t = n as f64 * period;
-        match block.plate().breakpoint_after(t - 1e-9 * period) {
+        match plate.breakpoint_after(t - 1e-9 * period) {
             Some(b) if (b - t).abs() <= 1e-9 * period => b,
             _ => t,
         }
@@ -223,7 +278,7 @@ pub fn run_block<P: PlateMotion + ?Sized>(
     let t_end = on_grid(window.transient + window.measured);
     let win = (on_grid(window.transient), t_end);
     let mut w = Watch {
-        block: &block,
+        sys: &sys,
         window: win,
         trace_s,
         trace_dt,
@@ -235,22 +290,22 @@ pub fn run_block<P: PlateMotion + ?Sized>(
         ends: [None, None],
         trace: Vec::new(),
     };
-    let mode0 = block.start_mode(0.0, v0_mps);
-    let run = simulate(
-        &block,
-        mode0,
-        0.0,
-        [0.0, v0_mps],
-        t_end,
-        &num.hybrid,
-        &mut w,
-    );
+    let opts = BlockOptions {
+        hybrid: num.hybrid,
+        closed_forms: num.closed_forms,
+        samples_per_period,
+        transient_periods: window.transient,
+        record_events: false,
+        start: (0.0, [0.0, v0_mps - plate.vx_mps(0.0), 0.0, 0.0]),
+    };
+    let run = simulate_block_observed(&params, plate, t_end, &opts, &mut w);
     let mean = match w.ends {
         [Some(ya), Some(yb)] if window.measured > 0 && run.outcome == Outcome::Completed => {
-            (yb[0] - ya[0]) / (win.1 - win.0)
+            (yb.0 - ya.0) / (win.1 - win.0)
         } // formula: <v> = (x(t_b) - x(t_a)) / (t_b - t_a)
         _ => f64::NAN,
     };
+    let c = run.total_counts;
     DriftRun {
         mean_velocity_mps: mean,
         v_max_mps: w.v_max,
@@ -259,13 +314,18 @@ pub fn run_block<P: PlateMotion + ?Sized>(
         stuck_in_backward_stroke: w.backward_stick,
         friction_along_plate: !w.against_plate,
         v_window_mps: (
-            w.ends[0].map_or(f64::NAN, |y| y[1]),
-            w.ends[1].map_or(f64::NAN, |y| y[1]),
+            w.ends[0].map_or(f64::NAN, |y| y.1),
+            w.ends[1].map_or(f64::NAN, |y| y.1),
         ),
         trace: w.trace,
         stats: run.stats,
         locate_evals: run.locate_evals,
-        events: run.event_count,
+        events: c.takeoffs
+            + c.landings
+            + c.stick_to_slip
+            + c.slip_to_stick
+            + c.reversals
+            + c.breakpoints,
         outcome: run.outcome,
     }
 }

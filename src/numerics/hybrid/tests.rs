@@ -232,26 +232,30 @@ fn directions_respected_and_ties_go_to_the_lowest_index() {
 }
 
 /// y' = +1 on [k, k + 1/2), -1 on [k + 1/2, k + 1): a triangle wave with kinks at the
-/// breakpoints; the mode carries the sign.
+/// breakpoints; the mode's sign is the slope's. Modes +-3 also have a guard, `y`
+/// rising, whose event latches the mode to +-1.
 struct Triangle;
 
 impl HybridSystem<1> for Triangle {
     type Mode = i8;
     type Stop = ();
     fn flow(&self, m: i8, _t: f64, _y: &[f64; 1]) -> [f64; 1] {
-        [f64::from(m)]
+        [f64::from(m.signum())]
     }
-    fn guard_count(&self, _m: i8) -> usize {
-        0
+    fn guard_count(&self, m: i8) -> usize {
+        usize::from(m.abs() == 3)
     }
-    fn guard(&self, _m: i8, _i: usize, _t: f64, _y: &[f64; 1]) -> f64 {
-        unreachable!()
+    fn guard(&self, _m: i8, _i: usize, _t: f64, y: &[f64; 1]) -> f64 {
+        y[0]
     }
     fn direction(&self, _m: i8, _i: usize) -> Direction {
-        Direction::Either
+        Direction::Rising
     }
-    fn on_event(&self, _m: i8, _i: usize, _t: f64, _y: &[f64; 1]) -> Transition<i8, (), 1> {
-        unreachable!()
+    fn on_event(&self, m: i8, _i: usize, _t: f64, y: &[f64; 1]) -> Transition<i8, (), 1> {
+        Transition::To {
+            mode: m.signum(),
+            state: *y,
+        }
     }
     fn breakpoint_after(&self, t: f64) -> Option<f64> {
         Some(((t * 2.0).floor() + 1.0) / 2.0)
@@ -350,4 +354,16 @@ fn no_sliver_steps_before_breakpoints() {
     assert_eq!(run.outcome, Outcome::Completed);
     assert!((run.y_end[0] - 0.25).abs() < 1e-14, "{}", run.y_end[0]);
     assert_eq!(run.event_count, 6);
+}
+
+#[test]
+fn an_event_located_on_a_breakpoint_is_followed_by_the_breakpoint() {
+    // The triangle wave from y = -1/2 in mode 3 (slope +1, guard y rising): DP5
+    // integrates y' = 1 exactly, so y reaches 0 exactly on the breakpoint t = 1/2; the
+    // event latches mode 1, then the breakpoint must flip it to -1: y(1) = -1/2 exactly
+    // (a lost breakpoint would give +1/2).
+    let run = simulate(&Triangle, 3, 0.0, [-0.5], 1.0, &Options::default(), &mut ());
+    assert_eq!(run.outcome, Outcome::Completed);
+    assert_eq!(run.mode_end, -1);
+    assert!((run.y_end[0] + 0.5).abs() < 1e-14, "{}", run.y_end[0]);
 }

@@ -204,6 +204,16 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
         ]
     }
 
+    /// Absolute `[x, v_x, z, v_z]` (m, m/s) of the relative state `y` at `t` of a
+    /// segment that starts at `t0`: like [`BlockSystem::absolute`], but with the plate
+    /// velocity of the segment's own piece (its left limit when `t` ends the segment on
+    /// a breakpoint, where the relative state still belongs to the old piece).
+    pub fn absolute_in_piece(&self, t0: f64, t: f64, y: &[f64; 4]) -> [f64; 4] {
+        let p = self.plate;
+        let (vx, vz) = self.plate_velocity_in_piece(t0, t);
+        [y[0] + p.x_m(t), y[1] + vx, y[2] + p.z_m(t), y[3] + vz]
+    }
+
     /// The contact forces per unit mass in `mode` at `(t, y)`.
     pub fn contact_force(&self, mode: BlockMode, t: f64, y: &[f64; 4]) -> ContactForce {
         let n = self.normal(t);
