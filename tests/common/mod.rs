@@ -35,3 +35,25 @@ pub fn assert_bad_input(args: &[&str], flag: &str) {
     );
     assert!(err.contains(flag), "{args:?}: {err} should name {flag}");
 }
+
+/// `workbook <chapter> --quick --json --no-figures`, parsed (asserts exit code 0).
+pub fn quick_json(chapter: &str) -> serde_json::Value {
+    let (code, out, err) = run(&[chapter, "--quick", "--json", "--no-figures"]);
+    assert_eq!(code, 0, "{chapter}: {err}");
+    serde_json::from_str(out.trim()).expect("one JSON object on stdout")
+}
+
+/// One line `id: verdict` per claim of a report: the discrete part of a snapshot.
+pub fn verdict_lines(report: &serde_json::Value) -> String {
+    let claims = report["claims"].as_array().expect("claims array");
+    claims
+        .iter()
+        .map(|c| {
+            format!(
+                "{}: {}\n",
+                c["id"].as_str().unwrap(),
+                c["verdict"].as_str().unwrap()
+            )
+        })
+        .collect()
+}
