@@ -28,10 +28,11 @@ impl HybridSystem<NSTATE> for StickModel {
 
     fn flow(&self, mode: Mode, t: f64, y: &State) -> State {
         let p = &self.p;
-        let (_, vs, _) = self.plate(t);
-        let e = match self.contact_eval(mode, t, y) {
-            Some(e) => e,
-            None => return [0.0; NSTATE], // flight uses the closed form
+        let (_, vs, a_s) = self.plate(t); // once per evaluation: the trigonometry is most of its cost
+        let e = match mode {
+            Mode::Flight => return [0.0; NSTATE], // flight uses the closed form
+            Mode::Pivot => self.pivot_eval_with(a_s, y),
+            Mode::SlideLeft | Mode::SlideRight => self.slide_eval_with(mode.sigma(), a_s, y),
         };
         // Friction loss -F_x xdot_c = -sigma mu F_z xdot_c (zero in pivot): it equals
         // mu F_z |xdot_c| while C slips in the slide's direction, but has no kink where the
