@@ -262,7 +262,7 @@ fn energy_budget_closes() {
     // located events accumulate to 9e-10 .. 2e-8 of the largest term (measured); the
     // chapter's stated tolerance, 1e-5.
     // It must shrink when the tolerance is tightened (the residual is integration error,
-    // not a model term): by more than 10x at rtol 1e-13 (measured: 100x to 3000x). A
+    // not a model term): by more than 10x at rtol 1e-13 (measured: 150x to 3400x). A
     // looser tolerance cannot show it: the contact steps are capped at T/32, so from
     // rtol ~1e-8 up every run is the same, and at the cap the residual sits at the
     // dense output's error floor, of the same size as at 1e-10.
