@@ -26,9 +26,14 @@ impl StickModel {
     /// from Newton on P, `F = m (a_P + g e_z)` with `a_P` from C.7.
     #[inline]
     pub fn pivot_eval(&self, t: f64, y: &State) -> ContactEval {
+        self.pivot_eval_with(self.plate(t).2, y)
+    }
+
+    /// [`StickModel::pivot_eval`] with the plate's acceleration `a_s` (m/s^2) given.
+    #[inline]
+    pub(super) fn pivot_eval_with(&self, a_s: f64, y: &State) -> ContactEval {
         let p = &self.p;
         let (m, l, g) = (p.mass_kg, p.length_m, p.g_mps2);
-        let (_, _, a_s) = self.plate(t);
         let (s, c) = y[TH].sin_cos();
         let w = y[OM];
         let torque = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * w;
@@ -57,9 +62,14 @@ impl StickModel {
     /// constraint `z_c = z_s` (C.14) and x'' of C from C.4.
     #[inline]
     pub fn slide_eval(&self, sigma: f64, t: f64, y: &State) -> ContactEval {
+        self.slide_eval_with(sigma, self.plate(t).2, y)
+    }
+
+    /// [`StickModel::slide_eval`] with the plate's acceleration `a_s` (m/s^2) given.
+    #[inline]
+    pub(super) fn slide_eval_with(&self, sigma: f64, a_s: f64, y: &State) -> ContactEval {
         let p = &self.p;
         let (m, l, g, mu) = (p.mass_kg, p.length_m, p.g_mps2, p.mu);
-        let (_, _, a_s) = self.plate(t);
         let (s, c) = y[TH].sin_cos();
         let w = y[OM];
         let torque = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * w;
