@@ -63,6 +63,22 @@ pub fn color(i: usize) -> RGBColor {
     PALETTE[i % PALETTE.len()]
 }
 
+/// Draws a chart's legend box in the house style (framed, translucent white, tick-size
+/// font) at `pos`. For custom [`Drawing`]s, so that their legends match the charts'.
+pub fn draw_legend<'a, DB: DrawingBackend + 'a, CT: plotters::coord::CoordTranslate>(
+    ch: &mut ChartContext<'a, DB, CT>,
+    pos: SeriesLabelPosition,
+) -> std::result::Result<(), String> {
+    ch.configure_series_labels()
+        .position(pos)
+        .margin(12)
+        .border_style(BLACK.mix(0.5))
+        .background_style(WHITE.mix(0.92))
+        .label_font(font(TICK_PX))
+        .draw()
+        .map_err(|e| e.to_string())
+}
+
 static FONT: Once = Once::new();
 
 /// Registers the embedded DejaVu Sans as the `sans-serif` family (once per process).

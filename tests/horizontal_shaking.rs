@@ -15,7 +15,6 @@ use locomotion_workbook::physics::block::{
     simulate_block, simulate_block_observed, BlockMode, BlockOptions, BlockSystem, Observer,
 };
 use locomotion_workbook::physics::plate::{Harmonic, PlateMotion};
-use locomotion_workbook::report::fmt_num;
 use serde_json::Value;
 
 fn scene(gamma_x: f64, bias: f64) -> Scene {
@@ -192,17 +191,15 @@ fn quick_summary_snapshot() {
     let mut s = common::verdict_lines(&v);
     // Numbers to 3 significant digits: the drift is exact to ~1e-12 and the 1 % point is
     // bracketed to 2e-4 relative in quick mode.
-    for key in [
-        "gamma_x",
-        "drift_velocity_mps",
-        "drift_velocity_averaged_mps",
-        "averaged_law_relative_error",
-    ] {
-        s.push_str(&format!(
-            "{key} = {}\n",
-            fmt_num(v["results"][key].as_f64().unwrap())
-        ));
-    }
+    s += &common::result_lines(
+        &v,
+        &[
+            "gamma_x",
+            "drift_velocity_mps",
+            "drift_velocity_averaged_mps",
+            "averaged_law_relative_error",
+        ],
+    );
     s.push_str(&format!(
         "gamma_x_for_1pct = {:.1}\n",
         v["results"]["gamma_x_for_1pct"].as_f64().unwrap()

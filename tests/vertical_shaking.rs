@@ -18,7 +18,6 @@ use locomotion_workbook::physics::block::{
     simulate_block_observed, BlockMode, BlockOptions, BlockSystem, Observer,
 };
 use locomotion_workbook::physics::plate::{Harmonic, PlateMotion};
-use locomotion_workbook::report::fmt_num;
 use serde_json::Value;
 use std::f64::consts::PI;
 
@@ -215,18 +214,16 @@ fn quick_summary_snapshot() {
     let v = common::quick_json("vertical-shaking");
     let mut s = common::verdict_lines(&v);
     // Exact closed-form runs: 4 significant digits are far above the round-off.
-    for key in [
-        "takeoff_phase_rad",
-        "flight_time_over_period",
-        "contact_fraction",
-        "mean_velocity_mps",
-        "mu_eff_law",
-    ] {
-        s.push_str(&format!(
-            "{key} = {}\n",
-            fmt_num(v["results"][key].as_f64().unwrap())
-        ));
-    }
+    s += &common::result_lines(
+        &v,
+        &[
+            "takeoff_phase_rad",
+            "flight_time_over_period",
+            "contact_fraction",
+            "mean_velocity_mps",
+            "mu_eff_law",
+        ],
+    );
     s.push_str(&format!(
         "regime = {}\n",
         v["results"]["regime_at_gamma"].as_str().unwrap()

@@ -312,13 +312,6 @@ fn draw_panel<DB: DrawingBackend>(
             .draw(&(EmptyElement::at((v[0], v[1])) + t))
             .map_err(e)?;
     }
-    ch.configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .margin(12)
-        .border_style(BLACK.mix(0.5))
-        .background_style(WHITE.mix(0.92))
-        .label_font(font(TICK_PX))
-        .draw()
-        .map_err(e)?;
+    crate::plot::draw_legend(&mut ch, SeriesLabelPosition::UpperLeft)?;
     Ok(())
 }

@@ -246,14 +246,7 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
         Legend::Hidden => return Ok(()),
     };
     if any_label {
-        ch.configure_series_labels()
-            .position(pos)
-            .margin(12)
-            .border_style(BLACK.mix(0.5))
-            .background_style(WHITE.mix(0.92))
-            .label_font(font(TICK_PX))
-            .draw()
-            .map_err(e)?;
+        crate::plot::draw_legend(&mut ch, pos)?;
     }
     Ok(())
 }

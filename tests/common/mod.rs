@@ -57,3 +57,16 @@ pub fn verdict_lines(report: &serde_json::Value) -> String {
         })
         .collect()
 }
+
+/// One line `key = value` per named numeric result, formatted by
+/// [`locomotion_workbook::report::fmt_num`] (4 significant digits).
+pub fn result_lines(report: &serde_json::Value, keys: &[&str]) -> String {
+    keys.iter()
+        .map(|k| {
+            let x = report["results"][*k]
+                .as_f64()
+                .unwrap_or_else(|| panic!("result {k} is a number"));
+            format!("{k} = {}\n", locomotion_workbook::report::fmt_num(x))
+        })
+        .collect()
+}

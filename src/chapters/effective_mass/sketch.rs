@@ -129,18 +129,14 @@ impl Drawing for Sketch {
             ch.draw_series(std::iter::once(Polygon::new(head, col.filled())))
                 .map_err(e)?;
         }
-        ch.configure_series_labels()
-            .position(if s >= 0.0 {
+        crate::plot::draw_legend(
+            &mut ch,
+            if s >= 0.0 {
                 SeriesLabelPosition::UpperLeft
             } else {
                 SeriesLabelPosition::UpperRight
-            })
-            .margin(12)
-            .border_style(BLACK.mix(0.5))
-            .background_style(WHITE.mix(0.92))
-            .label_font(font(TICK_PX))
-            .draw()
-            .map_err(e)?;
+            },
+        )?;
         Ok(())
     }
 }
