@@ -280,6 +280,8 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
     let mut guards0: Vec<f64> = Vec::with_capacity(8);
     let mut guards1: Vec<f64> = Vec::with_capacity(8);
     let mut fresh_mode = true;
+    // Evaluations spent on interpolants built after their step (DOP853's extension).
+    let mut dense_evals = 0u64;
     let outcome = 'outer: loop {
         if t >= t_end {
             break Outcome::Completed;
@@ -321,13 +323,13 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         }
         // One piece of trajectory: closed form or one integrator step.
         let (t1, y1, step);
+        let flow = ModeFlow { sys, mode };
         let closed = sys.exact(mode, t, &y, t).is_some();
         if closed {
             t1 = t_lim;
             y1 = sys.exact(mode, t, &y, t1).expect("closed form");
             step = None;
         } else {
-            let flow = ModeFlow { sys, mode };
             match integ.step(&flow, t, &y, t_lim) {
                 Ok(s) => {
                     t1 = s.t1;
@@ -340,7 +342,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         let (ts, ys) = (t, y);
         let eval = |s: f64| -> [f64; N] {
             match &step {
-                Some(st) => st.eval(s),
+                Some(st) => st.eval(&flow, s),
                 None => sys.exact(mode, ts, &ys, s).expect("closed form"),
             }
         };
@@ -398,6 +400,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                         eval: &eval,
                     },
                 );
+                dense_evals += step.as_ref().map_or(0, |s| s.dense_evals());
                 add_time(&mut run.mode_time_s, mode, te - ts);
                 let tr = sys.on_event(mode, i, te, &ye);
                 run.event_count += 1;
@@ -455,6 +458,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                         eval: &eval,
                     },
                 );
+                dense_evals += step.as_ref().map_or(0, |s| s.dense_evals());
                 add_time(&mut run.mode_time_s, mode, t1 - ts);
                 t = t1;
                 y = y1;
@@ -492,6 +496,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
     run.y_end = y;
     run.mode_end = mode;
     run.stats = integ.stats;
+    run.stats.rhs_evals += dense_evals;
     run
 }
 

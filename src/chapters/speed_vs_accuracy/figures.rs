@@ -7,13 +7,14 @@ use crate::plot::{save_panels, Chart, Legend, Series};
 use std::path::Path;
 
 /// Method labels in drawing order with (palette colour, dashed).
-const METHODS: [(&str, usize, bool); 7] = [
+const METHODS: [(&str, usize, bool); 8] = [
     ("euler-located", 0, false),
     ("euler-unlocated", 0, true),
     ("rk4-located", 1, false),
     ("rk4-unlocated", 1, true),
     ("dopri5-located", 2, false),
     ("dopri5-unlocated", 2, true),
+    ("dop853-located", 4, false),
     ("moreau-jean", 3, false),
 ];
 

@@ -38,7 +38,7 @@ pub fn tables(r: &mut ChapterReport, points: &[WpPoint], fails: &[Failure], swee
     r.table("economy", t);
     let mut t = String::from("| result | value |\n|---|---|\n");
     for (k, v) in &r.results {
-        if k == "work_precision" || k == "failures" || k == "stick_cycles_per_second" {
+        if k == "work_precision" || k.starts_with("stick_cycles_per_second") || k == "failures" {
             continue; // tables of their own, or wall-time measurements
         }
         let v = match (k.as_str(), v) {

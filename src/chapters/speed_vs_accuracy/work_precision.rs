@@ -18,8 +18,11 @@ pub enum Solver {
         /// Step (s).
         h_s: f64,
     },
-    /// The event-driven driver with adaptive Dormand-Prince at `rtol = atol = tol`.
+    /// The event-driven driver with an adaptive Dormand-Prince pair (5(4) or 8(5,3)) at
+    /// `rtol = atol = tol`.
     Adaptive {
+        /// The pair.
+        method: Method,
         /// Locate events on the dense output?
         locate: bool,
         /// Tolerance.
@@ -43,9 +46,11 @@ impl Solver {
                 method.name(),
                 if *locate { "located" } else { "unlocated" }
             ),
-            Solver::Adaptive { locate, .. } => {
-                format!("dopri5-{}", if *locate { "located" } else { "unlocated" })
-            }
+            Solver::Adaptive { method, locate, .. } => format!(
+                "{}-{}",
+                method.name(),
+                if *locate { "located" } else { "unlocated" }
+            ),
             Solver::MoreauJean { .. } => "moreau-jean".to_string(),
         }
     }
@@ -77,8 +82,12 @@ impl Solver {
                 locate_events: locate,
                 ..base
             }),
-            Solver::Adaptive { locate, tol } => Some(Options {
-                method: Method::Dopri5,
+            Solver::Adaptive {
+                method,
+                locate,
+                tol,
+            } => Some(Options {
+                method,
                 control: StepControl::tol(tol, tol),
                 locate_events: locate,
                 ..base
@@ -89,7 +98,8 @@ impl Solver {
 }
 
 /// The ladder for a problem with drive period `period_s`: fixed steps of
-/// `period / n` for `n` in `steps`, tolerances `tols`, Moreau-Jean at `mj_steps`.
+/// `period / n` for `n` in `steps`, tolerances `tols` for DP5 (located and unlocated)
+/// and DOP853 (located), Moreau-Jean at `mj_steps`.
 pub fn ladder(period_s: f64, steps: &[u32], tols: &[f64], mj_steps: &[u32]) -> Vec<Solver> {
     let mut out = Vec::new();
     for method in [Method::Euler, Method::Rk4] {
@@ -103,9 +113,17 @@ pub fn ladder(period_s: f64, steps: &[u32], tols: &[f64], mj_steps: &[u32]) -> V
             }
         }
     }
-    for locate in [true, false] {
+    for (method, locate) in [
+        (Method::Dopri5, true),
+        (Method::Dopri5, false),
+        (Method::Dop853, true),
+    ] {
         for &tol in tols {
-            out.push(Solver::Adaptive { locate, tol });
+            out.push(Solver::Adaptive {
+                method,
+                locate,
+                tol,
+            });
         }
     }
     for &n in mj_steps {
@@ -208,14 +226,23 @@ pub fn dopri5_errors_at(points: &[WpPoint], tol: f64) -> (f64, f64) {
 }
 
 /// The event-driven methods of the ladder, located and unlocated.
-pub const EVENT_DRIVEN_LABELS: [&str; 6] = [
+pub const EVENT_DRIVEN_LABELS: [&str; 7] = [
     "euler-located",
     "euler-unlocated",
     "rk4-located",
     "rk4-unlocated",
     "dopri5-located",
     "dopri5-unlocated",
+    "dop853-located",
 ];
+
+/// Right-hand-side evaluations of the run of `label` at `knob` (0 if none).
+pub fn rhs_evals_at(points: &[WpPoint], label: &str, knob: f64) -> u64 {
+    points
+        .iter()
+        .find(|p| p.solver.label() == label && p.solver.knob() == knob)
+        .map_or(0, |p| p.rhs_evals)
+}
 
 /// `{label: rhs evaluations of the cheapest run within target, or "not reached"}`.
 pub fn cheapest_json(points: &[WpPoint], labels: &[&str], target: f64) -> serde_json::Value {

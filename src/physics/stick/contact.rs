@@ -37,7 +37,7 @@ impl StickModel {
         let (s, c) = y[TH].sin_cos();
         let w = y[OM];
         let torque = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * w;
-        let theta_dd = ((g + a_s) * m * l * s - torque) / (m * l * l); // formula: C.6
+        let theta_dd = ((g + a_s) * m * l * s - torque) * self.inv_ml2; // formula: C.6 theta'' = ((g + a_s) m L sin - Q) / (m L^2)
         let ax = l * (theta_dd * c - w * w * s); // formula: C.7 xddot_p
         let az = a_s - l * (theta_dd * s + w * w * c); // formula: C.7 zddot_p
         ContactEval {
@@ -69,13 +69,14 @@ impl StickModel {
     #[inline]
     pub(super) fn slide_eval_with(&self, sigma: f64, a_s: f64, y: &State) -> ContactEval {
         let p = &self.p;
-        let (m, l, g, mu) = (p.mass_kg, p.length_m, p.g_mps2, p.mu);
+        let (l, g, mu) = (p.length_m, p.g_mps2, p.mu);
         let (s, c) = y[TH].sin_cos();
         let w = y[OM];
         let torque = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * w;
-        let fz = torque / (l * (s - sigma * mu * c)); // formula: C.9 (sigma=+1), C.11 (sigma=-1)
-        let theta_dd = (a_s + g - fz / m - l * c * w * w) / (l * s); // formula: C.14 theta''
-        let xc_dd = sigma * mu * fz / m - l * (theta_dd * c - w * w * s); // formula: C.14 xddot_c
+        let fz = torque * self.inv_length / (s - sigma * mu * c); // formula: C.9 (sigma=+1), C.11 (sigma=-1): F_z = Q / (L (sin - sigma mu cos))
+        let fz_m = fz * self.inv_mass;
+        let theta_dd = (a_s + g - fz_m - l * c * w * w) * self.inv_length / s; // formula: C.14 theta'' = (a_s + g - F_z/m - L cos theta'^2) / (L sin)
+        let xc_dd = sigma * mu * fz_m - l * (theta_dd * c - w * w * s); // formula: C.14 xddot_c
         ContactEval {
             theta_dd,
             xc_dd,

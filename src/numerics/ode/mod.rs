@@ -1,15 +1,20 @@
-//! Explicit Euler, classical Runge-Kutta 4 and Dormand-Prince 5(4) for `y' = f(t, y)`.
+//! Explicit Runge-Kutta methods for `y' = f(t, y)`: Euler, classical Runge-Kutta 4,
+//! Dormand-Prince 5(4) ([`dopri5`]) and Dormand-Prince 8(5,3) ([`dop853`]).
 //!
-//! One [`Integrator`] serves all three methods. Every accepted step comes back as a
+//! One [`Integrator`] serves all four methods. Every accepted step comes back as a
 //! [`Step`] carrying an interpolant over the step (linear for Euler, cubic Hermite for
-//! RK4, the fourth-order continuous extension of Hairer, Norsett & Wanner for DP5),
-//! which is what event location searches.
+//! RK4, the continuous extensions of Hairer, Norsett & Wanner for the two
+//! Dormand-Prince pairs: order 4 for DP5, order 7 for DOP853), which is what event
+//! location searches.
 //!
 //! State vectors are fixed-size arrays `[f64; N]`: no allocation in the stepping loop.
 
 // Index loops run over several arrays of the same length at once (y, k1..k7, r); they read
 // like the formulas they implement.
 #![allow(clippy::needless_range_loop)]
+
+mod dop853;
+mod dopri5;
 
 /// A first-order system `y' = f(t, y)` of dimension `N`.
 pub trait OdeSystem<const N: usize> {
@@ -36,6 +41,10 @@ pub enum Method {
     /// Dormand-Prince 5(4), order 5 with an embedded order-4 error estimate, six new
     /// evaluations per step (first-same-as-last).
     Dopri5,
+    /// Dormand-Prince 8(5,3), order 8 with a blended fifth/third-order error estimate,
+    /// eleven new evaluations per step (first-same-as-last), three more for a step whose
+    /// interior is evaluated (the order-7 interpolant).
+    Dop853,
 }
 
 impl Method {
@@ -45,6 +54,17 @@ impl Method {
             Method::Euler => "euler",
             Method::Rk4 => "rk4",
             Method::Dopri5 => "dopri5",
+            Method::Dop853 => "dop853",
+        }
+    }
+
+    /// Order of the method's solution.
+    pub fn order(self) -> u32 {
+        match self {
+            Method::Euler => 1,
+            Method::Rk4 => 4,
+            Method::Dopri5 => 5,
+            Method::Dop853 => 8,
         }
     }
 }
@@ -57,7 +77,7 @@ pub enum StepControl {
         /// Step size (s).
         h_s: f64,
     },
-    /// Error-controlled steps (Dopri5 only): per component the local error estimate is
+    /// Error-controlled steps (the Dormand-Prince pairs only): per component the local error estimate is
     /// kept below `atol + rtol * |y|` in the RMS norm; steps never exceed `h_max_s`.
     Adaptive {
         /// Relative tolerance.
@@ -124,7 +144,7 @@ impl std::fmt::Display for OdeError {
 }
 
 /// The interpolant of one step.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 enum Interp<const N: usize> {
     /// Straight line between the ends.
     Linear,
@@ -132,10 +152,12 @@ enum Interp<const N: usize> {
     Hermite { f0: [f64; N], f1: [f64; N] },
     /// Dormand-Prince continuous extension: `r[0..4]` of Hairer's `contd5`.
     Dopri { r: [[f64; N]; 4] },
+    /// DOP853's stages; its continuous extension is built on first use.
+    Dop853(dop853::Lazy<N>),
 }
 
 /// One accepted step `t0 -> t1` with its dense output.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct Step<const N: usize> {
     /// Start time (s).
     pub t0: f64,
@@ -149,8 +171,10 @@ pub struct Step<const N: usize> {
 }
 
 impl<const N: usize> Step<N> {
-    /// The interpolated state at `t` in `[t0, t1]` (exact at the ends).
-    pub fn eval(&self, t: f64) -> [f64; N] {
+    /// The interpolated state at `t` in `[t0, t1]` (exact at the ends). `sys` is the
+    /// system the step was taken on: DOP853 evaluates it three more times, once per
+    /// step, the first time the step's interior is asked for.
+    pub fn eval<S: OdeSystem<N> + ?Sized>(&self, sys: &S, t: f64) -> [f64; N] {
         let h = self.t1 - self.t0;
         if h == 0.0 || t == self.t0 {
             return self.y0;
@@ -186,50 +210,20 @@ impl<const N: usize> Step<N> {
                         self.y0[i] + s * (r[0][i] + s1 * (r[1][i] + s * (r[2][i] + s1 * r[3][i])));
                 }
             }
+            Interp::Dop853(lazy) => return lazy.eval(sys, self.t0, h, &self.y0, &self.y1, s),
         }
         out
     }
-}
 
-// Dormand-Prince 5(4) tableau.
-const C2: f64 = 1.0 / 5.0;
-const C3: f64 = 3.0 / 10.0;
-const C4: f64 = 4.0 / 5.0;
-const C5: f64 = 8.0 / 9.0;
-const A21: f64 = 1.0 / 5.0;
-const A31: f64 = 3.0 / 40.0;
-const A32: f64 = 9.0 / 40.0;
-const A41: f64 = 44.0 / 45.0;
-const A42: f64 = -56.0 / 15.0;
-const A43: f64 = 32.0 / 9.0;
-const A51: f64 = 19372.0 / 6561.0;
-const A52: f64 = -25360.0 / 2187.0;
-const A53: f64 = 64448.0 / 6561.0;
-const A54: f64 = -212.0 / 729.0;
-const A61: f64 = 9017.0 / 3168.0;
-const A62: f64 = -355.0 / 33.0;
-const A63: f64 = 46732.0 / 5247.0;
-const A64: f64 = 49.0 / 176.0;
-const A65: f64 = -5103.0 / 18656.0;
-const A71: f64 = 35.0 / 384.0;
-const A73: f64 = 500.0 / 1113.0;
-const A74: f64 = 125.0 / 192.0;
-const A75: f64 = -2187.0 / 6784.0;
-const A76: f64 = 11.0 / 84.0;
-// Error coefficients: fifth-order minus embedded fourth-order weights.
-const E1: f64 = 71.0 / 57600.0;
-const E3: f64 = -71.0 / 16695.0;
-const E4: f64 = 71.0 / 1920.0;
-const E5: f64 = -17253.0 / 339200.0;
-const E6: f64 = 22.0 / 525.0;
-const E7: f64 = -1.0 / 40.0;
-// Dense-output coefficients (Hairer's contd5).
-const D1: f64 = -12715105075.0 / 11282082432.0;
-const D3: f64 = 87487479700.0 / 32700410799.0;
-const D4: f64 = -10690763975.0 / 1880347072.0;
-const D5: f64 = 701980252875.0 / 199316789632.0;
-const D6: f64 = -1453857185.0 / 822651844.0;
-const D7: f64 = 69997945.0 / 29380423.0;
+    /// Right-hand-side evaluations spent on this step's interpolant after it was
+    /// accepted (3 once DOP853's continuous extension is built, else 0).
+    pub fn dense_evals(&self) -> u64 {
+        match &self.interp {
+            Interp::Dop853(lazy) if lazy.built() => 3,
+            _ => 0,
+        }
+    }
+}
 
 /// `y + h * sum(c_j k_j)` for up to six stages.
 #[inline]
@@ -245,6 +239,29 @@ fn comb<const N: usize>(y: &[f64; N], h: f64, terms: &[(f64, &[f64; N])]) -> [f6
 
 fn finite<const N: usize>(y: &[f64; N]) -> bool {
     y.iter().all(|v| v.is_finite())
+}
+
+/// `e^(-expo)`: three square roots for DOP853's `1/8` (a fifth of the cost of `powf`).
+#[inline]
+fn root(e: f64, expo: f64) -> f64 {
+    if expo == 0.125 {
+        1.0 / e.sqrt().sqrt().sqrt() // formula: e^(-1/8)
+    } else {
+        e.powf(-expo)
+    }
+}
+
+/// A trial step of a Dormand-Prince pair, before acceptance.
+enum Trial<const N: usize> {
+    Dopri5 {
+        y1: [f64; N],
+        k7: [f64; N],
+        r: [[f64; N]; 4],
+    },
+    Dop853 {
+        y1: [f64; N],
+        k: dop853::Stages<N>,
+    },
 }
 
 /// A stepping integrator with memory (step-size suggestion, first-same-as-last value).
@@ -304,13 +321,13 @@ impl<const N: usize> Integrator<N> {
         let span = t_max - t;
         match (self.method, self.control) {
             (
-                Method::Dopri5,
+                Method::Dopri5 | Method::Dop853,
                 StepControl::Adaptive {
                     rtol,
                     atol,
                     h_max_s,
                 },
-            ) => self.dopri_adaptive(sys, t, y, f0, span, rtol, atol, h_max_s),
+            ) => self.adaptive(sys, t, y, f0, span, rtol, atol, h_max_s),
             (method, control) => {
                 let h_fixed = match control {
                     StepControl::Fixed { h_s } => h_s,
@@ -368,17 +385,9 @@ impl<const N: usize> Integrator<N> {
                             interp: Interp::Hermite { f0, f1 },
                         }
                     }
-                    Method::Dopri5 => {
-                        let (y1, k7, r, _) = dopri_stages(sys, t, y, &f0, h);
-                        self.stats.rhs_evals += 6;
-                        self.fsal = Some((t1, y1, k7));
-                        Step {
-                            t0: t,
-                            t1,
-                            y0: *y,
-                            y1,
-                            interp: Interp::Dopri { r },
-                        }
+                    Method::Dopri5 | Method::Dop853 => {
+                        let (trial, _) = self.trial(sys, t, y, &f0, h, 1.0, 1.0);
+                        self.accept(sys, t, y, t1, trial)
                     }
                 };
                 if !finite(&step.y1) {
@@ -390,8 +399,61 @@ impl<const N: usize> Integrator<N> {
         }
     }
 
+    /// One trial step of size `h` of a Dormand-Prince pair and its error norm (1 = at
+    /// the tolerance).
     #[allow(clippy::too_many_arguments)]
-    fn dopri_adaptive<S: OdeSystem<N> + ?Sized>(
+    fn trial<S: OdeSystem<N> + ?Sized>(
+        &mut self,
+        sys: &S,
+        t: f64,
+        y: &[f64; N],
+        f0: &[f64; N],
+        h: f64,
+        rtol: f64,
+        atol: f64,
+    ) -> (Trial<N>, f64) {
+        if self.method == Method::Dop853 {
+            let (k, y1, e) = dop853::attempt(sys, t, y, f0, h, rtol, atol);
+            self.stats.rhs_evals += 11;
+            (Trial::Dop853 { y1, k }, e)
+        } else {
+            let (y1, k7, r, err) = dopri5::stages(sys, t, y, f0, h);
+            self.stats.rhs_evals += 6;
+            let e = dopri5::error_norm(y, &y1, &err, rtol, atol);
+            (Trial::Dopri5 { y1, k7, r }, e)
+        }
+    }
+
+    /// Finishes an accepted trial step `t -> t1`: its end derivative (DOP853 evaluates
+    /// it now, DP5 has it as its seventh stage) becomes the next step's first stage.
+    fn accept<S: OdeSystem<N> + ?Sized>(
+        &mut self,
+        sys: &S,
+        t: f64,
+        y: &[f64; N],
+        t1: f64,
+        trial: Trial<N>,
+    ) -> Step<N> {
+        let (y1, f1, interp) = match trial {
+            Trial::Dopri5 { y1, k7, r } => (y1, k7, Interp::Dopri { r }),
+            Trial::Dop853 { y1, mut k } => {
+                k[12] = sys.rhs(t1, &y1); // formula: f(t + h, y1), first stage of the next step
+                self.stats.rhs_evals += 1;
+                (y1, k[12], Interp::Dop853(dop853::Lazy::new(k)))
+            }
+        };
+        self.fsal = Some((t1, y1, f1));
+        Step {
+            t0: t,
+            t1,
+            y0: *y,
+            y1,
+            interp,
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn adaptive<S: OdeSystem<N> + ?Sized>(
         &mut self,
         sys: &S,
         t: f64,
@@ -402,9 +464,25 @@ impl<const N: usize> Integrator<N> {
         atol: f64,
         h_max: f64,
     ) -> Result<Step<N>, OdeError> {
+        // Step-size controller of each pair (Hairer's codes): the error estimate is of
+        // order q + 1 in h (q = 4 for DP5, 7 for DOP853), so h_new = h (0.9 / e)^(1/(q+1)),
+        // limited to [fac_min, fac_max] after an accepted step.
+        let (expo, fac_min, fac_max) = match self.method {
+            Method::Dop853 => (1.0 / 8.0, 1.0 / 3.0, 6.0),
+            _ => (0.2, 0.2, 5.0),
+        };
         let mut h = match self.h_next {
             Some(h) => h,
-            None => initial_step(sys, t, y, &f0, rtol, atol, &mut self.stats),
+            None => initial_step(
+                sys,
+                t,
+                y,
+                &f0,
+                rtol,
+                atol,
+                self.method.order(),
+                &mut self.stats,
+            ),
         }
         .min(h_max);
         loop {
@@ -419,21 +497,13 @@ impl<const N: usize> Integrator<N> {
             if !last && h <= 16.0 * f64::EPSILON * t.abs().max(1e-300) {
                 return Err(OdeError::StepTooSmall { t_s: t });
             }
-            let (y1, k7, r, err) = dopri_stages(sys, t, y, &f0, h);
-            self.stats.rhs_evals += 6;
-            // formula: err = sqrt(mean((e_i / (atol + rtol max(|y0_i|, |y1_i|)))^2))
-            let mut sum = 0.0;
-            for i in 0..N {
-                let sc = atol + rtol * y[i].abs().max(y1[i].abs());
-                sum += (err[i] / sc) * (err[i] / sc);
-            }
-            let e = (sum / N as f64).sqrt();
+            let (trial, e) = self.trial(sys, t, y, &f0, h, rtol, atol);
             if e.is_finite() && e <= 1.0 {
-                // formula: h_new = h min(5, max(0.2, 0.9 e^(-1/5)))
+                // formula: h_new = h min(fac_max, max(fac_min, 0.9 e^(-1/(q+1))))
                 let fac = if e == 0.0 {
-                    5.0
+                    fac_max
                 } else {
-                    (0.9 * e.powf(-0.2)).clamp(0.2, 5.0)
+                    (0.9 * root(e, expo)).clamp(fac_min, fac_max)
                 };
                 if !last {
                     self.h_next = Some((h * fac).min(h_max));
@@ -441,18 +511,11 @@ impl<const N: usize> Integrator<N> {
                     self.h_next = Some(h);
                 }
                 self.stats.accepted += 1;
-                self.fsal = Some((t1, y1, k7));
-                return Ok(Step {
-                    t0: t,
-                    t1,
-                    y0: *y,
-                    y1,
-                    interp: Interp::Dopri { r },
-                });
+                return Ok(self.accept(sys, t, y, t1, trial));
             }
             self.stats.rejected += 1;
             let fac = if e.is_finite() {
-                (0.9 * e.powf(-0.2)).clamp(0.1, 0.9)
+                (0.9 * root(e, expo)).clamp(0.1, 0.9)
             } else {
                 0.1
             };
@@ -481,56 +544,8 @@ impl<const N: usize> Integrator<N> {
     }
 }
 
-/// The seven Dormand-Prince stages: returns `(y1, k7, dense coefficients, error)`.
-#[allow(clippy::type_complexity)]
-fn dopri_stages<S: OdeSystem<N> + ?Sized, const N: usize>(
-    sys: &S,
-    t: f64,
-    y: &[f64; N],
-    k1: &[f64; N],
-    h: f64,
-) -> ([f64; N], [f64; N], [[f64; N]; 4], [f64; N]) {
-    let k2 = sys.rhs(t + C2 * h, &comb(y, h, &[(A21, k1)]));
-    let k3 = sys.rhs(t + C3 * h, &comb(y, h, &[(A31, k1), (A32, &k2)]));
-    let k4 = sys.rhs(
-        t + C4 * h,
-        &comb(y, h, &[(A41, k1), (A42, &k2), (A43, &k3)]),
-    );
-    let k5 = sys.rhs(
-        t + C5 * h,
-        &comb(y, h, &[(A51, k1), (A52, &k2), (A53, &k3), (A54, &k4)]),
-    );
-    let k6 = sys.rhs(
-        t + h,
-        &comb(
-            y,
-            h,
-            &[(A61, k1), (A62, &k2), (A63, &k3), (A64, &k4), (A65, &k5)],
-        ),
-    );
-    // formula: y1 = y0 + h (35/384 k1 + 500/1113 k3 + 125/192 k4 - 2187/6784 k5 + 11/84 k6)
-    let y1 = comb(
-        y,
-        h,
-        &[(A71, k1), (A73, &k3), (A74, &k4), (A75, &k5), (A76, &k6)],
-    );
-    let k7 = sys.rhs(t + h, &y1);
-    let mut err = [0.0; N];
-    let mut r = [[0.0; N]; 4];
-    for i in 0..N {
-        // formula: e = h (e1 k1 + e3 k3 + e4 k4 + e5 k5 + e6 k6 + e7 k7)
-        err[i] = h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i]);
-        let dy = y1[i] - y[i];
-        let bspl = h * k1[i] - dy;
-        r[0][i] = dy;
-        r[1][i] = bspl;
-        r[2][i] = dy - h * k7[i] - bspl;
-        r[3][i] = h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] + D6 * k6[i] + D7 * k7[i]);
-    }
-    (y1, k7, r, err)
-}
-
-/// Hairer's starting-step heuristic (`hinit`, order 5).
+/// Hairer's starting-step heuristic (`hinit`) for a method of order `order`.
+#[allow(clippy::too_many_arguments)]
 fn initial_step<S: OdeSystem<N> + ?Sized, const N: usize>(
     sys: &S,
     t: f64,
@@ -538,6 +553,7 @@ fn initial_step<S: OdeSystem<N> + ?Sized, const N: usize>(
     f0: &[f64; N],
     rtol: f64,
     atol: f64,
+    order: u32,
     stats: &mut Stats,
 ) -> f64 {
     let norm = |v: &[f64; N]| {
@@ -565,119 +581,10 @@ fn initial_step<S: OdeSystem<N> + ?Sized, const N: usize>(
     let h1 = if d1.max(d2) <= 1e-15 {
         (h0 * 1e-3).max(1e-6)
     } else {
-        (0.01 / d1.max(d2)).powf(0.2)
+        (0.01 / d1.max(d2)).powf(1.0 / f64::from(order)) // formula: (0.01 / max(d1, d2))^(1/p)
     };
     (100.0 * h0).min(h1)
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn decay(_t: f64, y: &[f64; 1]) -> [f64; 1] {
-        [-y[0]]
-    }
-
-    fn oscillator(_t: f64, y: &[f64; 2]) -> [f64; 2] {
-        [y[1], -y[0]]
-    }
-
-    /// Global error at t = 1 of y' = -y, y(0) = 1 with fixed step h.
-    fn decay_error(method: Method, h: f64) -> f64 {
-        let mut integ = Integrator::new(method, StepControl::Fixed { h_s: h });
-        let y = integ.integrate(&decay, 0.0, [1.0], 1.0, |_| {}).unwrap();
-        (y[0] - (-1.0f64).exp()).abs()
-    }
-
-    /// Observed order from a step-halving study: log2(e(h)/e(h/2)).
-    fn observed_order(method: Method, h: f64) -> f64 {
-        (decay_error(method, h) / decay_error(method, h / 2.0)).log2()
-    }
-
-    #[test]
-    fn convergence_orders_from_step_halving() {
-        // Step sizes are in the asymptotic range (error well above round-off), so the
-        // observed order is within 0.1 of the theoretical one.
-        let euler = observed_order(Method::Euler, 1.0 / 64.0);
-        let rk4 = observed_order(Method::Rk4, 1.0 / 16.0);
-        let dp5 = observed_order(Method::Dopri5, 1.0 / 8.0);
-        assert!((euler - 1.0).abs() < 0.1, "Euler order {euler}");
-        assert!((rk4 - 4.0).abs() < 0.1, "RK4 order {rk4}");
-        assert!((dp5 - 5.0).abs() < 0.15, "DP5 order {dp5}");
-    }
-
-    #[test]
-    fn adaptive_dopri_meets_tolerance_on_decay_and_oscillator() {
-        // Global error of a stable problem stays within a small multiple of the tolerance.
-        for &tol in &[1e-6, 1e-9, 1e-12] {
-            let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(tol, tol));
-            let y = integ.integrate(&decay, 0.0, [1.0], 5.0, |_| {}).unwrap();
-            assert!(
-                (y[0] - (-5.0f64).exp()).abs() < 10.0 * tol,
-                "decay tol {tol}"
-            );
-            let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(tol, tol));
-            let t_end = 2.0 * std::f64::consts::PI * 3.0;
-            let y = integ
-                .integrate(&oscillator, 0.0, [1.0, 0.0], t_end, |_| {})
-                .unwrap();
-            // three periods: error grows linearly with time, hence 100 x tol
-            assert!(
-                (y[0] - 1.0).abs() < 100.0 * tol && y[1].abs() < 100.0 * tol,
-                "osc tol {tol}: {y:?}"
-            );
-        }
-    }
-
-    #[test]
-    fn dense_output_is_fourth_order_accurate_inside_steps() {
-        let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(1e-10, 1e-10));
-        let mut worst: f64 = 0.0;
-        integ
-            .integrate(&oscillator, 0.0, [1.0, 0.0], 10.0, |s| {
-                for k in 1..10 {
-                    let t = s.t0 + (s.t1 - s.t0) * k as f64 / 10.0;
-                    let y = s.eval(t);
-                    worst = worst
-                        .max((y[0] - t.cos()).abs())
-                        .max((y[1] + t.sin()).abs());
-                }
-            })
-            .unwrap();
-        // The interpolant's error is of the order of the local tolerance.
-        assert!(worst < 1e-8, "dense output error {worst}");
-    }
-
-    #[test]
-    fn hermite_and_linear_interpolants_match_ends() {
-        for m in [Method::Euler, Method::Rk4, Method::Dopri5] {
-            let mut integ = Integrator::new(m, StepControl::Fixed { h_s: 0.1 });
-            let s = integ.step(&oscillator, 0.0, &[1.0, 0.0], 1.0).unwrap();
-            assert_eq!(s.eval(s.t0), s.y0);
-            assert_eq!(s.eval(s.t1), s.y1);
-        }
-    }
-
-    #[test]
-    fn rhs_evaluations_are_counted_per_method() {
-        for (m, per_step) in [(Method::Euler, 1u64), (Method::Rk4, 4), (Method::Dopri5, 6)] {
-            let mut integ = Integrator::new(m, StepControl::Fixed { h_s: 0.1 });
-            integ.integrate(&decay, 0.0, [1.0], 1.0, |_| {}).unwrap();
-            assert_eq!(integ.stats.accepted, 10, "{m:?}");
-            // first step evaluates f0 once more for methods that reuse the end value
-            let expected = match m {
-                Method::Euler => 10,
-                _ => 10 * per_step + 1,
-            };
-            assert_eq!(integ.stats.rhs_evals, expected, "{m:?}");
-        }
-    }
-
-    #[test]
-    fn non_finite_state_is_an_error_not_a_panic() {
-        let blow = |_t: f64, y: &[f64; 1]| [y[0] * y[0]];
-        let mut integ = Integrator::new(Method::Euler, StepControl::Fixed { h_s: 0.5 });
-        let r = integ.integrate(&blow, 0.0, [1e200], 10.0, |_| {});
-        assert!(matches!(r, Err(OdeError::NonFinite { .. })));
-    }
-}
+mod tests;

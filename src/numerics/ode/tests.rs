@@ -1,0 +1,167 @@
+//! Tests of the integrators: convergence orders, tolerances, dense output, counts.
+use super::*;
+
+fn decay(_t: f64, y: &[f64; 1]) -> [f64; 1] {
+    [-y[0]]
+}
+
+fn oscillator(_t: f64, y: &[f64; 2]) -> [f64; 2] {
+    [y[1], -y[0]]
+}
+
+/// Global error at t = 1 of y' = -y, y(0) = 1 with fixed step h.
+fn decay_error(method: Method, h: f64) -> f64 {
+    let mut integ = Integrator::new(method, StepControl::Fixed { h_s: h });
+    let y = integ.integrate(&decay, 0.0, [1.0], 1.0, |_| {}).unwrap();
+    (y[0] - (-1.0f64).exp()).abs()
+}
+
+/// Observed order from a step-halving study: log2(e(h)/e(h/2)).
+fn observed_order(method: Method, h: f64) -> f64 {
+    (decay_error(method, h) / decay_error(method, h / 2.0)).log2()
+}
+
+#[test]
+fn convergence_orders_from_step_halving() {
+    // Step sizes are in the asymptotic range (error well above round-off), so the
+    // observed order is within 0.1 of the theoretical one.
+    let euler = observed_order(Method::Euler, 1.0 / 64.0);
+    let rk4 = observed_order(Method::Rk4, 1.0 / 16.0);
+    let dp5 = observed_order(Method::Dopri5, 1.0 / 8.0);
+    assert!((euler - 1.0).abs() < 0.1, "Euler order {euler}");
+    assert!((rk4 - 4.0).abs() < 0.1, "RK4 order {rk4}");
+    assert!((dp5 - 5.0).abs() < 0.15, "DP5 order {dp5}");
+}
+
+#[test]
+fn adaptive_dopri_meets_tolerance_on_decay_and_oscillator() {
+    // Global error of a stable problem stays within a small multiple of the tolerance.
+    for &tol in &[1e-6, 1e-9, 1e-12] {
+        let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(tol, tol));
+        let y = integ.integrate(&decay, 0.0, [1.0], 5.0, |_| {}).unwrap();
+        assert!(
+            (y[0] - (-5.0f64).exp()).abs() < 10.0 * tol,
+            "decay tol {tol}"
+        );
+        let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(tol, tol));
+        let t_end = 2.0 * std::f64::consts::PI * 3.0;
+        let y = integ
+            .integrate(&oscillator, 0.0, [1.0, 0.0], t_end, |_| {})
+            .unwrap();
+        // three periods: error grows linearly with time, hence 100 x tol
+        assert!(
+            (y[0] - 1.0).abs() < 100.0 * tol && y[1].abs() < 100.0 * tol,
+            "osc tol {tol}: {y:?}"
+        );
+    }
+}
+
+#[test]
+fn dense_output_is_fourth_order_accurate_inside_steps() {
+    let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(1e-10, 1e-10));
+    let mut worst: f64 = 0.0;
+    integ
+        .integrate(&oscillator, 0.0, [1.0, 0.0], 10.0, |s| {
+            for k in 1..10 {
+                let t = s.t0 + (s.t1 - s.t0) * k as f64 / 10.0;
+                let y = s.eval(&oscillator, t);
+                worst = worst
+                    .max((y[0] - t.cos()).abs())
+                    .max((y[1] + t.sin()).abs());
+            }
+        })
+        .unwrap();
+    // The interpolant's error is of the order of the local tolerance.
+    assert!(worst < 1e-8, "dense output error {worst}");
+}
+
+#[test]
+fn hermite_and_linear_interpolants_match_ends() {
+    for m in [Method::Euler, Method::Rk4, Method::Dopri5, Method::Dop853] {
+        let mut integ = Integrator::new(m, StepControl::Fixed { h_s: 0.1 });
+        let s = integ.step(&oscillator, 0.0, &[1.0, 0.0], 1.0).unwrap();
+        assert_eq!(s.eval(&oscillator, s.t0), s.y0);
+        assert_eq!(s.eval(&oscillator, s.t1), s.y1);
+    }
+}
+
+#[test]
+fn rhs_evaluations_are_counted_per_method() {
+    for (m, per_step) in [
+        (Method::Euler, 1u64),
+        (Method::Rk4, 4),
+        (Method::Dopri5, 6),
+        (Method::Dop853, 12),
+    ] {
+        let mut integ = Integrator::new(m, StepControl::Fixed { h_s: 0.1 });
+        integ.integrate(&decay, 0.0, [1.0], 1.0, |_| {}).unwrap();
+        assert_eq!(integ.stats.accepted, 10, "{m:?}");
+        // first step evaluates f0 once more for methods that reuse the end value
+        let expected = match m {
+            Method::Euler => 10,
+            _ => 10 * per_step + 1,
+        };
+        assert_eq!(integ.stats.rhs_evals, expected, "{m:?}");
+    }
+}
+
+#[test]
+fn non_finite_state_is_an_error_not_a_panic() {
+    let blow = |_t: f64, y: &[f64; 1]| [y[0] * y[0]];
+    let mut integ = Integrator::new(Method::Euler, StepControl::Fixed { h_s: 0.5 });
+    let r = integ.integrate(&blow, 0.0, [1e200], 10.0, |_| {});
+    assert!(matches!(r, Err(OdeError::NonFinite { .. })));
+}
+
+#[test]
+fn adaptive_dop853_meets_tolerance_with_fewer_evaluations_than_dp5_at_1e_10() {
+    // Same problem, same tolerance: the eighth-order pair needs fewer right-hand sides
+    // (the reason the stick simulator uses it), and its global error stays within the
+    // same small multiple of the tolerance as DP5's.
+    let t_end = 2.0 * std::f64::consts::PI * 3.0;
+    let mut evals = [0u64; 2];
+    for (n, m) in [Method::Dopri5, Method::Dop853].into_iter().enumerate() {
+        for &tol in &[1e-6, 1e-10, 1e-13] {
+            let mut integ = Integrator::new(m, StepControl::tol(tol, tol));
+            let y = integ
+                .integrate(&oscillator, 0.0, [1.0, 0.0], t_end, |_| {})
+                .unwrap();
+            assert!(
+                (y[0] - 1.0).abs() < 100.0 * tol && y[1].abs() < 100.0 * tol,
+                "{m:?} tol {tol}: {y:?}"
+            );
+            if tol == 1e-10 {
+                evals[n] = integ.stats.rhs_evals;
+            }
+        }
+    }
+    assert!(
+        2 * evals[1] < evals[0],
+        "DP5 {} vs DOP853 {}",
+        evals[0],
+        evals[1]
+    );
+}
+
+#[test]
+fn dop853_interpolant_is_seventh_order_and_costs_three_evaluations_once() {
+    // Error of the continuous extension inside one step of size h on the oscillator:
+    // O(h^8) locally, so halving h divides it by about 2^8 = 256 (asymptotic range:
+    // h = 0.8 and 0.4 give 1e-9 and 4e-12, well above round-off).
+    let worst = |h: f64| -> f64 {
+        let mut integ = Integrator::new(Method::Dop853, StepControl::Fixed { h_s: h });
+        let s = integ.step(&oscillator, 0.0, &[1.0, 0.0], h).unwrap();
+        assert_eq!(s.dense_evals(), 0, "no extension before it is asked for");
+        let mut w: f64 = 0.0;
+        for k in 1..10 {
+            let t = h * k as f64 / 10.0;
+            let y = s.eval(&oscillator, t);
+            w = w.max((y[0] - t.cos()).abs()).max((y[1] + t.sin()).abs());
+        }
+        assert_eq!(s.dense_evals(), 3, "built once, reused by every later call");
+        w
+    };
+    let ratio = worst(0.8) / worst(0.4);
+    // local order 8 (interpolant of order 7): ratio 2^8 = 256; accept 150..400
+    assert!((150.0..400.0).contains(&ratio), "ratio {ratio}");
+}
