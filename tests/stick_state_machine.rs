@@ -244,26 +244,14 @@ fn table_1_holds_at_every_accepted_step() {
         let s = run_by(p, 2.0, 1e-10, FULL, method);
         let v = s.violations;
         assert!(v.checked > 100, "{name}");
-        assert!(
-            v.normal_n <= 1e-9,
-            "{name}: tensile normal force {}",
-            v.normal_n
-        );
-        assert!(
-            v.cone_n <= 1e-9,
-            "{name}: pivot force outside the cone by {}",
-            v.cone_n
-        );
-        assert!(
-            v.slip_mps <= 1e-9,
-            "{name}: slip against friction {}",
-            v.slip_mps
-        );
-        assert!(
-            v.penetration_m <= 1e-12,
-            "{name}: penetration {}",
-            v.penetration_m
-        );
+        for (what, value, limit) in [
+            ("tensile normal force (N)", v.normal_n, 1e-9),
+            ("pivot force outside the cone (N)", v.cone_n, 1e-9),
+            ("slip against friction (m/s)", v.slip_mps, 1e-9),
+            ("penetration (m)", v.penetration_m, 1e-12),
+        ] {
+            assert!(value <= limit, "{name}: {what} {value:e} > {limit:e}");
+        }
         assert_eq!(v.pivot_slip_mps, 0.0, "{name}");
         assert_eq!(s.outcome, StickOutcome::Completed, "{name}");
     }

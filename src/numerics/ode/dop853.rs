@@ -13,7 +13,7 @@
 // Index loops run over several arrays of the same length at once (y, k_j, out).
 #![allow(clippy::needless_range_loop)]
 
-use super::OdeSystem;
+use super::{OdeSystem, Step, Tol};
 use std::cell::OnceCell;
 
 /// Nodes `c_i` of the twelve stages and the three dense-output stages (index 0 is `c_1 = 0`).
@@ -255,8 +255,7 @@ pub(super) fn attempt<S: OdeSystem<N> + ?Sized, const N: usize>(
     y: &[f64; N],
     k1: &[f64; N],
     h: f64,
-    rtol: f64,
-    atol: f64,
+    tol: Tol,
 ) -> (Stages<N>, [f64; N], f64) {
     let mut k = [[0.0; N]; 13];
     k[0] = *k1;
@@ -267,7 +266,7 @@ pub(super) fn attempt<S: OdeSystem<N> + ?Sized, const N: usize>(
                                    // formula: Hairer's DOP853 norm: err = |h| E5 / sqrt(N (E5 + 0.01 E3)), E_p = sum_i (sum_j e_pj k_ji / sc_i)^2
     let (mut e5, mut e3) = (0.0, 0.0);
     for i in 0..N {
-        let sc = atol + rtol * y[i].abs().max(y1[i].abs());
+        let sc = tol.scale(y[i], y1[i]);
         let (mut d5, mut d3) = (0.0, 0.0);
         for (&(j5, w5), &(j3, w3)) in E5.iter().zip(E3.iter()) {
             d5 += w5 * k[j5][i];
@@ -307,17 +306,15 @@ impl<const N: usize> Lazy<N> {
         self.dense.get().is_some()
     }
 
-    /// The state at fraction `s = (t - t0)/h` of the step `(t0, y0) -> (t0 + h, y1)`.
+    /// The state at fraction `s = (t - t0)/h` of `step`, whose stages these are.
     pub(super) fn eval<S: OdeSystem<N> + ?Sized>(
         &self,
         sys: &S,
-        t0: f64,
-        h: f64,
-        y0: &[f64; N],
-        y1: &[f64; N],
+        step: &Step<N>,
         s: f64,
     ) -> [f64; N] {
-        let r = self.dense.get_or_init(|| self.build(sys, t0, h, y0, y1));
+        let r = self.dense.get_or_init(|| self.build(sys, step));
+        let y0 = &step.y0;
         let s1 = 1.0 - s;
         let mut out = [0.0; N];
         for i in 0..N {
@@ -334,14 +331,8 @@ impl<const N: usize> Lazy<N> {
     }
 
     /// Hairer's `contd8` coefficients: three extra stages, then seven vectors.
-    fn build<S: OdeSystem<N> + ?Sized>(
-        &self,
-        sys: &S,
-        t0: f64,
-        h: f64,
-        y0: &[f64; N],
-        y1: &[f64; N],
-    ) -> [[f64; N]; 7] {
+    fn build<S: OdeSystem<N> + ?Sized>(&self, sys: &S, step: &Step<N>) -> [[f64; N]; 7] {
+        let (t0, h, y0, y1) = (step.t0, step.t1 - step.t0, &step.y0, &step.y1);
         let mut k = [[0.0; N]; 16];
         k[..13].copy_from_slice(&self.k);
         for s in 13..16 {

@@ -5,7 +5,7 @@
 // Index loops run over several arrays of the same length at once (y, k1..k7, r).
 #![allow(clippy::needless_range_loop)]
 
-use super::{comb, OdeSystem};
+use super::{comb, OdeSystem, Tol};
 
 // Dormand-Prince 5(4) tableau.
 const C2: f64 = 1.0 / 5.0;
@@ -101,13 +101,12 @@ pub(super) fn error_norm<const N: usize>(
     y0: &[f64; N],
     y1: &[f64; N],
     err: &[f64; N],
-    rtol: f64,
-    atol: f64,
+    tol: Tol,
 ) -> f64 {
     // formula: err = sqrt(mean((e_i / (atol + rtol max(|y0_i|, |y1_i|)))^2))
     let mut sum = 0.0;
     for i in 0..N {
-        let sc = atol + rtol * y0[i].abs().max(y1[i].abs());
+        let sc = tol.scale(y0[i], y1[i]);
         sum += (err[i] / sc) * (err[i] / sc);
     }
     (sum / N as f64).sqrt()

@@ -210,7 +210,7 @@ impl<const N: usize> Step<N> {
                         self.y0[i] + s * (r[0][i] + s1 * (r[1][i] + s * (r[2][i] + s1 * r[3][i])));
                 }
             }
-            Interp::Dop853(lazy) => return lazy.eval(sys, self.t0, h, &self.y0, &self.y1, s),
+            Interp::Dop853(lazy) => return lazy.eval(sys, self, s),
         }
         out
     }
@@ -248,6 +248,27 @@ fn root(e: f64, expo: f64) -> f64 {
         1.0 / e.sqrt().sqrt().sqrt() // formula: e^(-1/8)
     } else {
         e.powf(-expo)
+    }
+}
+
+/// Tolerances of the error control.
+#[derive(Debug, Clone, Copy)]
+struct Tol {
+    rtol: f64,
+    atol: f64,
+}
+
+impl Tol {
+    /// For fixed steps, whose error estimate is not used.
+    const UNUSED: Tol = Tol {
+        rtol: 1.0,
+        atol: 1.0,
+    };
+
+    /// The error scale of a component that goes from `a` to `b` in a step.
+    #[inline]
+    fn scale(self, a: f64, b: f64) -> f64 {
+        self.atol + self.rtol * a.abs().max(b.abs()) // formula: sc = atol + rtol max(|y0|, |y1|)
     }
 }
 
@@ -327,7 +348,7 @@ impl<const N: usize> Integrator<N> {
                     atol,
                     h_max_s,
                 },
-            ) => self.adaptive(sys, t, y, f0, span, rtol, atol, h_max_s),
+            ) => self.adaptive(sys, t, y, f0, span, Tol { rtol, atol }, h_max_s),
             (method, control) => {
                 let h_fixed = match control {
                     StepControl::Fixed { h_s } => h_s,
@@ -386,7 +407,7 @@ impl<const N: usize> Integrator<N> {
                         }
                     }
                     Method::Dopri5 | Method::Dop853 => {
-                        let (trial, _) = self.trial(sys, t, y, &f0, h, 1.0, 1.0);
+                        let (trial, _) = self.trial(sys, t, y, &f0, h, Tol::UNUSED);
                         self.accept(sys, t, y, t1, trial)
                     }
                 };
@@ -401,7 +422,6 @@ impl<const N: usize> Integrator<N> {
 
     /// One trial step of size `h` of a Dormand-Prince pair and its error norm (1 = at
     /// the tolerance).
-    #[allow(clippy::too_many_arguments)]
     fn trial<S: OdeSystem<N> + ?Sized>(
         &mut self,
         sys: &S,
@@ -409,17 +429,16 @@ impl<const N: usize> Integrator<N> {
         y: &[f64; N],
         f0: &[f64; N],
         h: f64,
-        rtol: f64,
-        atol: f64,
+        tol: Tol,
     ) -> (Trial<N>, f64) {
         if self.method == Method::Dop853 {
-            let (k, y1, e) = dop853::attempt(sys, t, y, f0, h, rtol, atol);
+            let (k, y1, e) = dop853::attempt(sys, t, y, f0, h, tol);
             self.stats.rhs_evals += 11;
             (Trial::Dop853 { y1, k }, e)
         } else {
             let (y1, k7, r, err) = dopri5::stages(sys, t, y, f0, h);
             self.stats.rhs_evals += 6;
-            let e = dopri5::error_norm(y, &y1, &err, rtol, atol);
+            let e = dopri5::error_norm(y, &y1, &err, tol);
             (Trial::Dopri5 { y1, k7, r }, e)
         }
     }
@@ -460,8 +479,7 @@ impl<const N: usize> Integrator<N> {
         y: &[f64; N],
         f0: [f64; N],
         span: f64,
-        rtol: f64,
-        atol: f64,
+        tol: Tol,
         h_max: f64,
     ) -> Result<Step<N>, OdeError> {
         // Step-size controller of each pair (Hairer's codes): the error estimate is of
@@ -473,16 +491,7 @@ impl<const N: usize> Integrator<N> {
         };
         let mut h = match self.h_next {
             Some(h) => h,
-            None => initial_step(
-                sys,
-                t,
-                y,
-                &f0,
-                rtol,
-                atol,
-                self.method.order(),
-                &mut self.stats,
-            ),
+            None => initial_step(sys, t, y, &f0, tol, self.method.order(), &mut self.stats),
         }
         .min(h_max);
         loop {
@@ -497,7 +506,7 @@ impl<const N: usize> Integrator<N> {
             if !last && h <= 16.0 * f64::EPSILON * t.abs().max(1e-300) {
                 return Err(OdeError::StepTooSmall { t_s: t });
             }
-            let (trial, e) = self.trial(sys, t, y, &f0, h, rtol, atol);
+            let (trial, e) = self.trial(sys, t, y, &f0, h, tol);
             if e.is_finite() && e <= 1.0 {
                 // formula: h_new = h min(fac_max, max(fac_min, 0.9 e^(-1/(q+1))))
                 let fac = if e == 0.0 {
@@ -545,21 +554,19 @@ impl<const N: usize> Integrator<N> {
 }
 
 /// Hairer's starting-step heuristic (`hinit`) for a method of order `order`.
-#[allow(clippy::too_many_arguments)]
 fn initial_step<S: OdeSystem<N> + ?Sized, const N: usize>(
     sys: &S,
     t: f64,
     y: &[f64; N],
     f0: &[f64; N],
-    rtol: f64,
-    atol: f64,
+    tol: Tol,
     order: u32,
     stats: &mut Stats,
 ) -> f64 {
     let norm = |v: &[f64; N]| {
         let mut s = 0.0;
         for i in 0..N {
-            let sc = atol + rtol * y[i].abs();
+            let sc = tol.scale(y[i], 0.0);
             s += (v[i] / sc) * (v[i] / sc);
         }
         (s / N as f64).sqrt()
