@@ -35,7 +35,7 @@ pub struct Cli {
     #[arg(long, global = true)]
     pub json: bool,
 
-    /// Root folder for figures; each chapter writes SVG and PNG into DIR/<chapter-id>/.
+    /// Root folder for figures; each chapter writes SVG and PNG into `DIR/<chapter-id>/`.
     #[arg(long, global = true, value_name = "DIR", default_value = "figures")]
     pub figures: PathBuf,
 

@@ -2,7 +2,7 @@
 //! the leaning stick: flight in closed form, pivot and slides integrated with a
 //! Dormand-Prince pair (8(5,3) by default, 5(4) on request), the collision map, the transition rules decided by the contact
 //! conditions, and the energy budget. Every equation, every row of Table 1 and every
-//! rule of Algorithms 1 to 4 gets a claim (see [`claims`]).
+//! rule of Algorithms 1 to 4 gets a claim (see `claims.rs`).
 
 mod claims;
 mod evidence;
