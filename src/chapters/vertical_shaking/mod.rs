@@ -14,6 +14,7 @@ use crate::physics::plate::PlateMotion;
 use crate::report::ChapterReport;
 use scene::{run as run_scene, Model, Scene};
 
+pub mod chladni;
 mod claims;
 mod figures;
 pub mod regimes;
@@ -135,6 +136,9 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     r.table("regime-boundaries", t);
 
     claims::add(&mut r, &scene, &st, takeoff_phase, &bounds, ctx.quick);
+    // Chladni patterns from a small bias (the section's closing remark).
+    let chl = chladni::demonstrate(&scene, ctx.quick, transient, observe);
+    chladni::report(&mut r, &chl);
     let decomposition = claims::decomposition(&scene, transient, observe);
     r.table("law-decomposition", decomposition);
 
@@ -164,6 +168,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     if let Some(dir) = ctx.figure_dir("vertical-shaking") {
         let paths = figures::draw(&dir, &scene, &pts, &bounds, &wp, ctx.quick)?;
         r.figures.extend(paths);
+        r.figures.extend(chladni::draw(&dir, &chl)?);
     }
     Ok(r)
 }
