@@ -10,11 +10,10 @@
 mod common;
 
 use locomotion_workbook::chapters::horizontal_shaking::drift::{steady_drift, Scene};
-use locomotion_workbook::numerics::hybrid::Segment;
 use locomotion_workbook::physics::block::{
-    simulate_block, simulate_block_observed, BlockMode, BlockOptions, BlockSystem, Observer,
+    simulate_block, simulate_block_observed, BlockOptions, ContactInvariants,
 };
-use locomotion_workbook::physics::plate::{Harmonic, PlateMotion};
+use locomotion_workbook::physics::plate::PlateMotion;
 use serde_json::Value;
 
 fn scene(gamma_x: f64, bias: f64) -> Scene {
@@ -85,30 +84,6 @@ fn zero_bias_gives_zero_drift() {
     }
 }
 
-struct Cone<'a> {
-    sys: BlockSystem<'a, Harmonic>,
-    worst_cone: f64,
-    worst_power: f64,
-    stick_segments: usize,
-}
-
-impl Observer<BlockMode, 4> for Cone<'_> {
-    fn segment(&mut self, mode: BlockMode, seg: &Segment<'_, 4>) {
-        if mode == BlockMode::Stick {
-            self.stick_segments += 1;
-        }
-        for k in 0..=10 {
-            let t = seg.t0 + (seg.t1 - seg.t0) * k as f64 / 10.0;
-            let y = seg.eval(t);
-            let c = self.sys.contact_force(mode, t, &y);
-            self.worst_cone = self
-                .worst_cone
-                .max(c.tangential_mps2.abs() - 0.36 * c.normal_mps2);
-            self.worst_power = self.worst_power.max(c.tangential_mps2 * y[1]);
-        }
-    }
-}
-
 #[test]
 fn friction_stays_in_the_cone_and_dissipates_at_every_step() {
     // Gamma_x = 1.5 with bias 0.3: stick, slip both ways. Set-valued Coulomb friction:
@@ -117,12 +92,7 @@ fn friction_stays_in_the_cone_and_dissipates_at_every_step() {
     // the relative motion; w = 0 exactly while sticking).
     let s = scene(1.5, 0.3);
     let plate = s.plate();
-    let mut c = Cone {
-        sys: BlockSystem::new(s.params(), &plate),
-        worst_cone: f64::MIN,
-        worst_power: f64::MIN,
-        stick_segments: 0,
-    };
+    let mut c = ContactInvariants::new(s.params(), &plate);
     let run = simulate_block_observed(
         &s.params(),
         &plate,
@@ -131,8 +101,12 @@ fn friction_stays_in_the_cone_and_dissipates_at_every_step() {
         &mut c,
     );
     assert!(c.stick_segments > 0 && run.total_counts.stick_to_slip > 0);
-    assert!(c.worst_cone <= 1e-9, "{}", c.worst_cone);
-    assert!(c.worst_power <= 1e-12, "{}", c.worst_power);
+    assert!(c.worst_cone_mps2 <= 1e-9, "{}", c.worst_cone_mps2);
+    assert!(
+        c.worst_power_w_per_kg <= 1e-12,
+        "{}",
+        c.worst_power_w_per_kg
+    );
 }
 
 #[test]

@@ -13,11 +13,10 @@ mod common;
 
 use locomotion_workbook::chapters::vertical_shaking::regimes::regime_at;
 use locomotion_workbook::chapters::vertical_shaking::scene::{run as run_scene, Model, Scene};
-use locomotion_workbook::numerics::hybrid::Segment;
 use locomotion_workbook::physics::block::{
-    simulate_block_observed, BlockMode, BlockOptions, BlockSystem, Observer,
+    simulate_block_observed, BlockOptions, ContactInvariants,
 };
-use locomotion_workbook::physics::plate::{Harmonic, PlateMotion};
+use locomotion_workbook::physics::plate::PlateMotion;
 use serde_json::Value;
 use std::f64::consts::PI;
 
@@ -98,37 +97,6 @@ fn one_period_flight_boundary_is_sqrt_one_plus_pi_squared() {
     assert_eq!(above.label(), "no-rest P1/1T");
 }
 
-struct Invariants<'a> {
-    sys: BlockSystem<'a, Harmonic>,
-    worst_cone: f64,
-    worst_impact: f64,
-}
-
-impl Observer<BlockMode, 4> for Invariants<'_> {
-    fn segment(&mut self, mode: BlockMode, seg: &Segment<'_, 4>) {
-        for k in 0..=10 {
-            let t = seg.t0 + (seg.t1 - seg.t0) * k as f64 / 10.0;
-            let c = self.sys.contact_force(mode, t, &seg.eval(t));
-            self.worst_cone = self
-                .worst_cone
-                .max(c.tangential_mps2.abs() - 0.4 * c.normal_mps2);
-        }
-    }
-    fn event(
-        &mut self,
-        _t: f64,
-        from: BlockMode,
-        _g: usize,
-        before: &[f64; 4],
-        after: Option<(BlockMode, &[f64; 4])>,
-    ) {
-        if let (BlockMode::Flight, Some((_, a))) = (from, after) {
-            let gain = a[1] * a[1] + a[3] * a[3] - before[1] * before[1] - before[3] * before[3];
-            self.worst_impact = self.worst_impact.max(gain);
-        }
-    }
-}
-
 #[test]
 fn friction_in_the_cone_and_impacts_never_create_energy() {
     // Gamma = 4.2 (rests every other flight, touch-and-go landings) with bias 0.5:
@@ -140,11 +108,7 @@ fn friction_in_the_cone_and_impacts_never_create_energy() {
     };
     let plate = s.plate();
     let p = s.params(Model::Exact);
-    let mut inv = Invariants {
-        sys: BlockSystem::new(p, &plate),
-        worst_cone: f64::MIN,
-        worst_impact: f64::MIN,
-    };
+    let mut inv = ContactInvariants::new(p, &plate);
     let run = simulate_block_observed(
         &p,
         &plate,
@@ -153,8 +117,12 @@ fn friction_in_the_cone_and_impacts_never_create_energy() {
         &mut inv,
     );
     assert!(run.total_counts.landings > 20);
-    assert!(inv.worst_cone <= 1e-9, "{}", inv.worst_cone);
-    assert!(inv.worst_impact <= 1e-15, "{}", inv.worst_impact);
+    assert!(inv.worst_cone_mps2 <= 1e-9, "{}", inv.worst_cone_mps2);
+    assert!(
+        inv.worst_impact_gain_m2ps2 <= 1e-15,
+        "{}",
+        inv.worst_impact_gain_m2ps2
+    );
 }
 
 #[test]

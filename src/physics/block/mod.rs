@@ -59,7 +59,8 @@
 //! the mean velocity over whole periods, contact fraction, mode fractions and event
 //! counts. [`simulate_block_observed`] also feeds an [`Observer`] every segment and event;
 //! [`BlockSystem::contact_force`] gives the friction and normal force of a segment's
-//! state, to check the friction cone and the dissipation at every step.
+//! state, to check the friction cone and the dissipation at every step;
+//! [`ContactInvariants`] is the observer that does so (and checks the impacts).
 
 use crate::numerics::hybrid::{HybridSystem, Transition};
 use crate::physics::friction::{
@@ -69,11 +70,13 @@ use crate::physics::plate::PlateMotion;
 
 pub mod contact_form;
 mod hybrid_impl;
+mod invariants;
 mod run;
 #[cfg(test)]
 mod tests;
 
 pub use crate::numerics::hybrid::Observer;
+pub use invariants::ContactInvariants;
 pub use run::{
     simulate_block, simulate_block_observed, BlockEvent, BlockOptions, BlockRun, EventCounts,
     EventKind, ModeFractions,
