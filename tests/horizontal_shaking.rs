@@ -14,7 +14,6 @@ use locomotion_workbook::physics::block::{
     simulate_block, simulate_block_observed, BlockOptions, ContactInvariants,
 };
 use locomotion_workbook::physics::plate::PlateMotion;
-use serde_json::Value;
 
 fn scene(gamma_x: f64, bias: f64) -> Scene {
     Scene {
@@ -25,10 +24,6 @@ fn scene(gamma_x: f64, bias: f64) -> Scene {
         bias,
     }
     .at_gamma_x(gamma_x)
-}
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    common::run_with(&["horizontal-shaking"], args)
 }
 
 #[test]
@@ -111,24 +106,18 @@ fn friction_stays_in_the_cone_and_dissipates_at_every_step() {
 
 #[test]
 fn quick_json_has_every_result_and_no_failed_claim() {
-    let (code, out, err) = run(&["--quick", "--json", "--no-figures"]);
-    assert_eq!(code, 0, "{err}");
-    let v: Value = serde_json::from_str(out.trim()).unwrap();
-    for key in [
-        "velocity_amplitude_mps",
-        "gamma_x",
-        "drift_velocity_mps",
-        "drift_velocity_averaged_mps",
-        "averaged_law_relative_error",
-        "gamma_x_for_1pct",
-    ] {
-        assert!(v["results"][key].is_number(), "{key}");
-    }
-    assert!(v["claims"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .all(|c| c["verdict"] != "failed"));
+    let v = common::quick_json("horizontal-shaking");
+    common::assert_numbers_and_no_failed_claim(
+        &v,
+        &[
+            "velocity_amplitude_mps",
+            "gamma_x",
+            "drift_velocity_mps",
+            "drift_velocity_averaged_mps",
+            "averaged_law_relative_error",
+            "gamma_x_for_1pct",
+        ],
+    );
     // V = delta_x omega = 0.02 * 2 pi * 5 (closed form)
     assert!(
         (v["results"]["velocity_amplitude_mps"].as_f64().unwrap()
@@ -161,12 +150,10 @@ fn bad_inputs_give_one_line_naming_the_flag() {
 
 #[test]
 fn quick_summary_snapshot() {
-    let v = common::quick_json("horizontal-shaking");
-    let mut s = common::verdict_lines(&v);
     // Numbers to 3 significant digits: the drift is exact to ~1e-12 and the 1 % point is
     // bracketed to 2e-4 relative in quick mode.
-    s += &common::result_lines(
-        &v,
+    let (v, mut s) = common::quick_summary(
+        "horizontal-shaking",
         &[
             "gamma_x",
             "drift_velocity_mps",

@@ -34,6 +34,16 @@ fn run(args: &[&str]) -> (i32, String, String) {
     common::run_with(&["vertical-shaking"], args)
 }
 
+/// The report's `regime_boundaries_gamma` (dimensionless), as numbers.
+fn boundaries(report: &Value) -> Vec<f64> {
+    report["results"]["regime_boundaries_gamma"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect()
+}
+
 #[test]
 fn takeoff_phase_is_asin_one_over_gamma() {
     // The normal force g + a_zp = g (1 - Gamma sin(omega t)) vanishes at sin = 1/Gamma;
@@ -127,31 +137,20 @@ fn friction_in_the_cone_and_impacts_never_create_energy() {
 
 #[test]
 fn quick_json_has_every_result_and_no_failed_claim() {
-    let (code, out, err) = run(&["--quick", "--json", "--no-figures"]);
-    assert_eq!(code, 0, "{err}");
-    let v: Value = serde_json::from_str(out.trim()).unwrap();
-    for key in [
-        "takeoff_phase_rad",
-        "flight_time_over_period",
-        "contact_fraction",
-        "mean_velocity_mps",
-        "mu_eff",
-        "mu_eff_law",
-    ] {
-        assert!(v["results"][key].is_number(), "{key}");
-    }
-    let b: Vec<f64> = v["results"]["regime_boundaries_gamma"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_f64().unwrap())
-        .collect();
+    let v = common::quick_json("vertical-shaking");
+    common::assert_numbers_and_no_failed_claim(
+        &v,
+        &[
+            "takeoff_phase_rad",
+            "flight_time_over_period",
+            "contact_fraction",
+            "mean_velocity_mps",
+            "mu_eff",
+            "mu_eff_law",
+        ],
+    );
+    let b = boundaries(&v);
     assert!(b.windows(2).all(|w| w[0] < w[1]), "sorted: {b:?}");
-    assert!(v["claims"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .all(|c| c["verdict"] != "failed"));
 }
 
 #[test]
@@ -179,11 +178,9 @@ fn bad_inputs_give_one_line_naming_the_flag() {
 
 #[test]
 fn quick_summary_snapshot() {
-    let v = common::quick_json("vertical-shaking");
-    let mut s = common::verdict_lines(&v);
     // Exact closed-form runs: 4 significant digits are far above the round-off.
-    s += &common::result_lines(
-        &v,
+    let (v, mut s) = common::quick_summary(
+        "vertical-shaking",
         &[
             "takeoff_phase_rad",
             "flight_time_over_period",
@@ -199,12 +196,7 @@ fn quick_summary_snapshot() {
     // Boundaries to 2 decimals: quick-mode brackets are 5e-4 wide at most, but the
     // period-doubling ones move by ~1e-2 with the transient, so only the count and
     // the three Gamma_n-type ones are pinned.
-    let b: Vec<f64> = v["results"]["regime_boundaries_gamma"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_f64().unwrap())
-        .collect();
+    let b = boundaries(&v);
     s.push_str(&format!("boundaries = {}\n", b.len()));
     for g in [3.297, 6.362, 9.478] {
         let near = b
