@@ -14,7 +14,7 @@ mod common;
 use locomotion_workbook::chapters::vertical_shaking::regimes::regime_at;
 use locomotion_workbook::chapters::vertical_shaking::scene::{run as run_scene, Model, Scene};
 use locomotion_workbook::physics::block::{
-    simulate_block_observed, BlockOptions, ContactInvariants,
+    ballistic_flight_s, simulate_block_observed, BlockOptions, ContactInvariants,
 };
 use locomotion_workbook::physics::plate::PlateMotion;
 use serde_json::Value;
@@ -64,29 +64,14 @@ fn takeoff_phase_is_asin_one_over_gamma() {
 fn first_flight_lands_on_the_root_of_the_ballistic_gap() {
     // From take-off at phase phi0 with the plate's velocity, the gap
     // z_p(t0) + v0 s - g s^2 / 2 - z_p(t0 + s) first returns to zero at the landing.
-    // Root found here by a scan and bisection (independent of the driver); agreement to
-    // 1e-12 s (both sides resolve the root to round-off).
+    // Root found by ballistic_flight_s, a scan and bisection (independent of the driver);
+    // agreement to 1e-12 s (both sides resolve the root to round-off).
     for gamma in [1.5, 2.5, 3.2] {
         let s = scene(gamma);
         let plate = s.plate();
         let st = run_scene(&s, Model::Exact, 0, 2);
         let t0 = (1.0 / gamma).asin() / s.omega();
-        let v0 = plate.vz_mps(t0);
-        let gap = |dt: f64| plate.z_m(t0) + v0 * dt - 0.5 * s.g_mps2 * dt * dt - plate.z_m(t0 + dt);
-        let ds = plate.period_s() / 10_000.0;
-        let mut a = ds;
-        while gap(a + ds) > 0.0 {
-            a += ds;
-        }
-        let mut b = a + ds;
-        for _ in 0..200 {
-            let m = 0.5 * (a + b);
-            if gap(m) > 0.0 {
-                a = m;
-            } else {
-                b = m;
-            }
-        }
+        let b = ballistic_flight_s(&plate, t0, s.g_mps2, 10_000);
         let flight = st.flights[0] * plate.period_s();
         assert!((flight - b).abs() < 1e-12, "Gamma {gamma}: {flight} vs {b}");
     }

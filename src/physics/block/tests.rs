@@ -73,28 +73,6 @@ fn block_sticks_on_a_slowly_shaken_plate() {
     assert!(run.total_counts.stick_to_slip > 0);
 }
 
-/// First positive root of `z_p(t0) + v0 s - g s^2/2 - z_p(t0 + s) = 0` by a fine scan and
-/// bisection (independent of the driver's Illinois search on the closed form).
-fn ballistic_landing(plate: &Harmonic, t0: f64) -> f64 {
-    let v0 = plate.vz_mps(t0);
-    let gap = |s: f64| plate.z_m(t0) + v0 * s - 0.5 * G * s * s - plate.z_m(t0 + s);
-    let ds = plate.period_s() / 4096.0;
-    let mut a = ds;
-    while gap(a + ds) > 0.0 {
-        a += ds;
-    }
-    let mut b = a + ds;
-    for _ in 0..200 {
-        let m = 0.5 * (a + b);
-        if gap(m) > 0.0 {
-            a = m;
-        } else {
-            b = m;
-        }
-    }
-    b
-}
-
 #[test]
 fn takeoff_phase_is_asin_one_over_gamma_and_the_hop_lands_on_the_ballistic_root() {
     // Vertical plate z = delta sin(wt): the normal force g + a_zp vanishes (falling)
@@ -123,7 +101,7 @@ fn takeoff_phase_is_asin_one_over_gamma_and_the_hop_lands_on_the_ballistic_root(
                 .iter()
                 .find(|e| e.kind == EventKind::Landing)
                 .expect("lands");
-            let exact = takeoff.t_s + ballistic_landing(&plate, takeoff.t_s);
+            let exact = takeoff.t_s + ballistic_flight_s(&plate, takeoff.t_s, G, 4096);
             assert!(
                 (landing.t_s - exact).abs() < tol,
                 "Gamma {gamma} closed {}: {} vs {exact}",

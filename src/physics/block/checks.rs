@@ -1,6 +1,7 @@
-//! [`ContactInvariants`]: an [`Observer`] that measures how far a block run strays from
-//! the contact laws (friction cone, dissipation, impacts, a plate that only pushes), for
-//! unit and integration tests to assert on.
+//! Independent checks of block runs, for unit and integration tests to assert on:
+//! [`ContactInvariants`], an [`Observer`] that measures how far a run strays from the
+//! contact laws (friction cone, dissipation, impacts, a plate that only pushes), and
+//! [`ballistic_flight_s`], a hop's flight time found without the driver.
 
 use super::{BlockMode, BlockParams, BlockSystem};
 use crate::numerics::hybrid::{Observer, Segment};
@@ -84,4 +85,34 @@ impl<P: PlateMotion + ?Sized> Observer<BlockMode, 4> for ContactInvariants<'_, P
             self.worst_impact_gain_m2ps2 = self.worst_impact_gain_m2ps2.max(gain);
         }
     }
+}
+
+/// Flight time (s) of a block that leaves `plate` at `t0_s` with the plate's velocity and
+/// falls under `g_mps2` (m/s^2): the first positive root of the ballistic gap
+/// `z_p(t0) + v0 s - g s^2/2 - z_p(t0 + s)`, bracketed by a scan in steps of one
+/// `scan_steps_per_period`-th of the plate's period and bisected 200 times (to
+/// round-off). Independent of the block driver's event location, which it checks.
+pub fn ballistic_flight_s<P: PlateMotion + ?Sized>(
+    plate: &P,
+    t0_s: f64,
+    g_mps2: f64,
+    scan_steps_per_period: u32,
+) -> f64 {
+    let v0 = plate.vz_mps(t0_s);
+    let gap = |s: f64| plate.z_m(t0_s) + v0 * s - 0.5 * g_mps2 * s * s - plate.z_m(t0_s + s);
+    let ds = plate.period_s() / f64::from(scan_steps_per_period);
+    let mut a = ds;
+    while gap(a + ds) > 0.0 {
+        a += ds;
+    }
+    let mut b = a + ds;
+    for _ in 0..200 {
+        let m = 0.5 * (a + b);
+        if gap(m) > 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    b
 }
