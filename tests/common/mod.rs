@@ -71,8 +71,7 @@ pub fn result_lines(report: &serde_json::Value, keys: &[&str]) -> String {
         .collect()
 }
 
-/// `quick_json(chapter)` and the head of its summary snapshot: the `id: verdict` lines,
-/// then the `key = value` lines of `keys`.
+/// `quick_json(chapter)` and its snapshot head: `id: verdict` lines, then `keys` as `key = value`.
 pub fn quick_summary(chapter: &str, keys: &[&str]) -> (serde_json::Value, String) {
     let v = quick_json(chapter);
     let s = verdict_lines(&v, ": ") + &result_lines(&v, keys);
