@@ -161,31 +161,20 @@ fn large_mu_and_the_summary_snapshot() {
     assert_eq!(c["verdict"], "approximation");
     assert!(c["expected"].as_str().unwrap().contains("every angle"));
     let r = report(&[]);
-    let mut lines: Vec<String> = r["claims"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| {
-            format!(
-                "{} {}",
-                c["id"].as_str().unwrap(),
-                c["verdict"].as_str().unwrap()
-            )
-        })
-        .collect();
+    let mut lines = common::verdict_lines(&r, " ");
     for (k, v) in r["results"].as_object().unwrap() {
         let s = v
             .as_f64()
             .map(|x| format!("{x:.4}"))
             .unwrap_or_else(|| v.to_string());
-        lines.push(format!("{k} = {s}"));
+        lines += &format!("{k} = {s}\n");
     }
-    lines.push(format!(
+    lines += &format!(
         "rod lock angles mu=0.4: {:?}",
         rod_lock_angles_closed_form(0.4)
             .map(|(a, b)| (fmt_num(a.to_degrees()), fmt_num(b.to_degrees())))
-    ));
-    insta::assert_snapshot!("effective_mass_summary", lines.join("\n"));
+    );
+    insta::assert_snapshot!("effective_mass_summary", lines);
 }
 
 #[test]

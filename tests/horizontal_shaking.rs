@@ -10,12 +10,10 @@
 mod common;
 
 use locomotion_workbook::chapters::horizontal_shaking::drift::{steady_drift, Scene};
-use locomotion_workbook::numerics::hybrid::Segment;
 use locomotion_workbook::physics::block::{
-    simulate_block, simulate_block_observed, BlockMode, BlockOptions, BlockSystem, Observer,
+    simulate_block, simulate_block_observed, BlockOptions, ContactInvariants,
 };
-use locomotion_workbook::physics::plate::{Harmonic, PlateMotion};
-use serde_json::Value;
+use locomotion_workbook::physics::plate::PlateMotion;
 
 fn scene(gamma_x: f64, bias: f64) -> Scene {
     Scene {
@@ -26,10 +24,6 @@ fn scene(gamma_x: f64, bias: f64) -> Scene {
         bias,
     }
     .at_gamma_x(gamma_x)
-}
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    common::run_with(&["horizontal-shaking"], args)
 }
 
 #[test]
@@ -85,30 +79,6 @@ fn zero_bias_gives_zero_drift() {
     }
 }
 
-struct Cone<'a> {
-    sys: BlockSystem<'a, Harmonic>,
-    worst_cone: f64,
-    worst_power: f64,
-    stick_segments: usize,
-}
-
-impl Observer<BlockMode, 4> for Cone<'_> {
-    fn segment(&mut self, mode: BlockMode, seg: &Segment<'_, 4>) {
-        if mode == BlockMode::Stick {
-            self.stick_segments += 1;
-        }
-        for k in 0..=10 {
-            let t = seg.t0 + (seg.t1 - seg.t0) * k as f64 / 10.0;
-            let y = seg.eval(t);
-            let c = self.sys.contact_force(mode, t, &y);
-            self.worst_cone = self
-                .worst_cone
-                .max(c.tangential_mps2.abs() - 0.36 * c.normal_mps2);
-            self.worst_power = self.worst_power.max(c.tangential_mps2 * y[1]);
-        }
-    }
-}
-
 #[test]
 fn friction_stays_in_the_cone_and_dissipates_at_every_step() {
     // Gamma_x = 1.5 with bias 0.3: stick, slip both ways. Set-valued Coulomb friction:
@@ -117,12 +87,7 @@ fn friction_stays_in_the_cone_and_dissipates_at_every_step() {
     // the relative motion; w = 0 exactly while sticking).
     let s = scene(1.5, 0.3);
     let plate = s.plate();
-    let mut c = Cone {
-        sys: BlockSystem::new(s.params(), &plate),
-        worst_cone: f64::MIN,
-        worst_power: f64::MIN,
-        stick_segments: 0,
-    };
+    let mut c = ContactInvariants::new(s.params(), &plate);
     let run = simulate_block_observed(
         &s.params(),
         &plate,
@@ -131,30 +96,28 @@ fn friction_stays_in_the_cone_and_dissipates_at_every_step() {
         &mut c,
     );
     assert!(c.stick_segments > 0 && run.total_counts.stick_to_slip > 0);
-    assert!(c.worst_cone <= 1e-9, "{}", c.worst_cone);
-    assert!(c.worst_power <= 1e-12, "{}", c.worst_power);
+    assert!(c.worst_cone_mps2 <= 1e-9, "{}", c.worst_cone_mps2);
+    assert!(
+        c.worst_power_w_per_kg <= 1e-12,
+        "{}",
+        c.worst_power_w_per_kg
+    );
 }
 
 #[test]
 fn quick_json_has_every_result_and_no_failed_claim() {
-    let (code, out, err) = run(&["--quick", "--json", "--no-figures"]);
-    assert_eq!(code, 0, "{err}");
-    let v: Value = serde_json::from_str(out.trim()).unwrap();
-    for key in [
-        "velocity_amplitude_mps",
-        "gamma_x",
-        "drift_velocity_mps",
-        "drift_velocity_averaged_mps",
-        "averaged_law_relative_error",
-        "gamma_x_for_1pct",
-    ] {
-        assert!(v["results"][key].is_number(), "{key}");
-    }
-    assert!(v["claims"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .all(|c| c["verdict"] != "failed"));
+    let v = common::quick_json("horizontal-shaking");
+    common::assert_numbers_and_no_failed_claim(
+        &v,
+        &[
+            "velocity_amplitude_mps",
+            "gamma_x",
+            "drift_velocity_mps",
+            "drift_velocity_averaged_mps",
+            "averaged_law_relative_error",
+            "gamma_x_for_1pct",
+        ],
+    );
     // V = delta_x omega = 0.02 * 2 pi * 5 (closed form)
     assert!(
         (v["results"]["velocity_amplitude_mps"].as_f64().unwrap()
@@ -187,12 +150,10 @@ fn bad_inputs_give_one_line_naming_the_flag() {
 
 #[test]
 fn quick_summary_snapshot() {
-    let v = common::quick_json("horizontal-shaking");
-    let mut s = common::verdict_lines(&v);
     // Numbers to 3 significant digits: the drift is exact to ~1e-12 and the 1 % point is
     // bracketed to 2e-4 relative in quick mode.
-    s += &common::result_lines(
-        &v,
+    let (v, mut s) = common::quick_summary(
+        "horizontal-shaking",
         &[
             "gamma_x",
             "drift_velocity_mps",

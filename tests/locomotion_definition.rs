@@ -246,24 +246,13 @@ fn summary_snapshot() {
         .collect();
     let (_, out, _) = run(&["--object-velocity", "3,0"]);
     let r: Value = serde_json::from_str(&out).unwrap();
-    let claims: Vec<String> = r["claims"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|c| {
-            format!(
-                "{} {}",
-                c["id"].as_str().unwrap(),
-                c["verdict"].as_str().unwrap()
-            )
-        })
-        .collect();
+    // The claim lines end in a newline each.
     insta::assert_snapshot!(
         "locomotion_definition_summary",
         format!(
-            "{}\n{}\nreason: {}",
+            "{}\n{}reason: {}",
             lines.join("\n"),
-            claims.join("\n"),
+            common::verdict_lines(&r, " "),
             r["results"]["reason"].as_str().unwrap()
         )
     );

@@ -13,11 +13,10 @@ mod common;
 
 use locomotion_workbook::chapters::vertical_shaking::regimes::regime_at;
 use locomotion_workbook::chapters::vertical_shaking::scene::{run as run_scene, Model, Scene};
-use locomotion_workbook::numerics::hybrid::Segment;
 use locomotion_workbook::physics::block::{
-    simulate_block_observed, BlockMode, BlockOptions, BlockSystem, Observer,
+    ballistic_flight_s, simulate_block_observed, BlockOptions, ContactInvariants,
 };
-use locomotion_workbook::physics::plate::{Harmonic, PlateMotion};
+use locomotion_workbook::physics::plate::PlateMotion;
 use serde_json::Value;
 use std::f64::consts::PI;
 
@@ -33,6 +32,16 @@ fn scene(gamma: f64) -> Scene {
 
 fn run(args: &[&str]) -> (i32, String, String) {
     common::run_with(&["vertical-shaking"], args)
+}
+
+/// The report's `regime_boundaries_gamma` (dimensionless), as numbers.
+fn boundaries(report: &Value) -> Vec<f64> {
+    report["results"]["regime_boundaries_gamma"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect()
 }
 
 #[test]
@@ -55,29 +64,14 @@ fn takeoff_phase_is_asin_one_over_gamma() {
 fn first_flight_lands_on_the_root_of_the_ballistic_gap() {
     // From take-off at phase phi0 with the plate's velocity, the gap
     // z_p(t0) + v0 s - g s^2 / 2 - z_p(t0 + s) first returns to zero at the landing.
-    // Root found here by a scan and bisection (independent of the driver); agreement to
-    // 1e-12 s (both sides resolve the root to round-off).
+    // Root found by ballistic_flight_s, a scan and bisection (independent of the driver);
+    // agreement to 1e-12 s (both sides resolve the root to round-off).
     for gamma in [1.5, 2.5, 3.2] {
         let s = scene(gamma);
         let plate = s.plate();
         let st = run_scene(&s, Model::Exact, 0, 2);
         let t0 = (1.0 / gamma).asin() / s.omega();
-        let v0 = plate.vz_mps(t0);
-        let gap = |dt: f64| plate.z_m(t0) + v0 * dt - 0.5 * s.g_mps2 * dt * dt - plate.z_m(t0 + dt);
-        let ds = plate.period_s() / 10_000.0;
-        let mut a = ds;
-        while gap(a + ds) > 0.0 {
-            a += ds;
-        }
-        let mut b = a + ds;
-        for _ in 0..200 {
-            let m = 0.5 * (a + b);
-            if gap(m) > 0.0 {
-                a = m;
-            } else {
-                b = m;
-            }
-        }
+        let b = ballistic_flight_s(&plate, t0, s.g_mps2, 10_000);
         let flight = st.flights[0] * plate.period_s();
         assert!((flight - b).abs() < 1e-12, "Gamma {gamma}: {flight} vs {b}");
     }
@@ -98,37 +92,6 @@ fn one_period_flight_boundary_is_sqrt_one_plus_pi_squared() {
     assert_eq!(above.label(), "no-rest P1/1T");
 }
 
-struct Invariants<'a> {
-    sys: BlockSystem<'a, Harmonic>,
-    worst_cone: f64,
-    worst_impact: f64,
-}
-
-impl Observer<BlockMode, 4> for Invariants<'_> {
-    fn segment(&mut self, mode: BlockMode, seg: &Segment<'_, 4>) {
-        for k in 0..=10 {
-            let t = seg.t0 + (seg.t1 - seg.t0) * k as f64 / 10.0;
-            let c = self.sys.contact_force(mode, t, &seg.eval(t));
-            self.worst_cone = self
-                .worst_cone
-                .max(c.tangential_mps2.abs() - 0.4 * c.normal_mps2);
-        }
-    }
-    fn event(
-        &mut self,
-        _t: f64,
-        from: BlockMode,
-        _g: usize,
-        before: &[f64; 4],
-        after: Option<(BlockMode, &[f64; 4])>,
-    ) {
-        if let (BlockMode::Flight, Some((_, a))) = (from, after) {
-            let gain = a[1] * a[1] + a[3] * a[3] - before[1] * before[1] - before[3] * before[3];
-            self.worst_impact = self.worst_impact.max(gain);
-        }
-    }
-}
-
 #[test]
 fn friction_in_the_cone_and_impacts_never_create_energy() {
     // Gamma = 4.2 (rests every other flight, touch-and-go landings) with bias 0.5:
@@ -140,11 +103,7 @@ fn friction_in_the_cone_and_impacts_never_create_energy() {
     };
     let plate = s.plate();
     let p = s.params(Model::Exact);
-    let mut inv = Invariants {
-        sys: BlockSystem::new(p, &plate),
-        worst_cone: f64::MIN,
-        worst_impact: f64::MIN,
-    };
+    let mut inv = ContactInvariants::new(p, &plate);
     let run = simulate_block_observed(
         &p,
         &plate,
@@ -153,37 +112,30 @@ fn friction_in_the_cone_and_impacts_never_create_energy() {
         &mut inv,
     );
     assert!(run.total_counts.landings > 20);
-    assert!(inv.worst_cone <= 1e-9, "{}", inv.worst_cone);
-    assert!(inv.worst_impact <= 1e-15, "{}", inv.worst_impact);
+    assert!(inv.worst_cone_mps2 <= 1e-9, "{}", inv.worst_cone_mps2);
+    assert!(
+        inv.worst_impact_gain_m2ps2 <= 1e-15,
+        "{}",
+        inv.worst_impact_gain_m2ps2
+    );
 }
 
 #[test]
 fn quick_json_has_every_result_and_no_failed_claim() {
-    let (code, out, err) = run(&["--quick", "--json", "--no-figures"]);
-    assert_eq!(code, 0, "{err}");
-    let v: Value = serde_json::from_str(out.trim()).unwrap();
-    for key in [
-        "takeoff_phase_rad",
-        "flight_time_over_period",
-        "contact_fraction",
-        "mean_velocity_mps",
-        "mu_eff",
-        "mu_eff_law",
-    ] {
-        assert!(v["results"][key].is_number(), "{key}");
-    }
-    let b: Vec<f64> = v["results"]["regime_boundaries_gamma"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_f64().unwrap())
-        .collect();
+    let v = common::quick_json("vertical-shaking");
+    common::assert_numbers_and_no_failed_claim(
+        &v,
+        &[
+            "takeoff_phase_rad",
+            "flight_time_over_period",
+            "contact_fraction",
+            "mean_velocity_mps",
+            "mu_eff",
+            "mu_eff_law",
+        ],
+    );
+    let b = boundaries(&v);
     assert!(b.windows(2).all(|w| w[0] < w[1]), "sorted: {b:?}");
-    assert!(v["claims"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .all(|c| c["verdict"] != "failed"));
 }
 
 #[test]
@@ -211,11 +163,9 @@ fn bad_inputs_give_one_line_naming_the_flag() {
 
 #[test]
 fn quick_summary_snapshot() {
-    let v = common::quick_json("vertical-shaking");
-    let mut s = common::verdict_lines(&v);
     // Exact closed-form runs: 4 significant digits are far above the round-off.
-    s += &common::result_lines(
-        &v,
+    let (v, mut s) = common::quick_summary(
+        "vertical-shaking",
         &[
             "takeoff_phase_rad",
             "flight_time_over_period",
@@ -231,12 +181,7 @@ fn quick_summary_snapshot() {
     // Boundaries to 2 decimals: quick-mode brackets are 5e-4 wide at most, but the
     // period-doubling ones move by ~1e-2 with the transient, so only the count and
     // the three Gamma_n-type ones are pinned.
-    let b: Vec<f64> = v["results"]["regime_boundaries_gamma"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_f64().unwrap())
-        .collect();
+    let b = boundaries(&v);
     s.push_str(&format!("boundaries = {}\n", b.len()));
     for g in [3.297, 6.362, 9.478] {
         let near = b

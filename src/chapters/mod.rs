@@ -102,6 +102,23 @@ pub fn info(id: &str) -> Option<&'static ChapterInfo> {
     CHAPTERS.iter().find(|c| c.id == id)
 }
 
+/// Checks the global `--g-mps2` (finite, > 0, m/s^2; its error line names the flag) and
+/// opens chapter `id`'s report with the already validated flags `params` recorded in
+/// order, then `g_mps2`. Returns the report and g (m/s^2).
+pub fn report_with_g(
+    id: &str,
+    ctx: &Context,
+    params: &[(&str, f64)],
+) -> Result<(ChapterReport, f64)> {
+    let g_mps2 = crate::error::positive("--g-mps2", ctx.g(), "m/s^2")?;
+    let mut r = info(id).expect("registered").report();
+    for &(key, value) in params {
+        r.param(key, value);
+    }
+    r.param("g_mps2", g_mps2);
+    Ok((r, g_mps2))
+}
+
 /// Settings shared by every chapter (the global flags).
 #[derive(Debug, Clone)]
 pub struct Context {

@@ -103,6 +103,58 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
     Ok(any_label)
 }
 
+/// Builds the house-style chart on `area`: caption `title`, margins, label areas, and
+/// axes over `bx = (x0, x1, y0, y1)` (axis units) with the ticks of [`ticks`] for `logs`
+/// (x, y). Returns the chart and the (x, y) tick steps, for [`draw_axes`].
+pub(super) fn build_chart<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    title: &str,
+    bx: (f64, f64, f64, f64),
+    logs: (bool, bool),
+) -> Result<(Ctx<'a, DB>, (f64, f64)), String> {
+    let (x0, x1, y0, y1) = bx;
+    let (xt, xstep) = ticks(x0, x1, logs.0);
+    let (yt, ystep) = ticks(y0, y1, logs.1);
+    let ch = ChartBuilder::on(area)
+        .caption(title, font(TITLE_PX))
+        .margin(18)
+        .x_label_area_size(58)
+        .y_label_area_size(88)
+        .build_cartesian_2d(Ticked::new(x0, x1, xt), Ticked::new(y0, y1, yt))
+        .map_err(|e| e.to_string())?;
+    Ok((ch, (xstep, ystep)))
+}
+
+/// Draws the house-style axes of `ch`: descriptions `labels` (x, y), tick labels for
+/// the tick `steps` and `logs` (x, y) of [`build_chart`], and a light grid at the major
+/// ticks if `grid` (none otherwise).
+pub(super) fn draw_axes<DB: DrawingBackend>(
+    ch: &mut Ctx<'_, DB>,
+    labels: (&str, &str),
+    steps: (f64, f64),
+    logs: (bool, bool),
+    grid: bool,
+) -> Result<(), String> {
+    let fx = |v: &f64| tick_label(*v, steps.0, logs.0);
+    let fy = |v: &f64| tick_label(*v, steps.1, logs.1);
+    let mut mesh = ch.configure_mesh();
+    if grid {
+        mesh.bold_line_style(GRID.stroke_width(1))
+            .light_line_style(TRANSPARENT);
+    } else {
+        mesh.disable_mesh();
+    }
+    mesh.axis_style(BLACK.stroke_width(1))
+        .x_desc(labels.0)
+        .y_desc(labels.1)
+        .axis_desc_style(font(LABEL_PX))
+        .label_style(font(TICK_PX))
+        .x_label_formatter(&fx)
+        .y_label_formatter(&fy)
+        .draw()
+        .map_err(|e| e.to_string())
+}
+
 pub(super) fn ticks(lo: f64, hi: f64, log: bool) -> (Vec<f64>, f64) {
     if log {
         (axis::log_ticks(lo, hi), 1.0)
@@ -141,30 +193,9 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
     let (x0, x1) = axis::range(c.x_range, &xs, if only_lines { 0.0 } else { 0.04 }, c.log_x);
     let (y0, y1) = axis::range(c.y_range, &ys, 0.06, c.log_y);
     let bx = (x0, x1, y0, y1);
-    let (xt, xstep) = ticks(x0, x1, c.log_x);
-    let (yt, ystep) = ticks(y0, y1, c.log_y);
-
-    let mut ch = ChartBuilder::on(area)
-        .caption(&c.title, font(TITLE_PX))
-        .margin(18)
-        .x_label_area_size(58)
-        .y_label_area_size(88)
-        .build_cartesian_2d(Ticked::new(x0, x1, xt), Ticked::new(y0, y1, yt))
-        .map_err(e)?;
-    let fx = |v: &f64| tick_label(*v, xstep, c.log_x);
-    let fy = |v: &f64| tick_label(*v, ystep, c.log_y);
-    ch.configure_mesh()
-        .bold_line_style(GRID.stroke_width(1))
-        .light_line_style(TRANSPARENT)
-        .axis_style(BLACK.stroke_width(1))
-        .x_desc(c.x_label.as_str())
-        .y_desc(c.y_label.as_str())
-        .axis_desc_style(font(LABEL_PX))
-        .label_style(font(TICK_PX))
-        .x_label_formatter(&fx)
-        .y_label_formatter(&fy)
-        .draw()
-        .map_err(e)?;
+    let logs = (c.log_x, c.log_y);
+    let (mut ch, steps) = build_chart(area, &c.title, bx, logs)?;
+    draw_axes(&mut ch, (&c.x_label, &c.y_label), steps, logs, true)?;
 
     let mut any_label = false;
     for (i, (a, b, label)) in c.bands.iter().enumerate() {

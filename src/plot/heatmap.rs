@@ -1,7 +1,7 @@
 //! Heat maps (parameter maps) with a viridis colour bar and overlaid curves.
 
 use super::axis::{self, Ticked};
-use super::chart::{draw_series, tick_label, ticks};
+use super::chart::{build_chart, draw_axes, draw_series, tick_label, ticks};
 use super::{font, Drawing, Legend, Series, GRID, LABEL_PX, TICK_PX, TITLE_PX};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -140,15 +140,8 @@ impl Drawing for HeatMap {
 
         let (x0, x1) = (ex[0], ex[ex.len() - 1]);
         let (y0, y1) = (ey[0], ey[ey.len() - 1]);
-        let (xt, xs) = ticks(x0, x1, false);
-        let (yt, ys) = ticks(y0, y1, false);
-        let mut ch = ChartBuilder::on(&main)
-            .caption(&self.title, font(TITLE_PX))
-            .margin(18)
-            .x_label_area_size(58)
-            .y_label_area_size(88)
-            .build_cartesian_2d(Ticked::new(x0, x1, xt), Ticked::new(y0, y1, yt))
-            .map_err(e)?;
+        let linear = (false, false);
+        let (mut ch, steps) = build_chart(&main, &self.title, (x0, x1, y0, y1), linear)?;
         let (ex, ey) = (&ex, &ey);
         let cells = (0..self.ys.len().max(1)).flat_map(|iy| {
             (0..self.xs.len().max(1)).map(move |ix| {
@@ -163,23 +156,17 @@ impl Drawing for HeatMap {
             })
         });
         ch.draw_series(cells).map_err(e)?;
-        let fx = |v: &f64| tick_label(*v, xs, false);
-        let fy = |v: &f64| tick_label(*v, ys, false);
-        ch.configure_mesh()
-            .disable_mesh()
-            .axis_style(BLACK.stroke_width(1))
-            .x_desc(self.x_label.as_str())
-            .y_desc(self.y_label.as_str())
-            .axis_desc_style(font(LABEL_PX))
-            .label_style(font(TICK_PX))
-            .x_label_formatter(&fx)
-            .y_label_formatter(&fy)
-            .draw()
-            .map_err(e)?;
+        draw_axes(
+            &mut ch,
+            (&self.x_label, &self.y_label),
+            steps,
+            linear,
+            false,
+        )?;
         let labelled = draw_series(
             &mut ch,
             &self.overlays,
-            (false, false),
+            linear,
             (x0, x1, y0, y1),
             overlay_color,
         )?;

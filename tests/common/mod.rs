@@ -43,14 +43,14 @@ pub fn quick_json(chapter: &str) -> serde_json::Value {
     serde_json::from_str(out.trim()).expect("one JSON object on stdout")
 }
 
-/// One line `id: verdict` per claim of a report: the discrete part of a snapshot.
-pub fn verdict_lines(report: &serde_json::Value) -> String {
+/// One line `id<sep>verdict` per claim of a report: the discrete part of a snapshot.
+pub fn verdict_lines(report: &serde_json::Value, sep: &str) -> String {
     let claims = report["claims"].as_array().expect("claims array");
     claims
         .iter()
         .map(|c| {
             format!(
-                "{}: {}\n",
+                "{}{sep}{}\n",
                 c["id"].as_str().unwrap(),
                 c["verdict"].as_str().unwrap()
             )
@@ -69,4 +69,23 @@ pub fn result_lines(report: &serde_json::Value, keys: &[&str]) -> String {
             format!("{k} = {}\n", locomotion_workbook::report::fmt_num(x))
         })
         .collect()
+}
+
+/// `quick_json(chapter)` and its snapshot head: `id: verdict` lines, then `keys` as `key = value`.
+pub fn quick_summary(chapter: &str, keys: &[&str]) -> (serde_json::Value, String) {
+    let v = quick_json(chapter);
+    let s = verdict_lines(&v, ": ") + &result_lines(&v, keys);
+    (v, s)
+}
+
+/// Checks that every result named in `keys` is a number and that no claim failed.
+pub fn assert_numbers_and_no_failed_claim(report: &serde_json::Value, keys: &[&str]) {
+    for key in keys {
+        assert!(report["results"][*key].is_number(), "{key}");
+    }
+    assert!(report["claims"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|c| c["verdict"] != "failed"));
 }

@@ -1,7 +1,7 @@
 //! The checks of the chapter: every claim of section 3.2 against the closed forms of
 //! `physics::sawtooth` and the event-driven simulation of `physics::block`.
 
-use super::sims::{run_block, DriftRun, Law, Numerics, Window};
+use super::sims::{drift, run_block, DriftRun, Law, Numerics, Window};
 use super::Scene;
 use crate::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion, Sawtooth};
 use crate::physics::sawtooth::biharmonic::{always_slipping_drift, stick_forever_gamma};
@@ -55,6 +55,22 @@ pub struct Traces {
 /// at a stroke's end, rounding decides whether it locks then or a period later.)
 pub fn transient(saw: &Sawtooth, k: f64) -> usize {
     (lock_time_s(saw, k, 0.0) / saw.period_s()).floor() as usize + 2
+}
+
+/// Mean velocity (m/s) of a block from rest on `saw` under `law`, averaged over
+/// `measured` periods after the [`transient`] for friction `k_mps2 = mu g` (m/s^2).
+pub fn drift_after_lock(
+    law: Law,
+    saw: &Sawtooth,
+    k_mps2: f64,
+    measured: usize,
+    num: &Numerics,
+) -> f64 {
+    let window = Window {
+        transient: transient(saw, k_mps2),
+        measured,
+    };
+    drift(law, saw, window, num)
 }
 
 /// A sawtooth with the same speeds whose fast stroke lasts `ratio (a + b)/k`.
@@ -341,32 +357,8 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
     ));
     // Locomotion needs mu g t_fast < v_slow + v_fast.
     let strong = scaled(&saw, k, 2.0);
-    let v_weak = run_block(
-        coul,
-        &weak,
-        0.0,
-        Window {
-            transient: transient(&weak, k),
-            measured,
-        },
-        &num,
-        (0.0, 0.0),
-        0.0,
-    )
-    .mean_velocity_mps;
-    let v_strong = run_block(
-        coul,
-        &strong,
-        0.0,
-        Window {
-            transient: transient(&strong, k),
-            measured,
-        },
-        &num,
-        (0.0, 0.0),
-        0.0,
-    )
-    .mean_velocity_mps;
+    let v_weak = drift_after_lock(coul, &weak, k, measured, &num);
+    let v_strong = drift_after_lock(coul, &strong, k, measured, &num);
     r.claim(Claim::judged(
         "locomotion-needs-slip",
         "3.2.2",

@@ -2,7 +2,7 @@
 //! drift against the asymmetry, drift against the drive number, the regime map, and
 //! the work-precision chart. Sweeps here feed figures only.
 
-use super::claims::{biharmonic, slip_transient, transient, Traces};
+use super::claims::{biharmonic, drift_after_lock, slip_transient, Traces};
 use super::sims::{run_block, Law, Numerics, Window};
 use super::Scene;
 use crate::error::Result;
@@ -72,19 +72,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
             fast_velocity_mps: r * a,
             ..saw
         };
-        let v = run_block(
-            coul,
-            &s,
-            0.0,
-            Window {
-                transient: transient(&s, k),
-                measured,
-            },
-            &num,
-            (0.0, 0.0),
-            0.0,
-        )
-        .mean_velocity_mps;
+        let v = drift_after_lock(coul, &s, k, measured, &num);
         (r, v / a)
     });
     let y = k * saw.slow_duration_s / a;

@@ -8,7 +8,7 @@
 //! checks the document's claims, charts where the averaged law stops being good enough
 //! (relative error against Gamma_x) and locates the Gamma_x of 1 % error by bisection.
 
-use super::{info, Context};
+use super::{report_with_g, Context};
 use crate::error::{half_open, open_interval, positive, Result};
 use crate::physics::block::{simulate_block, BlockOptions};
 use crate::physics::plate::PlateMotion;
@@ -81,13 +81,16 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     let amp = positive("--amplitude-m", args.amplitude_m, "m")?;
     let freq = positive("--frequency-hz", args.frequency_hz, "Hz")?;
     let bias = half_open("--bias", args.bias, 0.0, 1.0, "fraction of mu m g")?;
-    let g = positive("--g-mps2", ctx.g(), "m/s^2")?;
-    let mut r = info("horizontal-shaking").expect("registered").report();
-    r.param("mu", mu);
-    r.param("amplitude_m", amp);
-    r.param("frequency_hz", freq);
-    r.param("bias", bias);
-    r.param("g_mps2", g);
+    let (mut r, g) = report_with_g(
+        "horizontal-shaking",
+        ctx,
+        &[
+            ("mu", mu),
+            ("amplitude_m", amp),
+            ("frequency_hz", freq),
+            ("bias", bias),
+        ],
+    )?;
     let scene = Scene {
         mu,
         g_mps2: g,

@@ -8,7 +8,7 @@
 //! maps the regimes of the e = 0 bouncing block over 1 < Gamma < 10 with boundaries
 //! located by bisection on a regime classifier.
 
-use super::{info, Context};
+use super::{report_with_g, Context};
 use crate::error::{check, half_open, open_interval, positive, Result};
 use crate::physics::plate::PlateMotion;
 use crate::report::ChapterReport;
@@ -66,13 +66,16 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
         1.0,
         "fraction of mu m g; the law needs F < mu m g",
     )?;
-    let g = positive("--g-mps2", ctx.g(), "m/s^2")?;
-    let mut r = info("vertical-shaking").expect("registered").report();
-    r.param("gamma", gamma);
-    r.param("frequency_hz", freq);
-    r.param("mu", mu);
-    r.param("bias", bias);
-    r.param("g_mps2", g);
+    let (mut r, g) = report_with_g(
+        "vertical-shaking",
+        ctx,
+        &[
+            ("gamma", gamma),
+            ("frequency_hz", freq),
+            ("mu", mu),
+            ("bias", bias),
+        ],
+    )?;
     let scene = Scene {
         gamma,
         frequency_hz: freq,

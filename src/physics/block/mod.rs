@@ -59,7 +59,9 @@
 //! the mean velocity over whole periods, contact fraction, mode fractions and event
 //! counts. [`simulate_block_observed`] also feeds an [`Observer`] every segment and event;
 //! [`BlockSystem::contact_force`] gives the friction and normal force of a segment's
-//! state, to check the friction cone and the dissipation at every step.
+//! state, to check the friction cone and the dissipation at every step;
+//! [`ContactInvariants`] is the observer that does so (and checks the impacts), and
+//! [`ballistic_flight_s`] finds a hop's flight time without the driver.
 
 use crate::numerics::hybrid::{HybridSystem, Transition};
 use crate::physics::friction::{
@@ -67,6 +69,7 @@ use crate::physics::friction::{
 };
 use crate::physics::plate::PlateMotion;
 
+mod checks;
 pub mod contact_form;
 mod hybrid_impl;
 mod run;
@@ -74,6 +77,7 @@ mod run;
 mod tests;
 
 pub use crate::numerics::hybrid::Observer;
+pub use checks::{ballistic_flight_s, ContactInvariants};
 pub use run::{
     simulate_block, simulate_block_observed, BlockEvent, BlockOptions, BlockRun, EventCounts,
     EventKind, ModeFractions,

@@ -1,6 +1,5 @@
 //! Unit tests of the block model against closed forms.
 use super::*;
-use crate::numerics::hybrid::Segment;
 use crate::numerics::ode::{Method, StepControl};
 use crate::physics::plate::{Axis, Harmonic, Sawtooth};
 use std::f64::consts::{PI, TAU};
@@ -74,28 +73,6 @@ fn block_sticks_on_a_slowly_shaken_plate() {
     assert!(run.total_counts.stick_to_slip > 0);
 }
 
-/// First positive root of `z_p(t0) + v0 s - g s^2/2 - z_p(t0 + s) = 0` by a fine scan and
-/// bisection (independent of the driver's Illinois search on the closed form).
-fn ballistic_landing(plate: &Harmonic, t0: f64) -> f64 {
-    let v0 = plate.vz_mps(t0);
-    let gap = |s: f64| plate.z_m(t0) + v0 * s - 0.5 * G * s * s - plate.z_m(t0 + s);
-    let ds = plate.period_s() / 4096.0;
-    let mut a = ds;
-    while gap(a + ds) > 0.0 {
-        a += ds;
-    }
-    let mut b = a + ds;
-    for _ in 0..200 {
-        let m = 0.5 * (a + b);
-        if gap(m) > 0.0 {
-            a = m;
-        } else {
-            b = m;
-        }
-    }
-    b
-}
-
 #[test]
 fn takeoff_phase_is_asin_one_over_gamma_and_the_hop_lands_on_the_ballistic_root() {
     // Vertical plate z = delta sin(wt): the normal force g + a_zp vanishes (falling)
@@ -124,7 +101,7 @@ fn takeoff_phase_is_asin_one_over_gamma_and_the_hop_lands_on_the_ballistic_root(
                 .iter()
                 .find(|e| e.kind == EventKind::Landing)
                 .expect("lands");
-            let exact = takeoff.t_s + ballistic_landing(&plate, takeoff.t_s);
+            let exact = takeoff.t_s + ballistic_flight_s(&plate, takeoff.t_s, G, 4096);
             assert!(
                 (landing.t_s - exact).abs() < tol,
                 "Gamma {gamma} closed {}: {} vs {exact}",
@@ -185,45 +162,6 @@ fn sawtooth_breakpoint_forces_a_sticking_block_to_slip() {
     }
 }
 
-/// Checks the friction cone and dissipation on every segment (11 points each) and
-/// the energy balance of every impact.
-struct Checker<'a> {
-    sys: BlockSystem<'a, Harmonic>,
-    worst_cone: f64,
-    worst_power: f64,
-    worst_impact: f64,
-}
-
-impl Observer<BlockMode, 4> for Checker<'_> {
-    fn segment(&mut self, mode: BlockMode, seg: &Segment<'_, 4>) {
-        for k in 0..=10 {
-            let t = seg.t0 + (seg.t1 - seg.t0) * k as f64 / 10.0;
-            let y = seg.eval(t);
-            let c = self.sys.contact_force(mode, t, &y);
-            let mu = self.sys.params.friction.mu().unwrap();
-            self.worst_cone = self
-                .worst_cone
-                .max(c.tangential_mps2.abs() - mu * c.normal_mps2);
-            self.worst_power = self.worst_power.max(c.tangential_mps2 * y[1]);
-            assert!(c.normal_mps2 >= -1e-9 || mode == BlockMode::Flight);
-        }
-    }
-    fn event(
-        &mut self,
-        _t: f64,
-        from: BlockMode,
-        _g: usize,
-        before: &[f64; 4],
-        after: Option<(BlockMode, &[f64; 4])>,
-    ) {
-        if let (BlockMode::Flight, Some((_, a))) = (from, after) {
-            let gain =
-                (a[1] * a[1] + a[3] * a[3]) - (before[1] * before[1] + before[3] * before[3]);
-            self.worst_impact = self.worst_impact.max(gain);
-        }
-    }
-}
-
 #[test]
 fn friction_stays_in_the_cone_and_never_does_positive_work() {
     // A vertical plate with a bias: stick, slip, flight and impacts all occur. The
@@ -233,21 +171,30 @@ fn friction_stays_in_the_cone_and_never_does_positive_work() {
     let f = 15.0;
     let plate = Harmonic::sine(Axis::Z, 2.5 * G / (TAU * f).powi(2), f);
     let params = BlockParams::coulomb(G, 0.3, 0.2 * 0.3 * G);
-    let mut chk = Checker {
-        sys: BlockSystem::new(params, &plate),
-        worst_cone: f64::MIN,
-        worst_power: f64::MIN,
-        worst_impact: f64::MIN,
-    };
+    let mut chk = ContactInvariants::new(params, &plate);
     let run = simulate_block_observed(&params, &plate, 2.0, &BlockOptions::default(), &mut chk);
     assert!(
         run.total_counts.landings > 20 && run.total_counts.stick_to_slip > 0,
         "{:?}",
         run.total_counts
     );
-    assert!(chk.worst_cone <= 1e-9, "{}", chk.worst_cone);
-    assert!(chk.worst_power <= 1e-12, "{}", chk.worst_power);
-    assert!(chk.worst_impact <= 1e-15, "{}", chk.worst_impact);
+    assert!(chk.worst_cone_mps2 <= 1e-9, "{}", chk.worst_cone_mps2);
+    assert!(
+        chk.worst_power_w_per_kg <= 1e-12,
+        "{}",
+        chk.worst_power_w_per_kg
+    );
+    assert!(
+        chk.worst_impact_gain_m2ps2 <= 1e-15,
+        "{}",
+        chk.worst_impact_gain_m2ps2
+    );
+    // The plate only pushes (11 samples per contact segment, round-off 1e-9 m/s^2).
+    assert!(
+        chk.least_contact_normal_mps2 >= -1e-9,
+        "{}",
+        chk.least_contact_normal_mps2
+    );
     assert!(run.mean_velocity_mps > 0.0);
 }
 
