@@ -3,7 +3,7 @@
 //!
 //! Closed forms: `physics::sawtooth` (two-velocity sawtooth, linear orbit) and
 //! `physics::sawtooth::biharmonic` (smooth drive). Simulation: the event-driven block
-//! model of `physics::block` ([`sims`]). Claims: [`claims`]. Figures: [`figures`].
+//! model of `physics::block` ([`sims`]). Claims: [`claims`]. Figures: `asymmetric_shaking/figures.rs`.
 
 pub mod claims;
 mod figures;

@@ -55,7 +55,7 @@
 //! continuous; a sticking block slips when the plate's velocity jumps).
 //!
 //! # Use
-//! [`simulate_block`] runs a block from a [`BlockStart`] and returns a [`BlockRun`] with
+//! [`simulate_block`] runs a block from the start in [`BlockOptions::start`] and returns a [`BlockRun`] with
 //! the mean velocity over whole periods, contact fraction, mode fractions and event
 //! counts. [`simulate_block_observed`] also feeds an [`Observer`] every segment and event;
 //! [`BlockSystem::contact_force`] gives the friction and normal force of a segment's
