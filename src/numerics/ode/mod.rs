@@ -319,14 +319,7 @@ impl<const N: usize> Integrator<N> {
                         // End derivative for the Hermite interpolant; it is the next
                         // step's first stage, so it is cached, not wasted.
                         let f1 = self.deriv(sys, t1, &y1);
-                        self.fsal = Some((t1, y1, f1));
-                        Step {
-                            t0: t,
-                            t1,
-                            y0: *y,
-                            y1,
-                            interp: Interp::Hermite { f0, f1 },
-                        }
+                        self.finish(t, y, t1, y1, f1, Interp::Hermite { f0, f1 })
                     }
                     Method::Dopri5 | Method::Dop853 => {
                         let (trial, _) = self.trial(sys, t, y, &f0, h, Tol::UNUSED);
@@ -383,6 +376,20 @@ impl<const N: usize> Integrator<N> {
                 (y1, k[12], Interp::Dop853(dop853::Lazy::new(k)))
             }
         };
+        self.finish(t, y, t1, y1, f1, interp)
+    }
+
+    /// The step `(t, y) -> (t1, y1)`; its end derivative `f1` is kept as the next
+    /// step's first stage.
+    fn finish(
+        &mut self,
+        t: f64,
+        y: &[f64; N],
+        t1: f64,
+        y1: [f64; N],
+        f1: [f64; N],
+        interp: Interp<N>,
+    ) -> Step<N> {
         self.fsal = Some((t1, y1, f1));
         Step {
             t0: t,
