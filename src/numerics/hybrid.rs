@@ -47,7 +47,8 @@ pub trait HybridSystem<const N: usize> {
     fn flow(&self, mode: Self::Mode, t: f64, y: &[f64; N]) -> [f64; N];
 
     /// The closed-form state at `t` of a mode entered at `(t0, y0)`, for modes that have
-    /// one (ballistic flight, constant acceleration). `None`: integrate the flow.
+    /// one (ballistic flight, constant acceleration). `None`: integrate the flow. Whether it
+    /// is `Some` must depend on the mode only (the driver asks once per step, at its end).
     fn exact(&self, _mode: Self::Mode, _t0: f64, _y0: &[f64; N], _t: f64) -> Option<[f64; N]> {
         None
     }
@@ -324,10 +325,9 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         // One piece of trajectory: closed form or one integrator step.
         let (t1, y1, step);
         let flow = ModeFlow { sys, mode };
-        let closed = sys.exact(mode, t, &y, t).is_some();
-        if closed {
+        if let Some(y_lim) = sys.exact(mode, t, &y, t_lim) {
             t1 = t_lim;
-            y1 = sys.exact(mode, t, &y, t1).expect("closed form");
+            y1 = y_lim;
             step = None;
         } else {
             match integ.step(&flow, t, &y, t_lim) {
@@ -387,21 +387,25 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                 }
             }
         }
+        // The piece of trajectory up to the earliest event, or the whole step.
+        let (te, ye) = match best {
+            Some((_, te)) => (te, eval(te)),
+            None => (t1, y1),
+        };
+        obs.segment(
+            mode,
+            &Segment {
+                t0: ts,
+                t1: te,
+                y0: ys,
+                y1: ye,
+                eval: &eval,
+            },
+        );
+        dense_evals += step.as_ref().map_or(0, |s| s.dense_evals());
+        add_time(&mut run.mode_time_s, mode, te - ts);
         match best {
-            Some((i, te)) => {
-                let ye = eval(te);
-                obs.segment(
-                    mode,
-                    &Segment {
-                        t0: ts,
-                        t1: te,
-                        y0: ys,
-                        y1: ye,
-                        eval: &eval,
-                    },
-                );
-                dense_evals += step.as_ref().map_or(0, |s| s.dense_evals());
-                add_time(&mut run.mode_time_s, mode, te - ts);
+            Some((i, _)) => {
                 let tr = sys.on_event(mode, i, te, &ye);
                 run.event_count += 1;
                 let to = match &tr {
@@ -448,18 +452,6 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                 }
             }
             None => {
-                obs.segment(
-                    mode,
-                    &Segment {
-                        t0: ts,
-                        t1,
-                        y0: ys,
-                        y1,
-                        eval: &eval,
-                    },
-                );
-                dense_evals += step.as_ref().map_or(0, |s| s.dense_evals());
-                add_time(&mut run.mode_time_s, mode, t1 - ts);
                 t = t1;
                 y = y1;
                 std::mem::swap(&mut guards0, &mut guards1);

@@ -84,10 +84,10 @@ impl DriftTable {
     /// `V(Gamma)` by linear interpolation (m/s); 0 below the table, last value above.
     pub fn speed(&self, gamma: f64) -> f64 {
         let g = &self.gammas;
-        match g.iter().position(|&x| x > gamma) {
-            Some(0) => 0.0,
-            None => *self.speeds_mps.last().unwrap_or(&0.0),
-            Some(i) => {
+        match g.partition_point(|&x| x <= gamma) {
+            0 => 0.0,
+            i if i == g.len() => *self.speeds_mps.last().unwrap_or(&0.0),
+            i => {
                 let f = (gamma - g[i - 1]) / (g[i] - g[i - 1]);
                 self.speeds_mps[i - 1] + f * (self.speeds_mps[i] - self.speeds_mps[i - 1])
             }

@@ -163,16 +163,6 @@ fn finite<const N: usize>(y: &[f64; N]) -> bool {
     y.iter().all(|v| v.is_finite())
 }
 
-/// `e^(-expo)`: three square roots for DOP853's `1/8` (a fifth of the cost of `powf`).
-#[inline]
-fn root(e: f64, expo: f64) -> f64 {
-    if expo == 0.125 {
-        1.0 / e.sqrt().sqrt().sqrt() // formula: e^(-1/8)
-    } else {
-        e.powf(-expo)
-    }
-}
-
 /// Tolerances of the error control.
 #[derive(Debug, Clone, Copy)]
 struct Tol {
@@ -413,10 +403,11 @@ impl<const N: usize> Integrator<N> {
     ) -> Result<Step<N>, OdeError> {
         // Step-size controller of each pair (Hairer's codes): the error estimate is of
         // order q + 1 in h (q = 4 for DP5, 7 for DOP853), so h_new = h (0.9 / e)^(1/(q+1)),
-        // limited to [fac_min, fac_max] after an accepted step.
-        let (expo, fac_min, fac_max) = match self.method {
-            Method::Dop853 => (1.0 / 8.0, 1.0 / 3.0, 6.0),
-            _ => (0.2, 0.2, 5.0),
+        // limited to [fac_min, fac_max] after an accepted step. DOP853's e^(-1/8) is three
+        // square roots (a fifth of the cost of powf).
+        let (root, fac_min, fac_max): (fn(f64) -> f64, f64, f64) = match self.method {
+            Method::Dop853 => (|e| 1.0 / e.sqrt().sqrt().sqrt(), 1.0 / 3.0, 6.0), // formula: e^(-1/8)
+            _ => (|e| e.powf(-0.2), 0.2, 5.0), // formula: e^(-1/5)
         };
         let mut h = match self.h_next {
             Some(h) => h,
@@ -441,7 +432,7 @@ impl<const N: usize> Integrator<N> {
                 let fac = if e == 0.0 {
                     fac_max
                 } else {
-                    (0.9 * root(e, expo)).clamp(fac_min, fac_max)
+                    (0.9 * root(e)).clamp(fac_min, fac_max)
                 };
                 if !last {
                     self.h_next = Some((h * fac).min(h_max));
@@ -453,7 +444,7 @@ impl<const N: usize> Integrator<N> {
             }
             self.stats.rejected += 1;
             let fac = if e.is_finite() {
-                (0.9 * root(e, expo)).clamp(0.1, 0.9)
+                (0.9 * root(e)).clamp(0.1, 0.9)
             } else {
                 0.1
             };
