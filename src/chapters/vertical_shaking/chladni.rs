@@ -100,12 +100,8 @@ impl DriftTable {
     }
 }
 
-/// The block's mean velocity at `gamma` with the scene's bias (m/s); exactly 0 at
-/// `gamma = 0` (no plate motion: the block never slips with `b < 1`).
+/// The block's mean velocity at `gamma` with the scene's bias (m/s).
 pub fn drift_speed(scene: &Scene, gamma: f64, transient: usize, observe: usize) -> f64 {
-    if gamma == 0.0 {
-        return 0.0;
-    }
     run_scene(&scene.at_gamma(gamma), Model::Exact, transient, observe).cycle_velocity_mps
 }
 
