@@ -63,6 +63,13 @@ pub fn illinois(
         if !(c > a && c < b) {
             c = 0.5 * (a + b);
         }
+        // Never closer than half the tolerance to an end (as in Brent's method): once
+        // the estimate has converged onto one end, the next point lands just across the
+        // crossing and closes the bracket, instead of creeping up on it.
+        let nudge = 0.5 * t_tol;
+        if b - a > 2.0 * t_tol {
+            c = c.clamp(a + nudge, b - nudge);
+        }
         let fc = f(c);
         evals += 1;
         if fc == 0.0 || (fc > 0.0) != (fa > 0.0) {

@@ -43,6 +43,10 @@ pub trait HybridSystem<const N: usize> {
     /// Model-defined reasons to stop a run.
     type Stop: Clone + Debug;
 
+    /// How many leading state components the flows read (default: all); see
+    /// [`OdeSystem::ARGS`]. The rest are outputs only (accumulated work, say).
+    const FLOW_ARGS: usize = N;
+
     /// The flow `y' = f(mode, t, y)` (used when [`HybridSystem::exact`] gives `None`).
     fn flow(&self, mode: Self::Mode, t: f64, y: &[f64; N]) -> [f64; N];
 
@@ -58,6 +62,15 @@ pub trait HybridSystem<const N: usize> {
 
     /// Value of guard `i` of `mode` at `(t, y)`.
     fn guard(&self, mode: Self::Mode, i: usize, t: f64, y: &[f64; N]) -> f64;
+
+    /// All guards of `mode` at `(t, y)`, in index order, into `out` (cleared first).
+    /// The default asks [`HybridSystem::guard`] for each; a model whose guards share
+    /// work (one force evaluation behind several of them) computes it once here. Must
+    /// agree with `guard` exactly.
+    fn guards(&self, mode: Self::Mode, t: f64, y: &[f64; N], out: &mut Vec<f64>) {
+        out.clear();
+        out.extend((0..self.guard_count(mode)).map(|i| self.guard(mode, i, t, y)));
+    }
 
     /// The direction in which guard `i` of `mode` fires.
     fn direction(&self, mode: Self::Mode, i: usize) -> Direction;
@@ -247,6 +260,8 @@ struct ModeFlow<'a, S, M> {
 }
 
 impl<S: HybridSystem<N>, const N: usize> OdeSystem<N> for ModeFlow<'_, S, S::Mode> {
+    const ARGS: usize = S::FLOW_ARGS;
+
     fn rhs(&self, t: f64, y: &[f64; N]) -> [f64; N] {
         self.sys.flow(self.mode, t, y)
     }
@@ -288,8 +303,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
             break Outcome::Completed;
         }
         if fresh_mode {
-            guards0.clear();
-            guards0.extend((0..sys.guard_count(mode)).map(|i| sys.guard(mode, i, t, &y)));
+            sys.guards(mode, t, &y, &mut guards0);
             fresh_mode = false;
         }
         let bp = sys.breakpoint_after(t).filter(|&b| b < t_end);
@@ -348,19 +362,24 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         };
         // Find the earliest crossing among the guards.
         let mut best: Option<(usize, f64)> = None;
-        guards1.clear();
-        guards1.extend((0..guards0.len()).map(|i| sys.guard(mode, i, t1, &y1)));
+        sys.guards(mode, t1, &y1, &mut guards1);
         for i in 0..guards0.len() {
             let dir = sys.direction(mode, i);
             let mut ta = ts;
             let mut ga = guards0[i];
             let mut bracket = None;
+            // Only a crossing before the earliest one located so far matters: the search
+            // ends there (one guard evaluation decides whether this guard fires first).
+            let t_stop = best.map_or(t1, |(_, tb)| tb);
             for k in 1..=opts.interior_checks + 1 {
                 let tb = if k == opts.interior_checks + 1 {
-                    t1
+                    t_stop
                 } else {
                     ts + (t1 - ts) * k as f64 / (opts.interior_checks + 1) as f64
                 };
+                if tb > t_stop {
+                    break;
+                }
                 let gb = if tb == t1 {
                     guards1[i]
                 } else {

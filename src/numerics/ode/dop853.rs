@@ -230,13 +230,21 @@ const D: [[(usize, f64); 12]; 4] = [
     ],
 ];
 
-/// Row `i` of the tableau applied: `y + h sum_j a_ij k_j` over the nonzero `a_ij`.
+/// Row `i` of the tableau applied: `y + h sum_j a_ij k_j` over the nonzero `a_ij`, in
+/// the first `args` components (a stage argument needs only those the right-hand side
+/// reads, [`OdeSystem::ARGS`]; the solution row needs all `N`).
 #[inline(always)]
-fn row<const N: usize>(y: &[f64; N], h: f64, k: &[[f64; N]], a: &[(usize, f64)]) -> [f64; N] {
+fn row<const N: usize>(
+    y: &[f64; N],
+    h: f64,
+    k: &[[f64; N]],
+    a: &[(usize, f64)],
+    args: usize,
+) -> [f64; N] {
     let mut out = *y;
     for &(j, aij) in a {
         let c = h * aij;
-        for i in 0..N {
+        for i in 0..args.min(N) {
             out[i] += c * k[j][i]; // formula: y + h sum_j a_ij k_j
         }
     }
@@ -247,8 +255,8 @@ fn row<const N: usize>(y: &[f64; N], h: f64, k: &[[f64; N]], a: &[(usize, f64)])
 /// `f(t + h, y1)` (filled in when the step is accepted).
 pub(super) type Stages<const N: usize> = [[f64; N]; 13];
 
-/// One trial step of size `h` from `(t, y)` with `k1 = f(t, y)`: returns the stages,
-/// the eighth-order `y1`, and the error norm (1 = at the tolerance).
+/// One trial step of size `h` from `(t, y)` with `k1 = f(t, y)`: fills the stages
+/// `k[0..12]`, returns the eighth-order `y1` and the error norm (1 = at the tolerance).
 pub(super) fn attempt<S: OdeSystem<N> + ?Sized, const N: usize>(
     sys: &S,
     t: f64,
@@ -256,24 +264,30 @@ pub(super) fn attempt<S: OdeSystem<N> + ?Sized, const N: usize>(
     k1: &[f64; N],
     h: f64,
     tol: Tol,
-) -> (Stages<N>, [f64; N], f64) {
-    let mut k = [[0.0; N]; 13];
+    k: &mut Stages<N>,
+) -> ([f64; N], f64) {
     k[0] = *k1;
-    for s in 1..12 {
-        k[s] = sys.rhs(t + C[s] * h, &row(y, h, &k, A[s])); // formula: k_s = f(t + c_s h, y + h sum a_sj k_j)
+    // One line per stage (not a loop over s): with the row a constant, its terms and
+    // the component loop unroll into one pass that keeps the sum in registers.
+    macro_rules! stage {
+        ($($s:literal)*) => {$(
+            k[$s] = sys.rhs(t + C[$s] * h, &row(y, h, k, A[$s], S::ARGS)); // formula: k_s = f(t + c_s h, y + h sum a_sj k_j)
+        )*};
     }
-    let y1 = row(y, h, &k, A[12]); // formula: y1 = y + h sum_j b_j k_j
-                                   // formula: Hairer's DOP853 norm: err = |h| E5 / sqrt(N (E5 + 0.01 E3)), E_p = sum_i (sum_j e_pj k_ji / sc_i)^2
+    stage!(1 2 3 4 5 6 7 8 9 10 11);
+    let y1 = row(y, h, k, A[12], N); // formula: y1 = y + h sum_j b_j k_j
+                                     // formula: Hairer's DOP853 norm: err = |h| E5 / sqrt(N (E5 + 0.01 E3)), E_p = sum_i (sum_j e_pj k_ji / sc_i)^2
     let (mut e5, mut e3) = (0.0, 0.0);
     for i in 0..N {
-        let sc = tol.scale(y[i], y1[i]);
+        let inv_sc = 1.0 / tol.scale(y[i], y1[i]); // one division, two uses
         let (mut d5, mut d3) = (0.0, 0.0);
         for (&(j5, w5), &(j3, w3)) in E5.iter().zip(E3.iter()) {
             d5 += w5 * k[j5][i];
             d3 += w3 * k[j3][i];
         }
-        e5 += (d5 / sc) * (d5 / sc);
-        e3 += (d3 / sc) * (d3 / sc);
+        let (r5, r3) = (d5 * inv_sc, d3 * inv_sc);
+        e5 += r5 * r5;
+        e3 += r3 * r3;
     }
     let deno = e5 + 0.01 * e3;
     let err = if deno > 0.0 {
@@ -281,7 +295,7 @@ pub(super) fn attempt<S: OdeSystem<N> + ?Sized, const N: usize>(
     } else {
         0.0
     };
-    (k, y1, err)
+    (y1, err)
 }
 
 /// The stages of an accepted step, kept for the continuous extension, which is built
@@ -292,13 +306,21 @@ pub(super) struct Lazy<const N: usize> {
     dense: OnceCell<[[f64; N]; 7]>,
 }
 
-impl<const N: usize> Lazy<N> {
-    /// The accepted step's stages, with `k[12] = f(t1, y1)`.
-    pub(super) fn new(k: Stages<N>) -> Self {
+impl<const N: usize> Default for Lazy<N> {
+    fn default() -> Self {
         Lazy {
-            k,
+            k: [[0.0; N]; 13],
             dense: OnceCell::new(),
         }
+    }
+}
+
+impl<const N: usize> Lazy<N> {
+    /// The stage buffer, for a new step to fill (`k[12] = f(t1, y1)` once accepted);
+    /// the previous step's continuous extension is dropped.
+    pub(super) fn stages_for_new_step(&mut self) -> &mut Stages<N> {
+        self.dense.take();
+        &mut self.k
     }
 
     /// Has the continuous extension been built (three more evaluations)?
@@ -316,16 +338,18 @@ impl<const N: usize> Lazy<N> {
         let r = self.dense.get_or_init(|| self.build(sys, step));
         let y0 = &step.y0;
         let s1 = 1.0 - s;
-        let mut out = [0.0; N];
+        // formula: y0 + s (r1 + s1 (r2 + s (r3 + s1 (r4 + s (r5 + s1 (r6 + s r7))))))   (Hairer contd8)
+        // One Horner level per pass over the components (passes vectorise; a chain of
+        // seven dependent operations per component in one loop did not).
+        let mut v = r[6];
+        for (d, w) in [(5, s), (4, s1), (3, s), (2, s1), (1, s), (0, s1)] {
+            for i in 0..N {
+                v[i] = r[d][i] + w * v[i];
+            }
+        }
+        let mut out = *y0;
         for i in 0..N {
-            // formula: y0 + s (r1 + s1 (r2 + s (r3 + s1 (r4 + s (r5 + s1 (r6 + s r7))))))   (Hairer contd8)
-            let v = r[5][i] + s * r[6][i];
-            let v = r[4][i] + s1 * v;
-            let v = r[3][i] + s * v;
-            let v = r[2][i] + s1 * v;
-            let v = r[1][i] + s * v;
-            let v = r[0][i] + s1 * v;
-            out[i] = y0[i] + s * v;
+            out[i] += s * v[i];
         }
         out
     }
@@ -336,7 +360,7 @@ impl<const N: usize> Lazy<N> {
         let mut k = [[0.0; N]; 16];
         k[..13].copy_from_slice(&self.k);
         for s in 13..16 {
-            k[s] = sys.rhs(t0 + C[s] * h, &row(y0, h, &k, A[s])); // formula: extra stages 14 to 16
+            k[s] = sys.rhs(t0 + C[s] * h, &row(y0, h, &k, A[s], S::ARGS)); // formula: extra stages 14 to 16
         }
         let mut r = [[0.0; N]; 7];
         for i in 0..N {
@@ -345,12 +369,15 @@ impl<const N: usize> Lazy<N> {
             r[0][i] = dy; // formula: r1 = y1 - y0
             r[1][i] = bspl; // formula: r2 = h f0 - (y1 - y0)
             r[2][i] = dy - h * k[12][i] - bspl; // formula: r3 = (y1 - y0) - h f1 - r2
-            for (d, row) in D.iter().enumerate() {
-                let mut acc = 0.0;
-                for &(j, w) in row {
-                    acc += w * k[j][i];
+        }
+        // (a pass over the components per stage: these vectorise)
+        for (d, row) in D.iter().enumerate() {
+            let out = &mut r[3 + d];
+            for &(j, w) in row {
+                let c = h * w;
+                for i in 0..N {
+                    out[i] += c * k[j][i]; // formula: r4..r7 = h sum_j d_j k_j
                 }
-                r[3 + d][i] = h * acc; // formula: r4..r7 = h sum_j d_j k_j
             }
         }
         r

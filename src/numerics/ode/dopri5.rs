@@ -5,7 +5,7 @@
 // Index loops run over several arrays of the same length at once (y, k1..k7, r).
 #![allow(clippy::needless_range_loop)]
 
-use super::{comb, OdeSystem, Tol};
+use super::{comb, stage_arg, OdeSystem, Tol};
 
 // Dormand-Prince 5(4) tableau.
 const C2: f64 = 1.0 / 5.0;
@@ -56,22 +56,31 @@ pub(super) fn stages<S: OdeSystem<N> + ?Sized, const N: usize>(
     k1: &[f64; N],
     h: f64,
 ) -> ([f64; N], [f64; N], [[f64; N]; 4], [f64; N]) {
-    let k2 = sys.rhs(t + C2 * h, &comb(y, h, &[(A21, k1)]));
-    let k3 = sys.rhs(t + C3 * h, &comb(y, h, &[(A31, k1), (A32, &k2)]));
+    let k2 = sys.rhs(t + C2 * h, &stage_arg(y, h, &[(A21, k1)], S::ARGS));
+    let k3 = sys.rhs(
+        t + C3 * h,
+        &stage_arg(y, h, &[(A31, k1), (A32, &k2)], S::ARGS),
+    );
     let k4 = sys.rhs(
         t + C4 * h,
-        &comb(y, h, &[(A41, k1), (A42, &k2), (A43, &k3)]),
+        &stage_arg(y, h, &[(A41, k1), (A42, &k2), (A43, &k3)], S::ARGS),
     );
     let k5 = sys.rhs(
         t + C5 * h,
-        &comb(y, h, &[(A51, k1), (A52, &k2), (A53, &k3), (A54, &k4)]),
+        &stage_arg(
+            y,
+            h,
+            &[(A51, k1), (A52, &k2), (A53, &k3), (A54, &k4)],
+            S::ARGS,
+        ),
     );
     let k6 = sys.rhs(
         t + h,
-        &comb(
+        &stage_arg(
             y,
             h,
             &[(A61, k1), (A62, &k2), (A63, &k3), (A64, &k4), (A65, &k5)],
+            S::ARGS,
         ),
     );
     // formula: y1 = y0 + h (35/384 k1 + 500/1113 k3 + 125/192 k4 - 2187/6784 k5 + 11/84 k6)

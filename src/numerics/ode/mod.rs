@@ -13,15 +13,25 @@
 // like the formulas they implement.
 #![allow(clippy::needless_range_loop)]
 
+mod common;
 mod dop853;
 mod dopri5;
 mod step;
 
+use common::{comb, finite, initial_step, stage_arg, Tol};
 use step::Interp;
 pub use step::Step;
 
 /// A first-order system `y' = f(t, y)` of dimension `N`.
 pub trait OdeSystem<const N: usize> {
+    /// How many leading components of `y` the right-hand side reads (default: all).
+    /// The others are outputs only, integrals such as an energy account that nothing
+    /// feeds back from (SUNDIALS calls them quadrature variables): they are integrated
+    /// with the same stages and error control, but the stage arguments are formed for
+    /// the first `ARGS` components only, which changes no result as long as `rhs`
+    /// really does not read the rest.
+    const ARGS: usize = N;
+
     /// The right-hand side `f(t, y)`.
     fn rhs(&self, t: f64, y: &[f64; N]) -> [f64; N];
 }
@@ -147,44 +157,8 @@ impl std::fmt::Display for OdeError {
     }
 }
 
-/// `y + h * sum(c_j k_j)` for up to six stages.
-#[inline]
-fn comb<const N: usize>(y: &[f64; N], h: f64, terms: &[(f64, &[f64; N])]) -> [f64; N] {
-    let mut out = *y;
-    for (c, k) in terms {
-        for i in 0..N {
-            out[i] += h * c * k[i];
-        }
-    }
-    out
-}
-
-fn finite<const N: usize>(y: &[f64; N]) -> bool {
-    y.iter().all(|v| v.is_finite())
-}
-
-/// Tolerances of the error control.
-#[derive(Debug, Clone, Copy)]
-struct Tol {
-    rtol: f64,
-    atol: f64,
-}
-
-impl Tol {
-    /// For fixed steps, whose error estimate is not used.
-    const UNUSED: Tol = Tol {
-        rtol: 1.0,
-        atol: 1.0,
-    };
-
-    /// The error scale of a component that goes from `a` to `b` in a step.
-    #[inline]
-    fn scale(self, a: f64, b: f64) -> f64 {
-        self.atol + self.rtol * a.abs().max(b.abs()) // formula: sc = atol + rtol max(|y0|, |y1|)
-    }
-}
-
-/// A trial step of a Dormand-Prince pair, before acceptance.
+/// A trial step of a Dormand-Prince pair, before acceptance. DOP853's stages are
+/// written straight into the integrator's step (two kilobytes that are not moved).
 enum Trial<const N: usize> {
     Dopri5 {
         y1: [f64; N],
@@ -193,7 +167,6 @@ enum Trial<const N: usize> {
     },
     Dop853 {
         y1: [f64; N],
-        k: dop853::Stages<N>,
     },
 }
 
@@ -208,6 +181,8 @@ pub struct Integrator<const N: usize> {
     pub stats: Stats,
     h_next: Option<f64>,
     fsal: Option<(f64, [f64; N], [f64; N])>,
+    /// The last accepted step, lent to the caller by [`Integrator::step`].
+    last: Step<N>,
 }
 
 impl<const N: usize> Integrator<N> {
@@ -220,6 +195,13 @@ impl<const N: usize> Integrator<N> {
             stats: Stats::default(),
             h_next: None,
             fsal: None,
+            last: Step {
+                t0: 0.0,
+                t1: 0.0,
+                y0: [0.0; N],
+                y1: [0.0; N],
+                interp: Interp::Linear,
+            },
         }
     }
 
@@ -239,14 +221,15 @@ impl<const N: usize> Integrator<N> {
         sys.rhs(t, y)
     }
 
-    /// Takes one accepted step from `(t, y)` towards `t_max` (never beyond it).
+    /// Takes one accepted step from `(t, y)` towards `t_max` (never beyond it). The
+    /// step is kept inside the integrator until the next call (no copy of its stages).
     pub fn step<S: OdeSystem<N> + ?Sized>(
         &mut self,
         sys: &S,
         t: f64,
         y: &[f64; N],
         t_max: f64,
-    ) -> Result<Step<N>, OdeError> {
+    ) -> Result<&Step<N>, OdeError> {
         let f0 = self.deriv(sys, t, y);
         if !finite(&f0) || !finite(y) {
             return Err(OdeError::NonFinite { t_s: t });
@@ -260,7 +243,10 @@ impl<const N: usize> Integrator<N> {
                     atol,
                     h_max_s,
                 },
-            ) => self.adaptive(sys, t, y, f0, span, Tol { rtol, atol }, h_max_s),
+            ) => {
+                self.adaptive(sys, t, y, f0, span, Tol { rtol, atol }, h_max_s)?;
+                Ok(&self.last)
+            }
             (method, control) => {
                 let h_fixed = match control {
                     StepControl::Fixed { h_s } => h_s,
@@ -279,21 +265,20 @@ impl<const N: usize> Integrator<N> {
                     h_fixed
                 };
                 let t1 = if h == span { t_max } else { t + h };
-                let step = match method {
+                match method {
                     Method::Euler => {
                         let y1 = comb(y, h, &[(1.0, &f0)]); // formula: y1 = y0 + h f(t0, y0)
-                        Step {
-                            t0: t,
-                            t1,
-                            y0: *y,
-                            y1,
-                            interp: Interp::Linear,
-                        }
+                        self.last.t0 = t;
+                        self.last.t1 = t1;
+                        self.last.y0 = *y;
+                        self.last.y1 = y1;
+                        self.last.interp = Interp::Linear;
                     }
                     Method::Rk4 => {
-                        let k2 = sys.rhs(t + 0.5 * h, &comb(y, h, &[(0.5, &f0)]));
-                        let k3 = sys.rhs(t + 0.5 * h, &comb(y, h, &[(0.5, &k2)]));
-                        let k4 = sys.rhs(t + h, &comb(y, h, &[(1.0, &k3)]));
+                        let m = S::ARGS;
+                        let k2 = sys.rhs(t + 0.5 * h, &stage_arg(y, h, &[(0.5, &f0)], m));
+                        let k3 = sys.rhs(t + 0.5 * h, &stage_arg(y, h, &[(0.5, &k2)], m));
+                        let k4 = sys.rhs(t + h, &stage_arg(y, h, &[(1.0, &k3)], m));
                         self.stats.rhs_evals += 3;
                         // formula: y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4)
                         let y1 = comb(
@@ -309,18 +294,18 @@ impl<const N: usize> Integrator<N> {
                         // End derivative for the Hermite interpolant; it is the next
                         // step's first stage, so it is cached, not wasted.
                         let f1 = self.deriv(sys, t1, &y1);
-                        self.finish(t, y, t1, y1, f1, Interp::Hermite { f0, f1 })
+                        self.finish(t, y, t1, y1, f1, Some(Interp::Hermite { f0, f1 }))
                     }
                     Method::Dopri5 | Method::Dop853 => {
                         let (trial, _) = self.trial(sys, t, y, &f0, h, Tol::UNUSED);
                         self.accept(sys, t, y, t1, trial)
                     }
                 };
-                if !finite(&step.y1) {
+                if !finite(&self.last.y1) {
                     return Err(OdeError::NonFinite { t_s: t1 });
                 }
                 self.stats.accepted += 1;
-                Ok(step)
+                Ok(&self.last)
             }
         }
     }
@@ -337,14 +322,26 @@ impl<const N: usize> Integrator<N> {
         tol: Tol,
     ) -> (Trial<N>, f64) {
         if self.method == Method::Dop853 {
-            let (k, y1, e) = dop853::attempt(sys, t, y, f0, h, tol);
+            let (y1, e) = dop853::attempt(sys, t, y, f0, h, tol, self.dop853_stages());
             self.stats.rhs_evals += 11;
-            (Trial::Dop853 { y1, k }, e)
+            (Trial::Dop853 { y1 }, e)
         } else {
             let (y1, k7, r, err) = dopri5::stages(sys, t, y, f0, h);
             self.stats.rhs_evals += 6;
             let e = dopri5::error_norm(y, &y1, &err, tol);
             (Trial::Dopri5 { y1, k7, r }, e)
+        }
+    }
+
+    /// DOP853's stage buffer inside the kept step (made a DOP853 step, its continuous
+    /// extension forgotten): the trial writes its stages there.
+    fn dop853_stages(&mut self) -> &mut dop853::Stages<N> {
+        if !matches!(self.last.interp, Interp::Dop853(_)) {
+            self.last.interp = Interp::Dop853(dop853::Lazy::default());
+        }
+        match &mut self.last.interp {
+            Interp::Dop853(lazy) => lazy.stages_for_new_step(),
+            _ => unreachable!("made a DOP853 step just above"),
         }
     }
 
@@ -357,20 +354,20 @@ impl<const N: usize> Integrator<N> {
         y: &[f64; N],
         t1: f64,
         trial: Trial<N>,
-    ) -> Step<N> {
-        let (y1, f1, interp) = match trial {
-            Trial::Dopri5 { y1, k7, r } => (y1, k7, Interp::Dopri { r }),
-            Trial::Dop853 { y1, mut k } => {
-                k[12] = sys.rhs(t1, &y1); // formula: f(t + h, y1), first stage of the next step
+    ) {
+        match trial {
+            Trial::Dopri5 { y1, k7, r } => self.finish(t, y, t1, y1, k7, Some(Interp::Dopri { r })),
+            Trial::Dop853 { y1 } => {
+                let f1 = sys.rhs(t1, &y1); // formula: f(t + h, y1), first stage of the next step
                 self.stats.rhs_evals += 1;
-                (y1, k[12], Interp::Dop853(dop853::Lazy::new(k)))
+                self.dop853_stages()[12] = f1;
+                self.finish(t, y, t1, y1, f1, None)
             }
-        };
-        self.finish(t, y, t1, y1, f1, interp)
+        }
     }
 
-    /// The step `(t, y) -> (t1, y1)`; its end derivative `f1` is kept as the next
-    /// step's first stage.
+    /// The step `(t, y) -> (t1, y1)` with its interpolant (`None`: DOP853's, already
+    /// in place); its end derivative `f1` is kept as the next step's first stage.
     fn finish(
         &mut self,
         t: f64,
@@ -378,15 +375,15 @@ impl<const N: usize> Integrator<N> {
         t1: f64,
         y1: [f64; N],
         f1: [f64; N],
-        interp: Interp<N>,
-    ) -> Step<N> {
+        interp: Option<Interp<N>>,
+    ) {
         self.fsal = Some((t1, y1, f1));
-        Step {
-            t0: t,
-            t1,
-            y0: *y,
-            y1,
-            interp,
+        self.last.t0 = t;
+        self.last.t1 = t1;
+        self.last.y0 = *y;
+        self.last.y1 = y1;
+        if let Some(interp) = interp {
+            self.last.interp = interp;
         }
     }
 
@@ -400,7 +397,7 @@ impl<const N: usize> Integrator<N> {
         span: f64,
         tol: Tol,
         h_max: f64,
-    ) -> Result<Step<N>, OdeError> {
+    ) -> Result<(), OdeError> {
         // Step-size controller of each pair (Hairer's codes): the error estimate is of
         // order q + 1 in h (q = 4 for DP5, 7 for DOP853), so h_new = h (0.9 / e)^(1/(q+1)),
         // limited to [fac_min, fac_max] after an accepted step. DOP853's e^(-1/8) is three
@@ -440,7 +437,8 @@ impl<const N: usize> Integrator<N> {
                     self.h_next = Some(h);
                 }
                 self.stats.accepted += 1;
-                return Ok(self.accept(sys, t, y, t1, trial));
+                self.accept(sys, t, y, t1, trial);
+                return Ok(());
             }
             self.stats.rejected += 1;
             let fac = if e.is_finite() {
@@ -465,52 +463,12 @@ impl<const N: usize> Integrator<N> {
         let (mut t, mut y) = (t0, y0);
         while t < t1 {
             let s = self.step(sys, t, &y, t1)?;
-            on_step(&s);
+            on_step(s);
             t = s.t1;
             y = s.y1;
         }
         Ok(y)
     }
-}
-
-/// Hairer's starting-step heuristic (`hinit`) for a method of order `order`.
-fn initial_step<S: OdeSystem<N> + ?Sized, const N: usize>(
-    sys: &S,
-    t: f64,
-    y: &[f64; N],
-    f0: &[f64; N],
-    tol: Tol,
-    order: u32,
-    stats: &mut Stats,
-) -> f64 {
-    let norm = |v: &[f64; N]| {
-        let mut s = 0.0;
-        for i in 0..N {
-            let sc = tol.scale(y[i], 0.0);
-            s += (v[i] / sc) * (v[i] / sc);
-        }
-        (s / N as f64).sqrt()
-    };
-    let (d0, d1) = (norm(y), norm(f0));
-    let h0 = if d0 < 1e-5 || d1 < 1e-5 {
-        1e-6
-    } else {
-        0.01 * d0 / d1
-    };
-    let y1 = comb(y, h0, &[(1.0, f0)]);
-    let f1 = sys.rhs(t + h0, &y1);
-    stats.rhs_evals += 1;
-    let mut diff = [0.0; N];
-    for i in 0..N {
-        diff[i] = f1[i] - f0[i];
-    }
-    let d2 = norm(&diff) / h0;
-    let h1 = if d1.max(d2) <= 1e-15 {
-        (h0 * 1e-3).max(1e-6)
-    } else {
-        (0.01 / d1.max(d2)).powf(1.0 / f64::from(order)) // formula: (0.01 / max(d1, d2))^(1/p)
-    };
-    (100.0 * h0).min(h1)
 }
 
 #[cfg(test)]

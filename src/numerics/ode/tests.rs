@@ -165,3 +165,55 @@ fn dop853_interpolant_is_seventh_order_and_costs_three_evaluations_once() {
     // local order 8 (interpolant of order 7): ratio 2^8 = 256; accept 150..400
     assert!((150.0..400.0).contains(&ratio), "ratio {ratio}");
 }
+
+/// `y0' = -y0` and `y1' = y0^2`: nothing reads `y1` (a quadrature), so stage arguments
+/// need only `y0` (`ARGS = 1`); `A` is the declared count.
+struct Quadrature<const A: usize>;
+
+impl<const A: usize> OdeSystem<2> for Quadrature<A> {
+    const ARGS: usize = A;
+    fn rhs(&self, _t: f64, y: &[f64; 2]) -> [f64; 2] {
+        [-y[0], y[0] * y[0]]
+    }
+}
+
+/// The same, but `y0` also feels `y1`: declaring `ARGS = 1` breaks its contract.
+struct Coupled<const A: usize>;
+
+impl<const A: usize> OdeSystem<2> for Coupled<A> {
+    const ARGS: usize = A;
+    fn rhs(&self, _t: f64, y: &[f64; 2]) -> [f64; 2] {
+        [-y[0] + 0.5 * y[1], y[0] * y[0]]
+    }
+}
+
+fn run_to_1<S: OdeSystem<2>>(sys: &S, m: Method) -> [f64; 2] {
+    let control = match m {
+        Method::Dopri5 | Method::Dop853 => StepControl::tol(1e-10, 1e-10),
+        _ => StepControl::Fixed { h_s: 0.01 },
+    };
+    let mut integ = Integrator::new(m, control);
+    integ.integrate(sys, 0.0, [1.0, 0.0], 1.0, |_| {}).unwrap()
+}
+
+#[test]
+fn stage_arguments_of_unread_components_are_skipped_without_effect() {
+    // Skipping the stage arithmetic of a component nothing reads changes no bit of the
+    // result, for every method (y1 is still integrated: its stages come from y0).
+    // The closed form y1(1) = (1 - e^-2)/2 checks that y1 is integrated at all.
+    let exact = 0.5 * (1.0 - (-2.0f64).exp());
+    for m in [Method::Euler, Method::Rk4, Method::Dopri5, Method::Dop853] {
+        let (all, lean) = (run_to_1(&Quadrature::<2>, m), run_to_1(&Quadrature::<1>, m));
+        assert_eq!(all, lean, "{m:?}");
+        // RK4 at h = 0.01: error ~1e-10; Euler ~4e-3 (first order); the pairs: tolerance.
+        let tol = if m == Method::Euler { 1e-2 } else { 1e-8 };
+        assert!((lean[1] - exact).abs() < tol, "{m:?}: {}", lean[1]);
+    }
+    // The contract is real: when the right-hand side does read the skipped component,
+    // the lean stages see stale values and the answer changes (RK4 and the pairs; Euler
+    // has no stages).
+    for m in [Method::Rk4, Method::Dopri5, Method::Dop853] {
+        let (all, lean) = (run_to_1(&Coupled::<2>, m), run_to_1(&Coupled::<1>, m));
+        assert!((all[0] - lean[0]).abs() > 1e-6, "{m:?}: {all:?} {lean:?}");
+    }
+}
