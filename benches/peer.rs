@@ -9,7 +9,7 @@
 //!    drive cycles from rest at the static angle: `benches/peers/stick_scipy.py` is a
 //!    line-by-line port of `src/physics/stick` (flight in closed form on both sides,
 //!    contact modes by Dormand-Prince 5(4) with events: the workbook's DP5 and SciPy's
-//!    RK45, same rtol = atol, same longest step T/16).
+//!    RK45, same rtol = atol, same longest step T/14).
 //! 2. The block of chapter 7 (`benches/peers/block_scipy.py`), every mode integrated.
 //!
 //! Prints the wall times (minimum of repeats), their ratio and the difference of the

@@ -216,7 +216,7 @@ class Stick:
                    ev(lambda t, u: math.sin(u[1]), 0),
                    ev(lambda t, u: sg * u[2] - 1e-9, 1)]
         u0 = [y0[0], y0[2], y0[3], y0[5]]
-        sol = solve_ivp(rhs, (t0, t_end), u0, method="RK45", rtol=tol, atol=tol, events=evs, max_step=self.T / 16)
+        sol = solve_ivp(rhs, (t0, t_end), u0, method="RK45", rtol=tol, atol=tol, events=evs, max_step=self.T / 14)
         hits = [(te[0], i) for i, te in enumerate(sol.t_events) if len(te)]
         if not hits:
             if not sol.success:

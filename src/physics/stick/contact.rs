@@ -6,7 +6,8 @@
 //! F_z L sin(theta)` (C.8, with `z_p - z_c = L cos`, `x_p - x_c = L sin`). The mass obeys
 //! `m a_P = F - m g e_z`.
 
-use super::{Mode, State, StickModel, OM, TH};
+use super::{Mode, State, StickModel, OM, ROD_X, ROD_Z, TH};
+use crate::numerics::trig::sin_cos;
 
 /// Accelerations and contact force of a contact mode at one instant.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -23,18 +24,27 @@ pub struct ContactEval {
 
 impl StickModel {
     /// Pivot (hinge at C, C moving with the plate): C.6 for theta'' and the contact force
-    /// from Newton on P, `F = m (a_P + g e_z)` with `a_P` from C.7.
+    /// from Newton on P, `F = m (a_P + g e_z)` with `a_P` from C.7. Exact trigonometry
+    /// of `t` and `theta` (the flow uses [`StickModel::pivot_eval_carried`]).
     #[inline]
     pub fn pivot_eval(&self, t: f64, y: &State) -> ContactEval {
-        self.pivot_eval_with(self.plate(t).2, y)
+        let (s, c) = sin_cos(y[TH]);
+        self.pivot_eval_with(self.plate(t).2, s, c, y)
     }
 
-    /// [`StickModel::pivot_eval`] with the plate's acceleration `a_s` (m/s^2) given.
+    /// [`StickModel::pivot_eval`] with the plate's acceleration `a_s` (m/s^2) given and
+    /// the rod's direction carried in the state, `(sin, cos) = (ROD_X, ROD_Z)`.
     #[inline]
-    pub(super) fn pivot_eval_with(&self, a_s: f64, y: &State) -> ContactEval {
+    pub fn pivot_eval_carried(&self, a_s: f64, y: &State) -> ContactEval {
+        self.pivot_eval_with(a_s, y[ROD_X], y[ROD_Z], y)
+    }
+
+    /// The pivot equations with the plate's acceleration `a_s` (m/s^2) and `(s, c) =
+    /// (sin theta, cos theta)` given.
+    #[inline]
+    fn pivot_eval_with(&self, a_s: f64, s: f64, c: f64, y: &State) -> ContactEval {
         let p = &self.p;
         let (m, l, g) = (p.mass_kg, p.length_m, p.g_mps2);
-        let (s, c) = y[TH].sin_cos();
         let w = y[OM];
         let torque = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * w;
         let theta_dd = ((g + a_s) * m * l * s - torque) * self.inv_ml2; // formula: C.6 theta'' = ((g + a_s) m L sin - Q) / (m L^2)
@@ -53,30 +63,44 @@ impl StickModel {
     /// range, where the rod lies along the edge of the friction cone.
     #[inline]
     pub fn slide_denominator(&self, sigma: f64, theta: f64) -> f64 {
-        let (s, c) = theta.sin_cos();
+        let (s, c) = sin_cos(theta);
         self.p.length_m * (s - sigma * self.p.mu * c) // formula: C.9/C.11 denominators
     }
 
     /// Slide with friction `F_x = sigma mu F_z` (sigma = +1 left, -1 right): the normal
     /// force from the moment balance about P (C.9/C.11), theta'' from the vertical
-    /// constraint `z_c = z_s` (C.14) and x'' of C from C.4.
+    /// constraint `z_c = z_s` (C.14) and x'' of C from C.4. Exact trigonometry of `t`
+    /// and `theta` (the flow uses [`StickModel::slide_eval_carried`]).
     #[inline]
     pub fn slide_eval(&self, sigma: f64, t: f64, y: &State) -> ContactEval {
-        self.slide_eval_with(sigma, self.plate(t).2, y)
+        let (s, c) = sin_cos(y[TH]);
+        self.slide_eval_with(sigma, self.plate(t).2, s, c, y)
     }
 
-    /// [`StickModel::slide_eval`] with the plate's acceleration `a_s` (m/s^2) given.
+    /// [`StickModel::slide_eval`] with `a_s` (m/s^2) given and the rod's direction
+    /// carried in the state.
     #[inline]
-    pub(super) fn slide_eval_with(&self, sigma: f64, a_s: f64, y: &State) -> ContactEval {
+    pub fn slide_eval_carried(&self, sigma: f64, a_s: f64, y: &State) -> ContactEval {
+        self.slide_eval_with(sigma, a_s, y[ROD_X], y[ROD_Z], y)
+    }
+
+    /// The slide equations with `a_s` (m/s^2) and `(s, c) = (sin theta, cos theta)` given.
+    #[inline]
+    fn slide_eval_with(&self, sigma: f64, a_s: f64, s: f64, c: f64, y: &State) -> ContactEval {
         let p = &self.p;
         let (l, g, mu) = (p.length_m, p.g_mps2, p.mu);
-        let (s, c) = y[TH].sin_cos();
         let w = y[OM];
         let torque = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * w;
-        let fz = torque * self.inv_length / (s - sigma * mu * c); // formula: C.9 (sigma=+1), C.11 (sigma=-1): F_z = Q / (L (sin - sigma mu cos))
-        let fz_m = fz * self.inv_mass;
-        let theta_dd = (a_s + g - fz_m - l * c * w * w) * self.inv_length / s; // formula: C.14 theta'' = (a_s + g - F_z/m - L cos theta'^2) / (L sin)
-        let xc_dd = sigma * mu * fz_m - l * (theta_dd * c - w * w * s); // formula: C.14 xddot_c
+        // Ordered for a short chain of dependent operations (every stage waits for
+        // it): both reciprocals first, side by side, and everything that does not need
+        // them (the torque over L m, the velocity terms) while they run.
+        let (inv_den, inv_s) = (1.0 / (s - sigma * mu * c), 1.0 / s);
+        let q_lm = torque * self.inv_length * self.inv_mass;
+        let (lw2s, lw2c) = (l * w * w * s, l * w * w * c);
+        let fz_m = q_lm * inv_den; // formula: C.9 (sigma=+1), C.11 (sigma=-1): F_z = Q / (L (sin - sigma mu cos))
+        let theta_dd = (a_s + g - lw2c - fz_m) * (self.inv_length * inv_s); // formula: C.14 theta'' = (a_s + g - F_z/m - L cos theta'^2) / (L sin)
+        let xc_dd = (sigma * mu * fz_m + lw2s) - (l * c) * theta_dd; // formula: C.14 xddot_c = sigma mu F_z/m - L (theta'' cos - theta'^2 sin)
+        let fz = fz_m * p.mass_kg;
         ContactEval {
             theta_dd,
             xc_dd,

@@ -4,7 +4,7 @@
 //! gamma theta' = 0`, so `theta - theta_0` decays as `exp(-k t / gamma)`; P is ballistic.
 //! The damper dissipates exactly the spring energy released: `k/2 (d0^2 - d^2)`.
 
-use super::{State, StickModel, D_DAMP, OM, TH, VXC, VZC, XC, ZC};
+use super::{State, StickModel, D_DAMP, OM, ROD_X, ROD_Z, TH, VXC, VZC, XC, ZC};
 
 impl StickModel {
     /// The flight state at `t` of a flight that starts at `(t0, y0)`.
@@ -33,6 +33,7 @@ impl StickModel {
         y[ZC] = zp - l * c; // formula: C.2
         y[VXC] = vxp0 - l * w * c; // formula: C.3 xdot_c
         y[VZC] = vzp + l * w * s; // formula: C.3 zdot_c
+        (y[ROD_X], y[ROD_Z]) = (s, c);
         y[D_DAMP] = y0[D_DAMP] + 0.5 * p.stiffness_nm_per_rad * (d0 * d0 - d * d); // formula: int gamma theta'^2 = k/2 (d0^2 - d^2)
         y
     }

@@ -9,16 +9,31 @@
 //! (integrated, [`contact`]); the landing and jamming impulses ([`collision`]); the
 //! transition rules ([`rules`]); the energy bookkeeping ([`energy`]); the driver
 //! wrapper and its summary ([`run`]). [`StickModel`] implements
-//! [`crate::numerics::hybrid::HybridSystem`] with `N = 10` states:
+//! [`crate::numerics::hybrid::HybridSystem`] with `N = 12` states:
 //!
 //! | index | meaning | unit |
 //! |---|---|---|
+//! | [`TH`], [`OM`] | angle theta and its rate theta' | rad, rad/s |
+//! | [`VXC`] | x velocity of C | m/s |
+//! | [`ROD_X`], [`ROD_Z`] | the rod's direction from C to P, `(sin theta, cos theta)` | 1 |
 //! | [`XC`], [`ZC`] | position of the foot C | m |
-//! | [`TH`] | angle theta | rad |
-//! | [`VXC`], [`VZC`] | velocity of C | m/s |
-//! | [`OM`] | angular rate theta' | rad/s |
+//! | [`VZC`] | z velocity of C | m/s |
 //! | [`W_PLATE`] | work done by the plate on the stick since t0 | J |
 //! | [`D_FRIC`], [`D_DAMP`], [`D_IMPACT`] | energy dissipated by friction, damper, impacts | J |
+//!
+//! The contact flows read only the first [`FLOW_ARGS`] components; the rest are
+//! outputs of the integration (C's position, the energy account) or the plate's own
+//! values in contact, and the integrator spends no stage arithmetic on them.
+//!
+//! The rod's direction turns at the rate theta': `(sin theta)' = theta' cos theta`,
+//! `(cos theta)' = -theta' sin theta`. It is integrated with the rest of the state (it
+//! enters the error control like any other component), so the contact equations read
+//! `sin theta` and `cos theta` off the state: no trigonometry on the chain of dependent
+//! stages, where it cost about 15 % of the simulator's time. Every mode entry resets
+//! the direction to its exact value ([`StickModel::canonical`]); between entries it
+//! drifts from it by the integration error only (checked in the tests). The plate's
+//! phase depends on time alone and comes from [`crate::numerics::trig`]. In contact,
+//! C's height and vertical velocity are the plate's and are not integrated.
 //!
 //! Public API used by other chapters: [`StickParams`] (and the scenes
 //! [`authors_scene`], [`jamming_scene`]), [`StickModel::new`], [`run::simulate_stick`]
@@ -34,32 +49,43 @@ pub mod rules;
 pub mod run;
 mod system;
 
+use crate::numerics::trig::{sin_cos, sin_cos_turns};
+use std::f64::consts::TAU;
+
 pub use params::{
     authors_scene, jamming_scene, theta0_for_static_angle, CollisionAngle, StickParams,
 };
 
-/// State index: x of C (m).
-pub const XC: usize = 0;
-/// State index: z of C (m).
-pub const ZC: usize = 1;
 /// State index: theta (rad).
-pub const TH: usize = 2;
-/// State index: x velocity of C (m/s).
-pub const VXC: usize = 3;
-/// State index: z velocity of C (m/s).
-pub const VZC: usize = 4;
+pub const TH: usize = 0;
 /// State index: theta' (rad/s).
-pub const OM: usize = 5;
+pub const OM: usize = 1;
+/// State index: x velocity of C (m/s).
+pub const VXC: usize = 2;
+/// State index: `sin(theta)`, the x component of the rod's unit vector from C to P (1).
+pub const ROD_X: usize = 3;
+/// State index: `cos(theta)`, the z component of the rod's unit vector from C to P (1).
+pub const ROD_Z: usize = 4;
+/// State index: x of C (m).
+pub const XC: usize = 5;
+/// State index: z of C (m).
+pub const ZC: usize = 6;
+/// State index: z velocity of C (m/s).
+pub const VZC: usize = 7;
 /// State index: plate work (J).
-pub const W_PLATE: usize = 6;
+pub const W_PLATE: usize = 8;
 /// State index: friction dissipation (J).
-pub const D_FRIC: usize = 7;
+pub const D_FRIC: usize = 9;
 /// State index: damper dissipation (J).
-pub const D_DAMP: usize = 8;
+pub const D_DAMP: usize = 10;
 /// State index: impact dissipation (J).
-pub const D_IMPACT: usize = 9;
+pub const D_IMPACT: usize = 11;
+/// The contact flows read the first five components only ([`TH`] to [`ROD_Z`]): the
+/// integrator forms stage arguments for those alone (see
+/// [`crate::numerics::ode::OdeSystem::ARGS`]).
+pub const FLOW_ARGS: usize = 5;
 /// Number of states.
-pub const NSTATE: usize = 10;
+pub const NSTATE: usize = 12;
 
 /// The stick's state vector (see the module table).
 pub type State = [f64; NSTATE];
@@ -150,6 +176,10 @@ pub struct StickModel {
     pub inv_length: f64,
     /// See `inv_mass`.
     pub inv_ml2: f64,
+    /// The plate's frequency `omega / (2 pi)` (Hz).
+    pub frequency_hz: f64,
+    /// The plate's phase `phi / (2 pi)` (turns).
+    pub phase_turns: f64,
 }
 
 impl StickModel {
@@ -164,13 +194,18 @@ impl StickModel {
             // A landing missed inside one such interval would need a dip below the plate
             // of at most A h^2/8 with |h_c''| <= A: about 0.1 micrometre here.
             min_flight_sample_s: period / 256.0,
-            // Guards are compared at step ends: 16 looks per cycle. DOP853's own step
-            // at rtol 1e-10 is about T/13 (rejections pile up beyond T/12), DP5's T/55.
-            max_contact_step_s: period / 16.0,
+            // Guards are compared at step ends: 14 looks per cycle. DOP853's own step
+            // at rtol 1e-10 is about T/13, DP5's T/55. On the default scene a cap of
+            // T/14 costs 14.8 accepted and 1.1 rejected steps a cycle (the rejection
+            // falls where the motion is fastest), T/16 16.4 and 0.1; beyond T/13 the
+            // rejections outgrow the saving.
+            max_contact_step_s: period / 14.0,
             penetration_tol_m: 1e-9 * p.length_m.max(1e-3),
             inv_mass: 1.0 / p.mass_kg,
             inv_length: 1.0 / p.length_m,
             inv_ml2: 1.0 / (p.mass_kg * p.length_m * p.length_m),
+            frequency_hz: p.plate.omega_rad_s / TAU,
+            phase_turns: p.plate.phase_rad / TAU,
         }
     }
 
@@ -178,16 +213,17 @@ impl StickModel {
     #[inline]
     pub fn plate(&self, t: f64) -> (f64, f64, f64) {
         let pl = &self.p.plate;
-        let ph = pl.omega_rad_s * t + pl.phase_rad;
-        let (s, c) = ph.sin_cos();
+        // phase in turns: f t + phi/(2 pi) (the table's sine and cosine take turns)
+        let (s, c) = sin_cos_turns(self.frequency_hz * t + self.phase_turns);
         let w = pl.omega_rad_s;
         let d = pl.amplitude_m;
         (d * s, d * w * c, -d * w * w * s) // formula: z_s = delta cos(wt): phase pi/2 in sin(wt + phi)
     }
 
-    /// The state with C's height and vertical velocity made the plate's in contact
-    /// modes: they are not integrated there (minimal coordinates x_c, theta), so the
-    /// stored values are those of the mode's entry. Flight states are returned as they are.
+    /// The state with its carried trigonometry made exact: in contact modes C's height
+    /// and vertical velocity become the plate's at `t`, and in every mode the rod's
+    /// direction becomes `(sin theta, cos theta)`. The integrated values differ from
+    /// these by the integration error only; every mode entry starts from this state.
     #[inline]
     pub fn canonical(&self, mode: Mode, t: f64, y: &State) -> State {
         let mut y = *y;
@@ -196,6 +232,7 @@ impl StickModel {
             y[ZC] = zs;
             y[VZC] = vs;
         }
+        (y[ROD_X], y[ROD_Z]) = sin_cos(y[TH]);
         y
     }
 
@@ -204,7 +241,7 @@ impl StickModel {
     #[inline]
     pub fn tip(&self, y: &State) -> [f64; 4] {
         let l = self.p.length_m;
-        let (s, c) = y[TH].sin_cos();
+        let (s, c) = sin_cos(y[TH]);
         [
             y[XC] + l * s,          // formula: C.1 x_p = x_c + L sin
             y[ZC] + l * c,          // formula: C.1 z_p = z_c + L cos

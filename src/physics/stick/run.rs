@@ -153,6 +153,7 @@ pub fn initial_state(model: &StickModel, t0: f64, theta: f64) -> State {
     y[super::ZC] = zs;
     y[super::VZC] = vs;
     y[super::TH] = theta;
+    (y[super::ROD_X], y[super::ROD_Z]) = theta.sin_cos();
     y
 }
 
@@ -322,7 +323,7 @@ pub fn simulate_stick(
         next_sample_t: t0,
     };
     let (mode0, ys) = match start {
-        super::rules::Next::To(m, y) => (m, y),
+        super::rules::Next::To(m, y) => (m, model.canonical(m, t0, &y)),
         super::rules::Next::Stop(x) => {
             let mut s = watch.sum;
             s.outcome = match x {

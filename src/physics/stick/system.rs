@@ -10,7 +10,10 @@
 //!   invalid); 5 `sigma xdot_c - tol` rising (slip against friction: invalid).
 
 use super::rules::Next;
-use super::{Mode, State, StickModel, StickStop, D_IMPACT, NSTATE, OM, TH, VXC, W_PLATE};
+use super::{
+    Mode, State, StickModel, StickStop, D_DAMP, D_FRIC, D_IMPACT, FLOW_ARGS, NSTATE, OM, ROD_X,
+    ROD_Z, TH, VXC, W_PLATE, XC,
+};
 use crate::numerics::events::Direction;
 use crate::numerics::hybrid::{HybridSystem, Transition};
 use std::f64::consts::FRAC_PI_2;
@@ -25,14 +28,17 @@ fn tr(n: Next) -> Transition<Mode, StickStop, NSTATE> {
 impl HybridSystem<NSTATE> for StickModel {
     type Mode = Mode;
     type Stop = StickStop;
+    const FLOW_ARGS: usize = FLOW_ARGS;
 
     fn flow(&self, mode: Mode, t: f64, y: &State) -> State {
         let p = &self.p;
-        let (_, vs, a_s) = self.plate(t); // once per evaluation: the trigonometry is most of its cost
+        // The plate's phase by the table (it depends on t alone, so it runs beside the
+        // rest); the rod's direction is carried in the state (see the module's table).
+        let (_, vs, a_s) = self.plate(t);
         let e = match mode {
             Mode::Flight => return [0.0; NSTATE], // flight uses the closed form
-            Mode::Pivot => self.pivot_eval_with(a_s, y),
-            Mode::SlideLeft | Mode::SlideRight => self.slide_eval_with(mode.sigma(), a_s, y),
+            Mode::Pivot => self.pivot_eval_carried(a_s, y),
+            Mode::SlideLeft | Mode::SlideRight => self.slide_eval_carried(mode.sigma(), a_s, y),
         };
         // Friction loss -F_x xdot_c = -sigma mu F_z xdot_c (zero in pivot): it equals
         // mu F_z |xdot_c| while C slips in the slide's direction, but has no kink where the
@@ -40,18 +46,17 @@ impl HybridSystem<NSTATE> for StickModel {
         // its error estimate rejected it (1 in 7 steps) and the accepted step's dense
         // output carried up to 1e-5 of the budget into the located stop.
         let friction = -e.fx * y[VXC];
-        [
-            y[VXC],
-            0.0, // z_c and zdot_c follow the plate: not integrated (see StickModel::canonical)
-            y[OM],
-            e.xc_dd,
-            0.0,
-            e.theta_dd,
-            e.fz * vs,                             // formula: plate power F_z zdot_s
-            friction,                              // formula: friction loss -F_x xdot_c
-            p.damping_nms_per_rad * y[OM] * y[OM], // formula: damper loss gamma theta'^2
-            0.0,
-        ]
+        let mut d = [0.0; NSTATE]; // z_c and zdot_c follow the plate: not integrated (see StickModel::canonical)
+        d[TH] = y[OM];
+        d[OM] = e.theta_dd;
+        d[VXC] = e.xc_dd;
+        d[ROD_X] = y[OM] * y[ROD_Z]; // formula: (sin theta)' = theta' cos theta
+        d[ROD_Z] = -y[OM] * y[ROD_X]; // formula: (cos theta)' = -theta' sin theta
+        d[XC] = y[VXC];
+        d[W_PLATE] = e.fz * vs; // formula: plate power F_z zdot_s
+        d[D_FRIC] = friction; // formula: friction loss -F_x xdot_c
+        d[D_DAMP] = p.damping_nms_per_rad * y[OM] * y[OM]; // formula: damper loss gamma theta'^2
+        d
     }
 
     fn exact(&self, mode: Mode, t0: f64, y0: &State, t: f64) -> Option<State> {
@@ -80,7 +85,7 @@ impl HybridSystem<NSTATE> for StickModel {
             Mode::Pivot => match i {
                 3 => FRAC_PI_2 - y[TH].abs(),
                 _ => {
-                    let e = self.pivot_eval(t, y);
+                    let e = self.pivot_eval_carried(self.plate(t).2, y); // the flow's own force
                     match i {
                         0 => e.fz,
                         1 => p.mu * e.fz - e.fx,
@@ -106,6 +111,18 @@ impl HybridSystem<NSTATE> for StickModel {
                     _ => sigma * y[VXC] - 1e-9,
                 }
             }
+        }
+    }
+
+    fn guards(&self, mode: Mode, t: f64, y: &State, out: &mut Vec<f64>) {
+        out.clear();
+        if mode == Mode::Pivot {
+            // one force evaluation for the three force guards
+            let (p, e) = (&self.p, self.pivot_eval_carried(self.plate(t).2, y));
+            out.extend([e.fz, p.mu * e.fz - e.fx, p.mu * e.fz + e.fx]);
+            out.push(FRAC_PI_2 - y[TH].abs());
+        } else {
+            out.extend((0..self.guard_count(mode)).map(|i| self.guard(mode, i, t, y)));
         }
     }
 
@@ -147,10 +164,12 @@ impl HybridSystem<NSTATE> for StickModel {
         // The energy accumulators restart from zero in every mode (keeping them small keeps
         // their share of the error control honest); the new state carries only what the
         // reset itself added (impulse work, impact loss). The run's observer sums them.
-        if let Transition::To { state, .. } = &mut next {
+        // The carried plate height and rod direction start every mode exact.
+        if let Transition::To { mode, state } = &mut next {
             for k in W_PLATE..=D_IMPACT {
                 state[k] -= y[k];
             }
+            *state = self.canonical(*mode, t, state);
         }
         next
     }
