@@ -72,58 +72,12 @@ impl HybridSystem<NSTATE> for StickModel {
     }
 
     fn guard(&self, mode: Mode, i: usize, t: f64, y: &State) -> f64 {
-        let p = &self.p;
-        match mode {
-            Mode::Flight => {
-                let h = self.h_c(t, y);
-                if i == 0 {
-                    h
-                } else {
-                    -h - self.penetration_tol_m
-                }
-            }
-            Mode::Pivot => match i {
-                3 => FRAC_PI_2 - y[TH].abs(),
-                _ => {
-                    let e = self.pivot_eval_carried(self.plate(t).2, y); // the flow's own force
-                    match i {
-                        0 => e.fz,
-                        1 => p.mu * e.fz - e.fx,
-                        _ => p.mu * e.fz + e.fx,
-                    }
-                }
-            },
-            Mode::SlideLeft | Mode::SlideRight => {
-                let sigma = mode.sigma();
-                match i {
-                    // same zeros and sign as L (sin - sigma mu cos) = L cos (tan - sigma mu), no trig
-                    0 => y[TH] - sigma * self.atan_mu,
-                    1 => {
-                        let q = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad)
-                            + p.damping_nms_per_rad * y[OM];
-                        q * (y[TH] - sigma * self.atan_mu).signum()
-                    }
-                    // slip speed + 1e-12 m/s: a slide entered from rest starts at +1e-12, not at 0,
-                    // so a slip that reverses within the first step is still seen
-                    2 => -sigma * y[VXC] + 1e-12,
-                    3 => FRAC_PI_2 - y[TH].abs(),
-                    4 => y[TH],
-                    _ => sigma * y[VXC] - 1e-9,
-                }
-            }
-        }
+        self.with_guards(mode, t, y, |g| g[i])
     }
 
     fn guards(&self, mode: Mode, t: f64, y: &State, out: &mut Vec<f64>) {
         out.clear();
-        if mode == Mode::Pivot {
-            // one force evaluation for the three force guards
-            let (p, e) = (&self.p, self.pivot_eval_carried(self.plate(t).2, y));
-            out.extend([e.fz, p.mu * e.fz - e.fx, p.mu * e.fz + e.fx]);
-            out.push(FRAC_PI_2 - y[TH].abs());
-        } else {
-            out.extend((0..self.guard_count(mode)).map(|i| self.guard(mode, i, t, y)));
-        }
+        self.with_guards(mode, t, y, |g| out.extend_from_slice(g));
     }
 
     fn direction(&self, mode: Mode, i: usize) -> Direction {
@@ -178,6 +132,48 @@ impl HybridSystem<NSTATE> for StickModel {
         match mode {
             Mode::Flight => self.flight_step(t, y),
             _ => self.max_contact_step_s,
+        }
+    }
+}
+
+impl StickModel {
+    /// All guards of `mode` at `(t, y)`, in the module's order, handed to `f`: one force
+    /// evaluation serves the pivot's three force guards, and a single guard costs no
+    /// more than all of them (they share their terms).
+    #[inline]
+    fn with_guards<R>(&self, mode: Mode, t: f64, y: &State, f: impl FnOnce(&[f64]) -> R) -> R {
+        let p = &self.p;
+        match mode {
+            Mode::Flight => {
+                let h = self.h_c(t, y);
+                f(&[h, -h - self.penetration_tol_m])
+            }
+            Mode::Pivot => {
+                let e = self.pivot_eval_carried(self.plate(t).2, y); // the flow's own force
+                f(&[
+                    e.fz,
+                    p.mu * e.fz - e.fx,
+                    p.mu * e.fz + e.fx,
+                    FRAC_PI_2 - y[TH].abs(),
+                ])
+            }
+            Mode::SlideLeft | Mode::SlideRight => {
+                let sigma = mode.sigma();
+                // same zeros and sign as L (sin - sigma mu cos) = L cos (tan - sigma mu), no trig
+                let edge = y[TH] - sigma * self.atan_mu;
+                let q =
+                    p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * y[OM];
+                f(&[
+                    edge,
+                    q * edge.signum(),
+                    // slip speed + 1e-12 m/s: a slide entered from rest starts at +1e-12,
+                    // not at 0, so a slip that reverses within the first step is still seen
+                    -sigma * y[VXC] + 1e-12,
+                    FRAC_PI_2 - y[TH].abs(),
+                    y[TH],
+                    sigma * y[VXC] - 1e-9,
+                ])
+            }
         }
     }
 }
