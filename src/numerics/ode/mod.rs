@@ -186,8 +186,8 @@ pub struct Integrator<const N: usize> {
 }
 
 impl<const N: usize> Integrator<N> {
-    /// A new integrator. Adaptive control is only meaningful for [`Method::Dopri5`];
-    /// Euler and RK4 with `Adaptive` use `h_max_s` (or 1e-3 s) as a fixed step.
+    /// A new integrator. Adaptive control is only meaningful for the Dormand-Prince
+    /// pairs; Euler and RK4 with `Adaptive` use `h_max_s` (or 1e-3 s) as a fixed step.
     pub fn new(method: Method, control: StepControl) -> Self {
         Integrator {
             method,
@@ -268,11 +268,7 @@ impl<const N: usize> Integrator<N> {
                 match method {
                     Method::Euler => {
                         let y1 = comb(y, h, &[(1.0, &f0)]); // formula: y1 = y0 + h f(t0, y0)
-                        self.last.t0 = t;
-                        self.last.t1 = t1;
-                        self.last.y0 = *y;
-                        self.last.y1 = y1;
-                        self.last.interp = Interp::Linear;
+                        self.keep(t, y, t1, y1, Some(Interp::Linear));
                     }
                     Method::Rk4 => {
                         let m = S::ARGS;
@@ -378,6 +374,12 @@ impl<const N: usize> Integrator<N> {
         interp: Option<Interp<N>>,
     ) {
         self.fsal = Some((t1, y1, f1));
+        self.keep(t, y, t1, y1, interp);
+    }
+
+    /// Makes `(t, y) -> (t1, y1)` the kept step, with its interpolant (`None`: the one
+    /// already in place).
+    fn keep(&mut self, t: f64, y: &[f64; N], t1: f64, y1: [f64; N], interp: Option<Interp<N>>) {
         self.last.t0 = t;
         self.last.t1 = t1;
         self.last.y0 = *y;

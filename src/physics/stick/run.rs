@@ -148,13 +148,9 @@ impl RunSummary {
 /// Start state: C at x = 0 on the plate at time `t0`, standing still at `theta` with
 /// rate zero (relative to the plate), accumulators zero.
 pub fn initial_state(model: &StickModel, t0: f64, theta: f64) -> State {
-    let (zs, vs, _) = model.plate(t0);
     let mut y = [0.0; NSTATE];
-    y[super::ZC] = zs;
-    y[super::VZC] = vs;
-    y[super::TH] = theta;
-    (y[super::ROD_X], y[super::ROD_Z]) = theta.sin_cos();
-    y
+    y[TH] = theta;
+    model.canonical(Mode::Pivot, t0, &y) // C on the plate, the rod's direction exact
 }
 
 struct Watch<'a> {
