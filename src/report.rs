@@ -40,6 +40,77 @@ impl Verdict {
     }
 }
 
+/// The kind of evidence behind a claim's verdict (`"check"` in JSON).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Check {
+    /// Compared with a closed form derived independently of the statement.
+    ClosedForm,
+    /// Compared with a second, independent numerical method.
+    SecondMethod,
+    /// Compared with a simulation of the model (the workbook's hybrid simulator).
+    Simulation,
+    /// Compared with the limit of a convergence study (order fits, refinement ladders).
+    Convergence,
+    /// The document's own rule or algorithm executed as printed.
+    LiteralExecution,
+    /// Holds by construction of the workbook's computation: a sanity check, never
+    /// counted as confirmation of the document.
+    Consistency,
+}
+
+impl Check {
+    /// The snake-case name used in tables and JSON.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Check::ClosedForm => "closed_form",
+            Check::SecondMethod => "second_method",
+            Check::Simulation => "simulation",
+            Check::Convergence => "convergence",
+            Check::LiteralExecution => "literal_execution",
+            Check::Consistency => "consistency",
+        }
+    }
+
+    /// Every kind, in the order of the JSON contract.
+    pub const ALL: [Check; 6] = [
+        Check::ClosedForm,
+        Check::SecondMethod,
+        Check::Simulation,
+        Check::Convergence,
+        Check::LiteralExecution,
+        Check::Consistency,
+    ];
+}
+
+/// A wrong variant of the document's statement, fed to a claim's own check. The
+/// falsification tests run it and assert that its verdict differs from the verdict
+/// the claim gets under the document's statement: a claim that no mutation can move
+/// holds by construction and is a [`Check::Consistency`].
+pub struct Mutation {
+    /// Id of the claim this mutates (as in the chapter's report).
+    pub claim_id: &'static str,
+    /// What was changed, e.g. `"coefficient 1/4 -> 0.275"` or `"F_z > 0 -> F_z < 0"`.
+    pub description: &'static str,
+    /// Runs the claim's check on the wrong statement (quick mode) and returns the claim.
+    pub run: Box<dyn Fn() -> Claim + Send + Sync>,
+}
+
+impl Mutation {
+    /// A mutation of claim `claim_id`.
+    pub fn new(
+        claim_id: &'static str,
+        description: &'static str,
+        run: impl Fn() -> Claim + Send + Sync + 'static,
+    ) -> Self {
+        Mutation {
+            claim_id,
+            description,
+            run: Box::new(run),
+        }
+    }
+}
+
 /// One checked statement of the document.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Claim {
@@ -58,6 +129,9 @@ pub struct Claim {
     pub tolerance: Value,
     /// The verdict.
     pub verdict: Verdict,
+    /// The kind of evidence behind the verdict (set with [`Claim::with_check`]; a
+    /// claim whose kind was never stated counts as [`Check::Consistency`]).
+    pub check: Check,
 }
 
 impl Claim {
@@ -89,7 +163,14 @@ impl Claim {
             } else {
                 Verdict::Failed
             },
+            check: Check::Consistency,
         }
+    }
+
+    /// The claim with its kind of evidence stated.
+    pub fn with_check(mut self, kind: Check) -> Claim {
+        self.check = kind;
+        self
     }
 
     /// A numeric claim: confirmed when `|computed - expected| <= tolerance`, failed
@@ -471,7 +552,8 @@ mod tests {
                 "expected",
                 "computed",
                 "tolerance",
-                "verdict"
+                "verdict",
+                "check"
             ]
         );
     }

@@ -315,3 +315,8 @@ fn draw_panel<DB: DrawingBackend>(
     crate::plot::draw_legend(&mut ch, SeriesLabelPosition::UpperLeft)?;
     Ok(())
 }
+
+/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
+pub fn mutations() -> Vec<crate::report::Mutation> {
+    Vec::new()
+}

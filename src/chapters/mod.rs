@@ -181,6 +181,20 @@ pub fn run_default(id: &str, ctx: &Context) -> Result<ChapterReport> {
     }
 }
 
+/// The falsification mutations of chapter `id`'s claims (empty for an unknown id).
+pub fn mutations(id: &str) -> Vec<crate::report::Mutation> {
+    match id {
+        "locomotion-definition" => locomotion_definition::mutations(),
+        "effective-mass" => effective_mass::mutations(),
+        "horizontal-shaking" => horizontal_shaking::mutations(),
+        "vertical-shaking" => vertical_shaking::mutations(),
+        "asymmetric-shaking" => asymmetric_shaking::mutations(),
+        "stick-state-machine" => stick_state_machine::mutations(),
+        "speed-vs-accuracy" => speed_vs_accuracy::mutations(),
+        _ => Vec::new(),
+    }
+}
+
 /// The report of a chapter that is not built yet: says so, no claims.
 pub fn not_built(id: &str) -> ChapterReport {
     let info = info(id).expect("registered chapter");

@@ -189,3 +189,8 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     }
     Ok(r)
 }
+
+/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
+pub fn mutations() -> Vec<crate::report::Mutation> {
+    Vec::new()
+}

@@ -268,3 +268,8 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     }
     Ok(r)
 }
+
+/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
+pub fn mutations() -> Vec<crate::report::Mutation> {
+    Vec::new()
+}

@@ -107,3 +107,8 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     report_parts::build(args, ctx, &mut r)?;
     Ok(r)
 }
+
+/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
+pub fn mutations() -> Vec<crate::report::Mutation> {
+    Vec::new()
+}

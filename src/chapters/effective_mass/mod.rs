@@ -463,3 +463,8 @@ fn jamming_table(mu: f64, angle_deg: f64) -> String {
     }
     t
 }
+
+/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
+pub fn mutations() -> Vec<crate::report::Mutation> {
+    Vec::new()
+}
