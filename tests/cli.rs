@@ -19,6 +19,7 @@ const CLAIM_KEYS: [&str; 7] = [
     "computed",
     "tolerance",
     "verdict",
+    "check",
 ];
 
 fn assert_contract(report: &Value) {
@@ -36,6 +37,13 @@ fn assert_contract(report: &Value) {
         assert!(
             ["confirmed", "erratum", "approximation", "failed"].contains(&v),
             "{v}"
+        );
+        let k = c["check"].as_str().unwrap();
+        assert!(
+            locomotion_workbook::report::Check::ALL
+                .iter()
+                .any(|x| x.as_str() == k),
+            "{k}"
         );
     }
     assert!(
