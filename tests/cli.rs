@@ -11,7 +11,7 @@ mod common;
 const CONTRACT_KEYS: [&str; 7] = [
     "chapter", "title", "section", "params", "claims", "results", "figures",
 ];
-const CLAIM_KEYS: [&str; 7] = [
+const CLAIM_KEYS: [&str; 8] = [
     "id",
     "section",
     "statement",
