@@ -6,6 +6,14 @@
 //! output (superlinear, never leaves the bracket). The returned time is the *right*
 //! end of the final bracket: the first point known to lie past the crossing, so a
 //! mode started there does not fire the same guard again.
+//!
+//! A sign check at the ends of a step cannot see a guard that crosses zero and comes
+//! back inside the step (an even number of crossings: a short lift-off). The certified
+//! search [`hidden_crossing`] closes that gap: from the guard's values and rates at the
+//! ends it builds the cubic Hermite model of the guard over the step and subdivides the
+//! step, sampling the dense output, until on every piece the model stays farther from
+//! zero than its own error allowance (then no crossing can hide there), or a sample on
+//! the far side of zero brackets a crossing for [`illinois`].
 
 /// The crossing direction that makes a guard fire.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -92,6 +100,255 @@ pub fn illinois(
     (b, evals)
 }
 
+/// A guard's value and rate (s^-1 times its unit) at one time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GuardPoint {
+    /// Time (s).
+    pub t: f64,
+    /// Guard value.
+    pub g: f64,
+    /// Time derivative of the guard along the trajectory.
+    pub rate: f64,
+}
+
+/// A cheap sufficient test that a guard with the same sign at both ends of a step of
+/// length `h` keeps it, allowance included. With slopes `d = h g'` in `u = (t - t0)/h`
+/// and `sigma` the sign at the start, the Hermite model regroups as
+/// `sigma p = (1-u)^2 [(1+2u) sigma g0 + u sigma d0] + u^2 [(3-2u) sigma g1 - (1-u) sigma d1]`.
+/// Taking half the allowance `16 A u^2 (1-u)^2` (see `hidden_crossing`, `A = |c3|/4`)
+/// into each bracket leaves two expressions bounded below by functions linear in `u`,
+/// positive on `[0, 1]` when they are positive at both ends:
+/// `sigma g0 > 0`, `3 sigma g0 + sigma d0 > 8 A`, `3 sigma g1 - sigma d1 > 8 A`, `sigma g1 > 0`.
+/// Most steps pass here; the others go to the exact least value of the model.
+#[inline]
+pub fn clearly_one_sided(a: &GuardPoint, b: &GuardPoint) -> bool {
+    let h = b.t - a.t;
+    let sign = if a.g > 0.0 { 1.0 } else { -1.0 };
+    let (g0, g1) = (sign * a.g, sign * b.g);
+    let (d0, d1) = (sign * h * a.rate, sign * h * b.rate);
+    let a8 = 2.0 * (2.0 * (g0 - g1) + d0 + d1).abs(); // formula: 8 A = 2 |c3|
+    (g0 > 0.0) & (g1 > 0.0) & (3.0 * g0 + d0 > a8) & (3.0 * g1 - d1 > a8)
+}
+
+/// Power-basis coefficients in `u = (t - a)/(b - a)` of the cubic Hermite model of a
+/// guard on `[a, b]`: `p(u) = c0 + c1 u + c2 u^2 + c3 u^3`.
+fn hermite_coefficients(a: &GuardPoint, b: &GuardPoint) -> [f64; 4] {
+    let h = b.t - a.t;
+    let (d0, d1) = (h * a.rate, h * b.rate); // formula: slopes in u are h g'
+    [
+        a.g,
+        d0,
+        3.0 * (b.g - a.g) - 2.0 * d0 - d1, // formula: c2 = 3 (g1 - g0) - 2 h g0' - h g1'
+        2.0 * (a.g - b.g) + d0 + d1,       // formula: c3 = 2 (g0 - g1) + h g0' + h g1'
+    ]
+}
+
+/// Least value of `sign * p(u)` over `u` in `[0, 1]` for the cubic `c`.
+fn least_on_unit(c: &[f64; 4], sign: f64) -> f64 {
+    let p = |u: f64| sign * (c[0] + u * (c[1] + u * (c[2] + u * c[3])));
+    let mut least = p(0.0).min(p(1.0));
+    // formula: p'(u) = c1 + 2 c2 u + 3 c3 u^2 = 0
+    let (qa, qb, qc) = (3.0 * c[3], 2.0 * c[2], c[1]);
+    let mut consider = |u: f64| {
+        if u > 0.0 && u < 1.0 {
+            least = least.min(p(u));
+        }
+    };
+    if qa.abs() <= 1e-14 * (qb.abs() + qc.abs()) {
+        if qb != 0.0 {
+            consider(-qc / qb);
+        }
+    } else {
+        let disc = qb * qb - 4.0 * qa * qc;
+        if disc >= 0.0 {
+            // formula: the stable pair of roots, q = -(b + sign(b) sqrt(disc))/2
+            let sb = if qb >= 0.0 { 1.0 } else { -1.0 };
+            let q = -0.5 * (qb + sb * disc.sqrt());
+            if q != 0.0 {
+                consider(q / qa);
+                consider(qc / q);
+            } else {
+                consider(0.0);
+            }
+        }
+    }
+    least
+}
+
+/// Is `sign * g > 0` certain on the piece whose Hermite model is `c`, when `|g - p|`
+/// is at most `allow` at the middle? The Hermite error vanishes at the ends (it is
+/// `c4 u^2 (1-u)^2` for a quartic part `c4 u^4`), so the allowance is `16 allow u^2
+/// (1-u)^2`. First the uniform test `min sign p > allow`; failing that, the least value
+/// of the quartic `q(u) = sign p(u) - 16 allow u^2 (1-u)^2` on `[0, 1]`.
+fn certified(c: &[f64; 4], sign: f64, allow: f64) -> bool {
+    if least_on_unit(c, sign) > allow {
+        return true;
+    }
+    let w = 16.0 * allow; // formula: u^2 (1-u)^2 = u^2 - 2 u^3 + u^4
+    let q = [
+        sign * c[0],
+        sign * c[1],
+        sign * c[2] - w,
+        sign * c[3] + 2.0 * w,
+        -w,
+    ];
+    least_of_quartic(&q) > 0.0
+}
+
+/// Least value on `[0, 1]` of `q0 + q1 u + q2 u^2 + q3 u^3 + q4 u^4`: at an end or at a
+/// root of `q'`. The roots of `q''` (a quadratic, closed form) cut `[0, 1]` into pieces
+/// on which `q'` is monotone, so each piece holds at most one root of `q'`, found by
+/// bisection where `q'` changes sign.
+fn least_of_quartic(q: &[f64; 5]) -> f64 {
+    let val = |u: f64| q[0] + u * (q[1] + u * (q[2] + u * (q[3] + u * q[4])));
+    let d1 = |u: f64| q[1] + u * (2.0 * q[2] + u * (3.0 * q[3] + u * 4.0 * q[4])); // formula: q'
+                                                                                   // [0, 1] and the roots of q'' inside it, in order (a fixed array: no allocation).
+    let mut cuts = [0.0, 1.0, 1.0, 1.0];
+    let mut n = 1;
+    // formula: q'' = 2 q2 + 6 q3 u + 12 q4 u^2 = 0
+    let (a, b, c) = (12.0 * q[4], 6.0 * q[3], 2.0 * q[2]);
+    let mut roots = [f64::NAN; 2];
+    if a.abs() > 1e-300 {
+        let disc = b * b - 4.0 * a * c;
+        if disc >= 0.0 {
+            let r = disc.sqrt();
+            let (r1, r2) = ((-b - r) / (2.0 * a), (-b + r) / (2.0 * a));
+            roots = [r1.min(r2), r1.max(r2)];
+        }
+    } else if b != 0.0 {
+        roots[0] = -c / b;
+    }
+    for u in roots {
+        if u > 0.0 && u < 1.0 {
+            cuts[n] = u;
+            n += 1;
+        }
+    }
+    cuts[n] = 1.0;
+    let cuts = &cuts[..=n];
+    let mut least = val(0.0).min(val(1.0));
+    for w in cuts.windows(2) {
+        let (mut l, mut r) = (w[0], w[1]);
+        let (dl, dr) = (d1(l), d1(r));
+        if dl == 0.0 || dr == 0.0 || (dl > 0.0) == (dr > 0.0) {
+            least = least.min(val(l)).min(val(r));
+            continue;
+        }
+        // 24 halvings: the root of q' to 2^-24 of the piece, where q is off its least
+        // value by at most max|q''| 2^-48 / 2 (the slack subtracted below).
+        for _ in 0..24 {
+            let m = 0.5 * (l + r);
+            if (d1(m) > 0.0) == (dl > 0.0) {
+                l = m;
+            } else {
+                r = m;
+            }
+        }
+        least = least.min(val(0.5 * (l + r)));
+    }
+    let slack = (2.0 * q[2].abs() + 6.0 * q[3].abs() + 12.0 * q[4].abs()) * 2f64.powi(-49); // formula: max|q''| du^2 / 2
+    least - slack
+}
+
+/// Most interior samples one search may take: past it the remaining pieces are a
+/// tangency to zero within the guard's round-off (their models' minima lie within the
+/// floor of 64 ulps) and are counted as unresolved.
+pub const MAX_SAMPLES: u64 = 256;
+
+/// Work of certified searches (for the cost table of chapter 7).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct CertifyStats {
+    /// Guards whose step could not be certified from the ends alone (subdivided).
+    pub subdivided: u64,
+    /// Interior samples taken (each a dense-output value and rate of one guard).
+    pub samples: u64,
+    /// Crossings found that the end-point sign test missed.
+    pub hidden_found: u64,
+    /// Pieces narrower than the resolution left uncertified (a tangency to zero).
+    pub unresolved: u64,
+}
+
+/// Searches `[a.t, b.t]` for a zero of a guard that has the same strict sign at both
+/// ends, so the end-point test sees no crossing (a guard that starts at zero up to
+/// round-off, `|g(a)| <= 64 eps |g(b)|`, is left to the end-point test). `at(t)` gives the guard's value and
+/// rate at an interior time (on the step's dense output).
+///
+/// On each piece the cubic Hermite model `p` of the guard (values and rates at its
+/// ends) is compared with zero. The piece is certified free of crossings when
+/// `min sign * p > allowance`, the allowance bounding `|g - p|`:
+/// - before any interior sample, a quarter of the model's cubic coefficient `|c3|`.
+///   If the guard's Taylor coefficients in `u` shrink like `(h/tau)^k / k!` (a step
+///   that resolves the guard's time scale `tau`), the Hermite error `c4 u^2 (1-u)^2
+///   <= c4/16` is about `|c3| (h/tau)/64`: the quarter is a 16-fold margin for `h <= tau`;
+/// - after a sample at the midpoint, whose Hermite error `e_mid` is measured, the
+///   halves' errors scale as `h^4`, so `e_mid/16`; the allowance is `e_mid/4` (4-fold).
+///
+/// The allowance is the bound at the middle of a piece; towards its ends it shrinks as
+/// `u^2 (1-u)^2` (see `certified`), so a guard that starts a step at a small offset
+/// from zero and moves away (a slide entered from rest) certifies without subdividing.
+///
+/// Both also get a floor of 64 ulps of the guard's scale. Pieces are searched left to
+/// right. Returns the first sample found on the far side of zero with the ends of its
+/// piece, `[(t_l, g_l), (t_m, g_m), (t_r, g_r)]`: the guard crosses zero in both halves,
+/// once each way, so either direction of firing has its bracket there. `None`: no
+/// crossing can hide; the search stops refining pieces narrower than `t_tol` (a
+/// tangency below the time resolution), or `2^-32` of the step, and gives up after
+/// [`MAX_SAMPLES`] samples (a tangency within round-off), counting it as unresolved.
+pub fn hidden_crossing(
+    mut at: impl FnMut(f64) -> (f64, f64),
+    a: GuardPoint,
+    b: GuardPoint,
+    t_tol: f64,
+    stats: &mut CertifyStats,
+) -> Option<[(f64, f64); 3]> {
+    let sign = a.g.signum();
+    if a.g == 0.0 || b.g == 0.0 || b.g.signum() != sign {
+        return None; // not this function's case: the end-point test decides
+    }
+    if a.g.abs() <= 64.0 * f64::EPSILON * b.g.abs() {
+        // The guard starts the step at zero up to round-off: the event that put it there
+        // was just handled (a take-off from the plate starts its height guard at zero,
+        // and the first step's dense output may dip by round-off before it rises), and a
+        // guard never fires from zero (see `Direction::fires`).
+        return None;
+    }
+    let floor = 64.0 * f64::EPSILON * a.g.abs().max(b.g.abs());
+    let c = hermite_coefficients(&a, &b);
+    let allowance = (0.25 * c[3].abs()).max(floor);
+    if certified(&c, sign, allowance) {
+        return None;
+    }
+    stats.subdivided += 1;
+    // Depth-first, left piece first: (left end, right end, allowance).
+    let min_width = t_tol.max((b.t - a.t) * 2f64.powi(-32));
+    let mut pieces = vec![(a, b, allowance)];
+    let mut taken = 0;
+    while let Some((l, r, allow)) = pieces.pop() {
+        let c = hermite_coefficients(&l, &r);
+        if certified(&c, sign, allow) {
+            continue;
+        }
+        if r.t - l.t <= min_width || taken == MAX_SAMPLES {
+            stats.unresolved += 1;
+            break;
+        }
+        taken += 1;
+        let tm = 0.5 * (l.t + r.t);
+        let (g, rate) = at(tm);
+        stats.samples += 1;
+        if g == 0.0 || g.signum() != sign {
+            stats.hidden_found += 1;
+            return Some([(l.t, l.g), (tm, g), (r.t, r.g)]);
+        }
+        let e_mid = (g - (c[0] + 0.5 * (c[1] + 0.5 * (c[2] + 0.5 * c[3])))).abs();
+        let allow_half = (0.25 * e_mid).max(floor); // formula: e/16 per half, 4-fold margin
+        let m = GuardPoint { t: tm, g, rate };
+        pieces.push((m, r, allow_half));
+        pieces.push((l, m, allow_half));
+    }
+    None
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -127,5 +384,114 @@ mod tests {
         let f = |t: f64| t - 0.3;
         let (t, _) = illinois(f, 0.0, 1.0, f(0.0), f(1.0), 1e-15);
         assert!(f(t) >= 0.0);
+    }
+
+    /// A guard `(t - c)^2 - w^2` with its rate: positive at both ends of [0, 1], below
+    /// zero on (c - w, c + w).
+    fn dip(c: f64, w: f64) -> impl Fn(f64) -> (f64, f64) {
+        move |t: f64| ((t - c) * (t - c) - w * w, 2.0 * (t - c))
+    }
+
+    fn point(f: &impl Fn(f64) -> (f64, f64), t: f64) -> GuardPoint {
+        let (g, rate) = f(t);
+        GuardPoint { t, g, rate }
+    }
+
+    #[test]
+    fn a_double_root_inside_one_step_is_found() {
+        // The end-point sign test sees + and + and misses the dip; the certified search
+        // brackets it, for a dip in the middle, near an end, and very narrow.
+        for (c, w) in [(0.5, 0.01), (0.93, 0.004), (0.2, 1e-6), (0.61, 3e-7)] {
+            let f = dip(c, w);
+            let (a, b) = (point(&f, 0.0), point(&f, 1.0));
+            assert!(!Direction::Falling.fires(a.g, b.g));
+            let mut st = CertifyStats::default();
+            let found = hidden_crossing(&f, a, b, time_tolerance(1.0), &mut st)
+                .unwrap_or_else(|| panic!("dip at {c} of half-width {w} missed"));
+            let [(tl, gl), (tm, gm), _] = found;
+            assert!(Direction::Falling.fires(gl, gm), "{found:?}");
+            let (te, _) = illinois(|t| f(t).0, tl, tm, gl, gm, time_tolerance(1.0));
+            assert!((te - (c - w)).abs() < 1e-12, "located {te}, root {}", c - w);
+            assert_eq!(st.hidden_found, 1);
+            assert!(st.samples <= 64, "{st:?}");
+        }
+        // A dip whose depth (1e-18) is below the guard's round-off floor (64 ulps of its
+        // values, ~5e-15) cannot be told from a tangency: the search gives up within its
+        // sample budget and counts the piece as unresolved.
+        let f = dip(0.61, 1e-9);
+        let mut st = CertifyStats::default();
+        let found = hidden_crossing(&f, point(&f, 0.0), point(&f, 1.0), 1e-15, &mut st);
+        assert!(found.is_none() && st.unresolved == 1, "{st:?}");
+        assert!(st.samples <= MAX_SAMPLES, "{st:?}");
+    }
+
+    #[test]
+    fn a_guard_that_clears_zero_is_certified_cheaply() {
+        // Dips that stay above zero: no bracket; when the margin is wide, no sample.
+        let mut st = CertifyStats::default();
+        for (c, w) in [(0.5, -0.3), (0.2, -0.05), (0.8, -0.02)] {
+            let f = move |t: f64| ((t - c) * (t - c) + w * w, 2.0 * (t - c));
+            let (a, b) = (point(&f, 0.0), point(&f, 1.0));
+            assert_eq!(hidden_crossing(f, a, b, 1e-15, &mut st), None);
+        }
+        assert!(st.samples <= 8, "{st:?}");
+        // A guard that starts a hair above zero and moves away (a slide entered from
+        // rest): certified by the end-weighted allowance, without sampling.
+        let f = |t: f64| (1e-12 + 0.045 * t * t, 0.09 * t);
+        let mut st = CertifyStats::default();
+        assert_eq!(
+            hidden_crossing(f, point(&f, 0.0), point(&f, 1.0), 1e-15, &mut st),
+            None
+        );
+        assert_eq!(st.samples, 0);
+    }
+
+    #[test]
+    fn the_cheap_test_and_the_least_value_are_sound() {
+        // Over a grid of cubic Hermite models: whenever the cheap test or the exact
+        // least value certifies, the model minus its allowance is positive at 2001
+        // points; and the least value agrees with the sampled minimum.
+        let vals = [-1.0, -0.1, 0.0, 1e-9, 0.05, 0.3, 1.0];
+        let mut certified_cases = 0;
+        for &g0 in &vals {
+            for &g1 in &vals {
+                for &d0 in &vals {
+                    for &d1 in &vals {
+                        let a = GuardPoint {
+                            t: 0.0,
+                            g: g0,
+                            rate: -3.0 * d0,
+                        };
+                        let b = GuardPoint {
+                            t: 1.0,
+                            g: g1,
+                            rate: 2.0 * d1,
+                        };
+                        let c = hermite_coefficients(&a, &b);
+                        let allow = 0.25 * c[3].abs();
+                        let sampled = (0..=2000)
+                            .map(|k| {
+                                let u = k as f64 / 2000.0;
+                                let w = u * (1.0 - u);
+                                c[0] + u * (c[1] + u * (c[2] + u * c[3])) - 16.0 * allow * w * w
+                            })
+                            .fold(f64::INFINITY, f64::min);
+                        if g0 > 0.0
+                            && g1 > 0.0
+                            && (clearly_one_sided(&a, &b) || certified(&c, 1.0, allow))
+                        {
+                            certified_cases += 1;
+                            assert!(sampled > -1e-15, "{a:?} {b:?} {sampled}");
+                        }
+                        let w = 16.0 * allow;
+                        let q = [c[0], c[1], c[2] - w, c[3] + 2.0 * w, -w];
+                        let least = least_of_quartic(&q);
+                        assert!(least <= sampled + 1e-12, "{least} > {sampled}");
+                        assert!(least >= sampled - 1e-6, "{least} << {sampled}");
+                    }
+                }
+            }
+        }
+        assert!(certified_cases > 100, "{certified_cases}");
     }
 }

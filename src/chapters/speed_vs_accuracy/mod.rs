@@ -16,6 +16,7 @@ pub mod economy;
 pub mod failures;
 pub mod figures;
 pub mod measure;
+pub mod missed_event;
 pub mod report_parts;
 pub mod stick_part;
 pub mod tables;
@@ -110,5 +111,5 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    Vec::new()
+    vec![missed_event::mutation()]
 }

@@ -12,7 +12,9 @@ use super::Context;
 use crate::error::{check, non_negative, positive, Result};
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
-use crate::physics::stick::run::{initial_state, simulate_stick, Recording, RunSummary};
+use crate::physics::stick::run::{
+    authors_code_state, initial_state, simulate_stick, Recording, RunSummary,
+};
 use crate::physics::stick::{
     authors_scene, jamming_scene, CollisionAngle, Mode, StickModel, StickParams,
 };
@@ -30,6 +32,20 @@ pub enum Scene {
     /// The authors' own scene: L = 0.15 m, m = 1 kg, k = 10 N m/rad, gamma = 0.01 N m
     /// s/rad, mu = 0.4, static angle 0.5 rad, Gamma = 10, f = 30 Hz, g = 10 m/s^2.
     Authors,
+}
+
+/// The starting state of the main run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Start {
+    /// At rest on the plate at the static angle (where the spring holds the weight),
+    /// C at x = 0, t = 0.
+    Static,
+    /// The authors' `main_rod.m` (github toshankarghosh/toothpicks), bug included: the
+    /// rod at theta_0, not at the static angle, and `setup.IC.dyp = setup.IC.yc`, which
+    /// gives P a vertical speed equal to the plate amplitude in metres (about 2.8 mm/s
+    /// in their scene); the run starts in flight, as theirs does. For diffing against
+    /// their code (use with `--scene authors`).
+    AuthorsCode,
 }
 
 /// The integrator of the contact modes (pivot and slides).
@@ -98,6 +114,15 @@ pub struct Args {
     /// [default: dop853].
     #[arg(long, value_enum, default_value_t = ContactMethod::Dop853)]
     pub method: ContactMethod,
+    /// Starting state of the main run: `static` (at rest at the static angle) or
+    /// `authors-code` (the authors' main_rod.m initial state, bug included) [default: static].
+    #[arg(long, value_enum, default_value_t = Start::Static)]
+    pub start: Start,
+    /// Write every mode switch of the main run as CSV to this file (time s, from-mode,
+    /// to-mode, theta rad, theta' rad/s, x_C m, F_x N, F_z N of the mode left), for
+    /// diffing against another simulator.
+    #[arg(long = "events", value_name = "FILE")]
+    pub events: Option<std::path::PathBuf>,
 }
 
 /// The scene's parameters with `g` (m/s^2): the flag, or the scene's own (10 for the
@@ -164,10 +189,43 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(StickParams, f64, Options)> 
 /// One run of a scene from its static equilibrium (or theta_0 if the spring cannot hold
 /// the stick up), C at x = 0 on the plate at t = 0.
 pub fn run_scene(p: &StickParams, duration_s: f64, opts: &Options, rec: Recording) -> RunSummary {
+    run_scene_from(p, Start::Static, duration_s, opts, rec)
+}
+
+/// One run of a scene from the chosen starting state.
+pub fn run_scene_from(
+    p: &StickParams,
+    start: Start,
+    duration_s: f64,
+    opts: &Options,
+    rec: Recording,
+) -> RunSummary {
     let model = StickModel::new(*p);
-    let th = p.static_angle().unwrap_or(p.theta0_rad);
-    let y0 = initial_state(&model, 0.0, th);
+    let y0 = match start {
+        Start::Static => initial_state(&model, 0.0, p.static_angle().unwrap_or(p.theta0_rad)),
+        Start::AuthorsCode => authors_code_state(&model),
+    };
     simulate_stick(&model, 0.0, y0, duration_s, opts, rec)
+}
+
+/// The CSV of `--events`: one header line, then one line per switch.
+pub fn events_csv(s: &RunSummary) -> String {
+    let mut out = String::from("t_s,from,to,theta_rad,theta_dot_rad_s,x_c_m,f_x_n,f_z_n\n");
+    for w in &s.switches {
+        let to = w.to.map_or("stop", |m| m.name());
+        out.push_str(&format!(
+            "{:.12},{},{},{:.12},{:.12},{:.12},{:.9},{:.9}\n",
+            w.t_s,
+            w.from.name(),
+            to,
+            w.theta_rad,
+            w.omega_rad_s,
+            w.x_c_m,
+            w.fx_n,
+            w.fz_n
+        ));
+    }
+    out
 }
 
 /// The `event_counts` object: transitions `from_to_to` that occurred, plus `jams`.
@@ -233,7 +291,23 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
         trace_dt_s: 0.0,
         check_invariants: true,
     };
-    let main = run_scene(&p, dur, &opts, rec);
+    r.param(
+        "start",
+        if args.start == Start::Static {
+            "static"
+        } else {
+            "authors-code"
+        },
+    );
+    let main = run_scene_from(&p, args.start, dur, &opts, rec);
+    if let Some(path) = &args.events {
+        std::fs::write(path, events_csv(&main)).map_err(|e| {
+            crate::error::WorkbookError::Io(format!(
+                "--events {}: cannot write the file: {e}",
+                path.display()
+            ))
+        })?;
+    }
     let reason = match &main.outcome {
         crate::physics::stick::run::StickOutcome::Invalid(why) => why.clone(),
         _ => String::new(),

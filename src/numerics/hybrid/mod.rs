@@ -17,7 +17,7 @@
 //!   `zeno.window_s`, the run ends with [`Outcome::Zeno`] instead of hanging.
 //! - Guards that start a mode at exactly zero do not fire (see [`Direction::fires`]).
 
-use super::events::{illinois, time_tolerance, Direction};
+use super::events::{illinois, time_tolerance, CertifyStats, Direction};
 use super::ode::{Integrator, Method, OdeError, OdeSystem, Stats, StepControl};
 use std::collections::VecDeque;
 use std::fmt::Debug;
@@ -132,8 +132,14 @@ pub struct Options {
     /// Event-time tolerance (s); `None`: a few ulps of t.
     pub event_tol_s: Option<f64>,
     /// Extra interior points per step at which guards are checked for sign changes
-    /// (0: ends only). Catches a guard that crosses twice inside one long step.
+    /// (0: ends only). Catches a guard that crosses twice inside one long step only
+    /// when a point happens to fall inside the excursion; see `certify`.
     pub interior_checks: usize,
+    /// Certified event detection in integrated modes: a guard with the same sign at
+    /// both ends of a step is searched for a hidden pair of crossings from its values
+    /// and rates ([`crate::numerics::events::hidden_crossing`]). Off: the sign test at
+    /// the ends (and `interior_checks`) only, which misses a short excursion.
+    pub certify: bool,
     /// The Zeno guard.
     pub zeno: ZenoGuard,
     /// Keep a record of every event (counts are kept regardless).
@@ -150,6 +156,7 @@ impl Default for Options {
             locate_events: true,
             event_tol_s: None,
             interior_checks: 0,
+            certify: true,
             zeno: ZenoGuard {
                 max_events: 100,
                 window_s: 1e-6,
@@ -211,6 +218,8 @@ pub struct Run<M, X, const N: usize> {
     pub stats: Stats,
     /// Guard evaluations spent locating events.
     pub locate_evals: u64,
+    /// Work of the certified search (zero when `Options::certify` is off).
+    pub certify: CertifyStats,
     /// Time spent in each mode (s), in order of first visit.
     pub mode_time_s: Vec<(M, f64)>,
 }
@@ -288,8 +297,11 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         event_count: 0,
         stats: Stats::default(),
         locate_evals: 0,
+        certify: CertifyStats::default(),
         mode_time_s: Vec::new(),
     };
+    // Guard rates at the start and end of the current step (certified search only).
+    let mut rates = certify::Rates::new(opts.certify);
     let mut recent: VecDeque<f64> = VecDeque::with_capacity(opts.zeno.max_events + 1);
     // Guard values at the start and end of the current step; buffers reused, so the
     // stepping loop does not allocate.
@@ -363,6 +375,9 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         // Find the earliest crossing among the guards.
         let mut best: Option<(usize, f64)> = None;
         sys.guards(mode, t1, &y1, &mut guards1);
+        if let Some(st) = &step {
+            rates.update(sys, mode, st, &guards0, &guards1);
+        }
         for i in 0..guards0.len() {
             let dir = sys.direction(mode, i);
             let mut ta = ts;
@@ -391,6 +406,20 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                 }
                 ta = tb;
                 ga = gb;
+            }
+            if bracket.is_none() && rates.suspect(i) && step.is_some() {
+                bracket = rates
+                    .hidden(
+                        sys,
+                        mode,
+                        i,
+                        dir,
+                        &eval,
+                        (ts, guards0[i]),
+                        (t1, guards1[i]),
+                        &mut run.certify,
+                    )
+                    .filter(|&(a, ..)| a < t_stop);
             }
             if let Some((a, b, ga, gb)) = bracket {
                 let te = if opts.locate_events {
@@ -458,6 +487,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                 }
                 integ.restart();
                 fresh_mode = true;
+                rates.forget();
                 recent.push_back(te);
                 while recent.len() > opts.zeno.max_events {
                     recent.pop_front();
@@ -474,6 +504,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                 t = t1;
                 y = y1;
                 std::mem::swap(&mut guards0, &mut guards1);
+                rates.advance();
             }
         }
         // On a breakpoint (reached by a step, or by an event located exactly on it,
@@ -497,6 +528,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                     y = state;
                     // Guards may jump at a breakpoint: re-evaluate them.
                     fresh_mode = true;
+                    rates.forget();
                 }
                 Transition::Stop(x) => break 'outer Outcome::Stopped(x),
             }
@@ -518,5 +550,6 @@ fn add_time<M: PartialEq + Copy>(acc: &mut Vec<(M, f64)>, mode: M, dt: f64) {
     }
 }
 
+mod certify;
 #[cfg(test)]
 mod tests;

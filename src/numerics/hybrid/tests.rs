@@ -367,3 +367,66 @@ fn an_event_located_on_a_breakpoint_is_followed_by_the_breakpoint() {
     assert_eq!(run.mode_end, -1);
     assert!((run.y_end[0] + 0.5).abs() < 1e-14, "{}", run.y_end[0]);
 }
+
+/// A point moving at unit speed, y = t, with one guard `(y - c)^2 - w^2` (falling) that
+/// dips below zero on `(c - w, c + w)` and is positive at both ends of any step that
+/// spans the dip. Max step 0.25 s: the dip lies inside one step.
+struct Dip {
+    c: f64,
+    w: f64,
+}
+
+impl HybridSystem<1> for Dip {
+    type Mode = u8;
+    type Stop = f64;
+    fn flow(&self, _m: u8, _t: f64, _y: &[f64; 1]) -> [f64; 1] {
+        [1.0]
+    }
+    fn guard_count(&self, _m: u8) -> usize {
+        1
+    }
+    fn guard(&self, _m: u8, _i: usize, _t: f64, y: &[f64; 1]) -> f64 {
+        (y[0] - self.c) * (y[0] - self.c) - self.w * self.w
+    }
+    fn direction(&self, _m: u8, _i: usize) -> Direction {
+        Direction::Falling
+    }
+    fn on_event(&self, _m: u8, _i: usize, t: f64, _y: &[f64; 1]) -> Transition<u8, f64, 1> {
+        Transition::Stop(t)
+    }
+    fn max_step(&self, _m: u8, _t: f64, _y: &[f64; 1]) -> f64 {
+        0.25
+    }
+}
+
+#[test]
+fn a_short_excursion_inside_one_step_is_found_only_by_the_certified_search() {
+    // The end-point test sees the guard positive at both ends of the step that holds
+    // the dip and runs on; the certified search stops at the first root, c - w.
+    for method in [Method::Dop853, Method::Dopri5, Method::Rk4] {
+        for (c, w) in [(0.6, 0.01), (0.37, 1e-4)] {
+            let sys = Dip { c, w };
+            let run_with = |certify: bool| {
+                let opts = Options {
+                    method,
+                    control: if method == Method::Rk4 {
+                        StepControl::Fixed { h_s: 0.25 }
+                    } else {
+                        StepControl::tol(1e-10, 1e-10)
+                    },
+                    certify,
+                    ..Options::default()
+                };
+                simulate(&sys, 0u8, 0.0, [0.0], 1.0, &opts, &mut ())
+            };
+            let blind = run_with(false);
+            assert_eq!(blind.outcome, Outcome::Completed, "{method:?} {c}");
+            let run = run_with(true);
+            match run.outcome {
+                Outcome::Stopped(t) => assert!((t - (c - w)).abs() < 1e-12, "{t}"),
+                other => panic!("{method:?} dip at {c}: {other:?}"),
+            }
+            assert_eq!(run.certify.hidden_found, 1);
+        }
+    }
+}

@@ -200,6 +200,8 @@ impl<const N: usize> Integrator<N> {
                 t1: 0.0,
                 y0: [0.0; N],
                 y1: [0.0; N],
+                f0: [0.0; N],
+                f1: None,
                 interp: Interp::Linear,
             },
         }
@@ -231,6 +233,7 @@ impl<const N: usize> Integrator<N> {
         t_max: f64,
     ) -> Result<&Step<N>, OdeError> {
         let f0 = self.deriv(sys, t, y);
+        self.last.f0 = f0;
         if !finite(&f0) || !finite(y) {
             return Err(OdeError::NonFinite { t_s: t });
         }
@@ -269,6 +272,7 @@ impl<const N: usize> Integrator<N> {
                     Method::Euler => {
                         let y1 = comb(y, h, &[(1.0, &f0)]); // formula: y1 = y0 + h f(t0, y0)
                         self.keep(t, y, t1, y1, Some(Interp::Linear));
+                        self.last.f1 = None;
                     }
                     Method::Rk4 => {
                         let m = S::ARGS;
@@ -375,6 +379,7 @@ impl<const N: usize> Integrator<N> {
     ) {
         self.fsal = Some((t1, y1, f1));
         self.keep(t, y, t1, y1, interp);
+        self.last.f1 = Some(f1);
     }
 
     /// Makes `(t, y) -> (t1, y1)` the kept step, with its interpolant (`None`: the one

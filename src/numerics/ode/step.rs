@@ -29,6 +29,11 @@ pub struct Step<const N: usize> {
     pub y0: [f64; N],
     /// State at `t1`.
     pub y1: [f64; N],
+    /// The derivative `f(t0, y0)`.
+    pub f0: [f64; N],
+    /// The derivative `f(t1, y1)` when the method computed it (every method but Euler:
+    /// it is the next step's first stage).
+    pub f1: Option<[f64; N]>,
     pub(super) interp: Interp<N>,
 }
 

@@ -1,7 +1,8 @@
 //! One run of the stick through the hybrid driver, and its summary.
 
 use super::energy::Budget;
-use super::{Mode, State, StickModel, StickStop, NSTATE, TH, VXC, W_PLATE, XC};
+use super::{Mode, State, StickModel, StickStop, NSTATE, OM, TH, VXC, VZC, W_PLATE, XC, ZC};
+use crate::numerics::events::CertifyStats;
 use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment};
 use crate::numerics::ode::Stats;
 
@@ -118,6 +119,8 @@ pub struct RunSummary {
     pub stats: Stats,
     /// Guard evaluations spent locating events.
     pub locate_evals: u64,
+    /// Work of the certified event search (hidden crossings found among it).
+    pub certify: CertifyStats,
     /// Drive cycles simulated.
     pub cycles: f64,
     /// Phase sequence (letters F, P, L, R), capped.
@@ -128,6 +131,9 @@ pub struct RunSummary {
     pub trace: Vec<Sample>,
     /// Events: (time s, from, to) with `to = None` for the stop.
     pub events: Vec<(f64, Mode, Option<Mode>)>,
+    /// The same events with the state and contact force at each switch (recorded with
+    /// the phase sequence, capped at its length): what `--events FILE` writes.
+    pub switches: Vec<Switch>,
     /// Landings (when recording a sequence).
     pub landings: Vec<Landing>,
     /// Final state.
@@ -143,6 +149,46 @@ impl RunSummary {
         self.mode_time_s
             .map(|x| if total > 0.0 { x / total } else { 0.0 })
     }
+}
+
+/// One mode switch: the state just before it and the contact force of the mode being
+/// left (zero for flight).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Switch {
+    /// Time (s).
+    pub t_s: f64,
+    /// Mode left.
+    pub from: Mode,
+    /// Mode entered (`None`: the run stopped).
+    pub to: Option<Mode>,
+    /// theta just before the switch (rad).
+    pub theta_rad: f64,
+    /// theta' just before the switch (rad/s).
+    pub omega_rad_s: f64,
+    /// x of C (m).
+    pub x_c_m: f64,
+    /// Horizontal force of the plate on C in the mode left (N).
+    pub fx_n: f64,
+    /// Normal force of the plate on C in the mode left (N).
+    pub fz_n: f64,
+}
+
+/// The starting state of the authors' `main_rod.m`, bug included: the rod at its
+/// spring's rest angle `theta_0` (not at the static angle), `theta' = 0`, C on the
+/// plate at `x = 0`, and P (so C, with `theta' = 0`) moving up at
+/// `setup.IC.dyp = setup.IC.yc = delta cos(0)`: a position (m) assigned to a velocity,
+/// about 2.8 mm/s in their scene. With the plate accelerating downwards at `Gamma g`
+/// at `t = 0` no contact mode is consistent there, and their `selectPhase` starts in
+/// flight; so does the workbook from this state.
+pub fn authors_code_state(model: &StickModel) -> State {
+    let p = &model.p;
+    let mut y = initial_state(model, 0.0, p.theta0_rad);
+    let (z_s, _, _) = model.plate(0.0);
+    y[ZC] = z_s; // formula: setup.IC.yc = A cos(omega 0)
+    y[VZC] = z_s; // formula: setup.IC.dyp = setup.IC.yc (the bug: metres as m/s)
+    y[VXC] = 0.0;
+    y[OM] = 0.0;
+    y
 }
 
 /// Start state: C at x = 0 on the plate at time `t0`, standing still at `theta` with
@@ -235,6 +281,20 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
         let to = after.map(|(m, _)| m);
         if self.rec.sequence_cap > 0 {
             self.sum.events.push((t, from, to));
+            if self.sum.switches.len() < self.rec.sequence_cap {
+                let y = self.model.canonical(from, t, _before);
+                let f = self.model.contact_eval(from, t, &y);
+                self.sum.switches.push(Switch {
+                    t_s: t,
+                    from,
+                    to,
+                    theta_rad: y[TH],
+                    omega_rad_s: y[OM],
+                    x_c_m: y[XC],
+                    fx_n: f.map_or(0.0, |e| e.fx),
+                    fz_n: f.map_or(0.0, |e| e.fz),
+                });
+            }
         }
         if let Some((m, y)) = after {
             for k in 0..4 {
@@ -305,11 +365,13 @@ pub fn simulate_stick(
             budget: Budget::default(),
             stats: Stats::default(),
             locate_evals: 0,
+            certify: CertifyStats::default(),
             cycles: 0.0,
             sequence: String::new(),
             violations: Violations::default(),
             trace: Vec::new(),
             events: Vec::new(),
+            switches: Vec::new(),
             landings: Vec::new(),
             y_end: y0,
             mode_end: Mode::Pivot,
@@ -360,6 +422,7 @@ pub fn simulate_stick(
     s.budget = model.budget(&y0, &y_end);
     s.stats = run.stats;
     s.locate_evals = run.locate_evals;
+    s.certify = run.certify;
     s.cycles = dur / model.period_s;
     s.y_end = y_end;
     s.mode_end = run.mode_end;
