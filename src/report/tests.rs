@@ -62,3 +62,27 @@ fn numbers_format_stably() {
     assert_eq!(fmt_num(1234.5678), "1235");
     assert_eq!(fmt_num(1.23456), "1.235");
 }
+
+#[test]
+fn consistency_checks_are_counted_apart_from_confirmations() {
+    let mut r = ChapterReport::new("x", "T", "1");
+    r.claim(Claim::exact("a", "1", "s", 1, 1).with_check(Check::ClosedForm));
+    r.claim(Claim::exact("b", "1", "s", 1, 1)); // kind never stated: consistency
+    r.claim(
+        Claim::judged("c", "1", "s", 1.0, 1.0, 0.1, true, Verdict::Erratum)
+            .with_check(Check::Simulation),
+    );
+    assert_eq!(r.confirmed(), 1);
+    assert_eq!(r.consistency_checks(), 1);
+    assert_eq!(
+        r.summary(),
+        "3 claims: 1 confirmed (+1 consistency checks), 1 erratum, 0 approximation, 0 failed; by check: closed_form 1, simulation 1, consistency 1"
+    );
+    let table = summary_table(std::slice::from_ref(&r));
+    let all = table.lines().find(|l| l.starts_with("all ")).unwrap();
+    let cols: Vec<&str> = all.split_whitespace().collect();
+    assert_eq!(cols, ["all", "3", "1", "1", "1", "0", "0"]);
+    let f = findings_markdown(std::slice::from_ref(&r));
+    assert!(f.starts_with("`workbook all` checks 3 claims: 1 confirmed (+1 consistency checks"));
+    assert!(f.contains("`x` / `c` (section 1, simulation)"));
+}
