@@ -210,30 +210,7 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
         let arr: Vec<serde_json::Value> = reports.iter().map(ChapterReport::to_json).collect();
         writeln!(out, "{}", serde_json::Value::Array(arr))?;
     } else {
-        writeln!(out, "== summary of verdicts ==")?;
-        writeln!(
-            out,
-            "{:<22} {:>6} {:>9} {:>7} {:>13} {:>6}",
-            "chapter", "claims", "confirmed", "erratum", "approximation", "failed"
-        )?;
-        for r in &reports {
-            use crate::report::Verdict::*;
-            writeln!(
-                out,
-                "{:<22} {:>6} {:>9} {:>7} {:>13} {:>6}{}",
-                r.chapter,
-                r.claims.len(),
-                r.count(Confirmed),
-                r.count(Erratum),
-                r.count(Approximation),
-                r.count(Failed),
-                if r.status.is_some() {
-                    "  (not built yet)"
-                } else {
-                    ""
-                }
-            )?;
-        }
+        write!(out, "{}", crate::report::summary_table(&reports))?;
     }
     Ok(i32::from(reports.iter().any(ChapterReport::has_failures)))
 }

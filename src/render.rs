@@ -79,35 +79,55 @@ pub fn table_of(report: &ChapterReport, name: &str) -> Option<String> {
     }
 }
 
-/// Refreshes (or with `check`, verifies) every chapter text in `dir`. Returns the exit
-/// code: 0 when up to date (or refreshed), 1 when `check` found a stale table.
+/// Refreshes (or with `check`, verifies) every chapter text in `dir`, and the block
+/// `findings` of the README beside it (`dir/../README.md`, generated from the claims of
+/// every chapter by [`crate::report::findings_markdown`]). Returns the exit code: 0 when
+/// up to date (or refreshed), 1 when `check` found a stale table.
 pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
     let ctx = Context::headless(false);
     let mut stale = 0;
+    let mut reports = Vec::new();
     for info in CHAPTERS.iter() {
-        let path = dir.join(info.markdown_path().file_name().expect("file name"));
-        let Ok(text) = std::fs::read_to_string(&path) else {
-            continue;
-        };
-        if block_names(&text).is_empty() {
-            continue;
-        }
         let report = chapters::run_default(info.id, &ctx)?;
-        let new = fill_blocks(&text, &|n| table_of(&report, n))
-            .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
-        if new != text {
-            if check {
-                stale += 1;
-                writeln!(out, "stale: {} (run `workbook render`)", path.display())?;
-            } else {
-                std::fs::write(&path, &new)?;
-                writeln!(out, "updated: {}", path.display())?;
+        let path = dir.join(info.markdown_path().file_name().expect("file name"));
+        if let Ok(text) = std::fs::read_to_string(&path) {
+            if !block_names(&text).is_empty() {
+                let new = fill_blocks(&text, &|n| table_of(&report, n))
+                    .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
+                stale += refresh(&path, &text, &new, check, out)?;
             }
-        } else {
-            writeln!(out, "up to date: {}", path.display())?;
+        }
+        reports.push(report);
+    }
+    let readme = dir
+        .parent()
+        .unwrap_or_else(|| Path::new(""))
+        .join("README.md");
+    if let Ok(text) = std::fs::read_to_string(&readme) {
+        if !block_names(&text).is_empty() {
+            let findings = crate::report::findings_markdown(&reports);
+            let new = fill_blocks(&text, &|n| (n == "findings").then(|| findings.clone()))
+                .map_err(|e| WorkbookError::Io(format!("{}: {e}", readme.display())))?;
+            stale += refresh(&readme, &text, &new, check, out)?;
         }
     }
     Ok(i32::from(stale > 0))
+}
+
+/// Writes `new` to `path` (or with `check` reports it stale) when it differs from
+/// `text`; returns 1 when stale under `check`, else 0.
+fn refresh(path: &Path, text: &str, new: &str, check: bool, out: &mut dyn Write) -> Result<i32> {
+    if new == text {
+        writeln!(out, "up to date: {}", path.display())?;
+        return Ok(0);
+    }
+    if check {
+        writeln!(out, "stale: {} (run `workbook render`)", path.display())?;
+        return Ok(1);
+    }
+    std::fs::write(path, new)?;
+    writeln!(out, "updated: {}", path.display())?;
+    Ok(0)
 }
 
 #[cfg(test)]

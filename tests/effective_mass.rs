@@ -47,7 +47,8 @@ fn default_scene_reproduces_the_documents_45_degree_example() {
             "m_parallel_over_m",
             "m_perp_over_m",
             "best_angle_uniform_rod_deg",
-            "self_locking"
+            "self_locking",
+            "rod_jams_under_vertical_impulse"
         ]
     );
     // Closed forms at q = tan 45 deg = 1: q = 1, 3q/(4+q^2) = 3/5; diag(m, m/4); atan 2.
@@ -63,6 +64,23 @@ fn default_scene_reproduces_the_documents_45_degree_example() {
     for c in r["claims"].as_array().unwrap() {
         assert_ne!(c["verdict"], "failed", "{c}");
     }
+}
+
+#[test]
+fn at_25_degrees_the_rod_jams_where_the_documents_bound_says_no() {
+    // tan 25 deg = 0.466 > mu = 0.4, but the rod's 3q/(4+q^2) = 0.332 <= 0.4: both
+    // criteria are results, and chapter 2 sends the student here to see the rod jam.
+    let r = report(&["--angle-deg", "25"]);
+    assert_eq!(r["results"]["self_locking"], Value::Bool(false));
+    assert_eq!(
+        r["results"]["rod_jams_under_vertical_impulse"],
+        Value::Bool(true)
+    );
+    let r = report(&["--angle-deg", "45"]);
+    assert_eq!(
+        r["results"]["rod_jams_under_vertical_impulse"],
+        Value::Bool(false)
+    );
 }
 
 #[test]
@@ -150,7 +168,8 @@ fn golden_section_and_rod_locking_angles_match_closed_forms() {
 
 #[test]
 fn large_mu_and_the_summary_snapshot() {
-    // mu >= 3/4 exceeds the rod's largest ratio: the approximation claim says so.
+    // mu >= 3/4 exceeds the rod's largest ratio: the claim says the rod jams at every
+    // angle, and the document's sufficient bound holds.
     let r = report(&["--mu", "0.8"]);
     let c = r["claims"]
         .as_array()
@@ -158,8 +177,8 @@ fn large_mu_and_the_summary_snapshot() {
         .iter()
         .find(|c| c["id"] == "self-locking-bound")
         .unwrap();
-    assert_eq!(c["verdict"], "approximation");
-    assert!(c["expected"].as_str().unwrap().contains("every angle"));
+    assert_eq!(c["verdict"], "confirmed");
+    assert!(c["statement"].as_str().unwrap().contains("every angle"));
     let r = report(&[]);
     let mut lines = common::verdict_lines(&r, " ");
     for (k, v) in r["results"].as_object().unwrap() {

@@ -11,7 +11,7 @@ use crate::physics::locomotion::{
     classify, hull, in_exact_range, is_locomotion, reason, Hull, Position, V2,
 };
 use crate::plot::{color, font, save_drawing, Drawing, GRID, LABEL_PX, TICK_PX, TITLE_PX};
-use crate::report::{ChapterReport, Claim};
+use crate::report::{ChapterReport, Check, Claim, Mutation};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -75,6 +75,107 @@ fn sailing_cases() -> Vec<Case> {
     ]
 }
 
+/// The document's definition, as data: which velocities count as locomotion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Rule {
+    /// As printed: the average velocity strictly outside the convex hull of the media
+    /// velocities (on the boundary is not locomotion).
+    OutsideHull,
+    /// A wrong variant: the hull's boundary counts as locomotion too.
+    OutsideOrOnHull,
+    /// A wrong variant: faster than every medium (speed above the largest medium speed).
+    FasterThanMedia,
+}
+
+impl Rule {
+    /// Whether `object` is locomotion among `media` under this rule.
+    pub fn is_locomotion(self, object: V2, media: &[V2]) -> bool {
+        match self {
+            Rule::OutsideHull => is_locomotion(object, media),
+            Rule::OutsideOrOnHull => classify(&hull(media), object) != Position::Interior,
+            Rule::FasterThanMedia => {
+                let speed = |v: V2| v[0].hypot(v[1]);
+                media.iter().all(|&m| speed(object) > speed(m))
+            }
+        }
+    }
+}
+
+/// The document's statements of section 1, as data, so that a falsification test can
+/// feed the checks a wrong variant.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Doc {
+    /// The definition of locomotion.
+    pub rule: Rule,
+    /// The verdict the document gives each sailing case (by case id), `true` =
+    /// locomotion; a case not listed keeps its printed verdict.
+    pub flipped: Vec<&'static str>,
+    /// Upper end of s in "v = s v1 + (1 - s) v2 with 0 <= s <= 1 is inside the hull".
+    pub s_max: f64,
+}
+
+impl Doc {
+    /// The document as printed.
+    pub const PRINTED: Doc = Doc {
+        rule: Rule::OutsideHull,
+        flipped: Vec::new(),
+        s_max: 1.0,
+    };
+}
+
+/// The chapter's claims under the document's statements `doc`. Each sailing case runs
+/// the document's own definition on the document's own example
+/// ([`Check::LiteralExecution`]).
+pub fn claims(doc: &Doc) -> Vec<Claim> {
+    let mut out = Vec::new();
+    for c in &sailing_cases() {
+        let said = c.expected != doc.flipped.contains(&c.id);
+        out.push(
+            Claim::exact(
+                c.id,
+                "1, sailing as locomotion",
+                c.statement,
+                said,
+                doc.rule.is_locomotion(c.object, &c.media),
+            )
+            .with_check(Check::LiteralExecution),
+        );
+    }
+    // v = s v1 + (1 - s) v2 for s = k/64 up to s_max: dyadic s keeps v exact.
+    let n = 64;
+    let k_max = (doc.s_max * n as f64).round() as u64;
+    let inside = (0..=k_max)
+        .filter(|&k| {
+            let s = k as f64 / n as f64;
+            let v = [
+                s * WIND[0] + (1.0 - s) * WATER[0],
+                s * WIND[1] + (1.0 - s) * WATER[1],
+            ];
+            !doc.rule.is_locomotion(v, &[WIND, WATER])
+        })
+        .count() as u64;
+    out.push(Claim::exact("convex-combination", "1, sailing as locomotion", "Every v = s v1 + (1 - s) v2 with 0 <= s <= 1 is in the hull (not locomotion): count of the values s = k/64 classified as not locomotion, out of 65.", k_max + 1, inside).with_check(Check::LiteralExecution));
+    let tri = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]];
+    let three = [
+        ([1.0, 1.0], false),
+        ([2.0, 2.0], false),
+        ([2.0, 2.0 + 2f64.powi(-50)], true),
+    ];
+    let ok = three
+        .iter()
+        .all(|&(v, loco)| doc.rule.is_locomotion(v, &tri) == loco);
+    out.push(Claim::exact("three-media", "1, multiple media", "With three media (a triangle of velocities) a velocity inside or on an edge is not locomotion, one 2^-50 m/s beyond the edge is (interior, boundary, outside found exactly).", true, ok).with_check(Check::LiteralExecution));
+    out
+}
+
+/// One claim of [`claims`] under `doc`, by id.
+fn claim_of(doc: &Doc, id: &str) -> Claim {
+    claims(doc)
+        .into_iter()
+        .find(|c| c.id == id)
+        .expect("claim id of this chapter")
+}
+
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     let object = validate("--object-velocity", args.object_velocity)?;
@@ -91,40 +192,9 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     );
 
     let cases = sailing_cases();
-    for c in &cases {
-        r.claim(Claim::exact(
-            c.id,
-            "1, sailing as locomotion",
-            c.statement,
-            c.expected,
-            is_locomotion(c.object, &c.media),
-        ));
+    for claim in claims(&Doc::PRINTED) {
+        r.claim(claim);
     }
-    // v = s v1 + (1 - s) v2, 0 <= s <= 1, is inside the hull: dyadic s keeps v exact.
-    let n = 64;
-    let inside = (0..=n)
-        .filter(|&k| {
-            let s = k as f64 / n as f64;
-            let v = [
-                s * WIND[0] + (1.0 - s) * WATER[0],
-                s * WIND[1] + (1.0 - s) * WATER[1],
-            ];
-            !is_locomotion(v, &[WIND, WATER])
-        })
-        .count();
-    r.claim(Claim::exact("convex-combination", "1, sailing as locomotion", "Every v = s v1 + (1 - s) v2 with 0 <= s <= 1 is in the hull (not locomotion): count of 65 values s = k/64 classified as not locomotion.", n as u64 + 1, inside as u64));
-    let tri = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]];
-    let three = [
-        (classify(&hull(&tri), [1.0, 1.0]), Position::Interior),
-        (classify(&hull(&tri), [2.0, 2.0]), Position::Boundary),
-        (
-            classify(&hull(&tri), [2.0, 2.0 + 2f64.powi(-50)]),
-            Position::Outside,
-        ),
-    ];
-    let ok = three.iter().all(|(a, b)| a == b);
-    r.claim(Claim::exact("three-media", "1, multiple media", "With three media (a triangle of velocities) a velocity inside or on an edge is not locomotion, one 2^-50 m/s beyond the edge is (interior, boundary, outside found exactly).", true, ok));
-
     r.result("is_locomotion", is_locomotion(object, &media));
     r.result("reason", reason(object, &media));
 
@@ -316,7 +386,71 @@ fn draw_panel<DB: DrawingBackend>(
     Ok(())
 }
 
-/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
-pub fn mutations() -> Vec<crate::report::Mutation> {
-    Vec::new()
+/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]):
+/// every sailing verdict reversed, and the definition replaced by two wrong variants.
+pub fn mutations() -> Vec<Mutation> {
+    let mut m: Vec<Mutation> = sailing_cases()
+        .into_iter()
+        .map(|c| {
+            let id = c.id;
+            Mutation::new(
+                id,
+                "the document's verdict on this case reversed",
+                move || {
+                    claim_of(
+                        &Doc {
+                            flipped: vec![id],
+                            ..Doc::PRINTED
+                        },
+                        id,
+                    )
+                },
+            )
+        })
+        .collect();
+    let with_rule = |id: &'static str, rule: Rule, what: &'static str| {
+        Mutation::new(id, what, move || {
+            claim_of(
+                &Doc {
+                    rule,
+                    ..Doc::PRINTED
+                },
+                id,
+            )
+        })
+    };
+    m.push(with_rule(
+        "downwind-at-wind-speed",
+        Rule::OutsideOrOnHull,
+        "the hull's boundary counts as locomotion",
+    ));
+    m.push(with_rule(
+        "reaching",
+        Rule::FasterThanMedia,
+        "locomotion = faster than every medium",
+    ));
+    m.push(with_rule(
+        "three-media",
+        Rule::OutsideOrOnHull,
+        "the hull's boundary counts as locomotion",
+    ));
+    m.push(with_rule(
+        "convex-combination",
+        Rule::OutsideOrOnHull,
+        "the hull's boundary counts as locomotion",
+    ));
+    m.push(Mutation::new(
+        "convex-combination",
+        "0 <= s <= 1 -> 0 <= s <= 1.1",
+        || {
+            claim_of(
+                &Doc {
+                    s_max: 1.1,
+                    ..Doc::PRINTED
+                },
+                "convex-combination",
+            )
+        },
+    ));
+    m
 }

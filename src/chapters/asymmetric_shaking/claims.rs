@@ -1,6 +1,7 @@
 //! The checks of the chapter: every claim of section 3.2 against the closed forms of
 //! `physics::sawtooth` and the event-driven simulation of `physics::block`.
 
+use super::doc::Doc;
 use super::sims::{drift, run_block, DriftRun, Law, Numerics, Window};
 use super::Scene;
 use crate::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion, Sawtooth};
@@ -8,7 +9,7 @@ use crate::physics::sawtooth::biharmonic::{always_slipping_drift, stick_forever_
 use crate::physics::sawtooth::{
     drift_velocity_mps, lock_time_s, slipping_impulse_per_mass, steady_regime, Mirrored, Regime,
 };
-use crate::report::{fmt_num, is_close, ChapterReport, Claim, Verdict};
+use crate::report::{fmt_num, is_close, ChapterReport, Check, Claim, Verdict};
 use std::f64::consts::TAU;
 
 /// Closed forms and event-located switches in closed form: the simulated drift and
@@ -92,7 +93,14 @@ pub fn biharmonic(v: f64, gamma: f64, eps: f64, k: f64) -> Biharmonic {
 }
 
 /// Runs every check, records claims, results and tables; returns what the figures need.
-pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -> Traces {
+pub fn check_all(
+    sc: &Scene,
+    quick: bool,
+    traces: bool,
+    r: &mut ChapterReport,
+    doc: &Doc,
+) -> Traces {
+    let sim = Check::Simulation;
     let saw = sc.saw;
     let (a, b) = (saw.slow_velocity_mps, saw.fast_velocity_mps);
     let (ts, period) = (saw.slow_duration_s, saw.period_s());
@@ -130,6 +138,17 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
     let v_sim = main.mean_velocity_mps;
     let v_formula = drift_velocity_mps(&saw, k);
     let regime = steady_regime(&saw, k);
+    let drift_doc = if regime != Regime::StickBoth {
+        let (tf, t) = (saw.fast_duration_s(), saw.period_s());
+        a - doc.drift_factor * k * tf * tf / t // formula: v_d = v_slow - mu g t_fast^2/T
+    } else {
+        0.0
+    };
+    let regime_doc = match (regime, doc.regime_reversed) {
+        (r, false) => r,
+        (Regime::StickBoth, true) => Regime::StickSlow,
+        (_, true) => Regime::StickBoth,
+    };
     let regime_sim = if main.stuck_in_backward_stroke {
         Regime::StickBoth
     } else {
@@ -228,10 +247,10 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
         "linear-no-drift",
         "3.2.1",
         &format!("With linear friction F = -c v_rel the mean velocity of the block equals the plate's (zero) whatever the asymmetry of the shaking. Largest |mean velocity| over {} drives (sawtooth, its mirror, bi-harmonic eps = 0 and 0.3, sine), DP5 after the transient.", lin.len()),
-        0.0,
+        doc.linear_drift_fraction * 0.5 * (a + b),
         lin_worst,
         tol_lin,
-    ));
+    ).with_check(sim));
     // The identity <v> = <v_p> - (v(t1) - v(t0)) / (c (t1 - t0)) inside the transient.
     let early = run_block(
         visc,
@@ -252,53 +271,63 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
         "linear-average-force",
         "3.2.1",
         "0 = F_ave = -c (v_obj_ave - v_sup_ave): over any window the mean friction force is -c times the mean relative velocity, so <v> = <v_p> - (v(t1) - v(t0))/(c (t1 - t0)); checked over the first two periods from rest (still in the transient).",
-        identity,
+        identity / doc.linear_force_factor,
         early.mean_velocity_mps,
         tol_lin,
-    ));
+    ).with_check(sim));
     r.claim(Claim::judged(
         "nonlinear-law-changes-result",
         "3.2.1",
         "A non-linear friction law changes this result: with Coulomb friction on the same sawtooth the block drifts (default scene).",
-        "nonzero drift",
+        if doc.nonlinear_changes { "nonzero drift" } else { "zero drift" },
         v_dir,
         tol_v,
-        v_dir.abs() > 1e3 * tol_v,
+        (v_dir.abs() > 1e3 * tol_v) == doc.nonlinear_changes,
         Verdict::Confirmed,
-    ));
+    ).with_check(sim));
 
     // --- Closed form against simulation ----------------------------------------------
     r.claim(Claim::close(
         "drift-closed-form",
         "3.2.2",
         &format!("Steady drift of the Coulomb block: v_d = v_slow - mu g t_fast^2 / T if mu g t_fast < v_slow + v_fast, else 0 (workbook's closed form; regime {}), against the event-driven simulation over {measured} periods after the first stick.", regime.label()),
-        v_formula,
+        drift_doc,
         v_sim,
         tol_v,
-    ));
-    r.claim(Claim::exact("drift-regime", "3.2.2", "Steady regime from the closed form (mu g t_fast >= v_slow + v_fast: stick in both strokes) equals the simulated one (does the block stick while the plate moves back?).", regime.label(), regime_sim.label()));
+    ).with_check(sim));
+    r.claim(Claim::exact("drift-regime", "3.2.2", "Steady regime from the closed form (mu g t_fast >= v_slow + v_fast: stick in both strokes) equals the simulated one (does the block stick while the plate moves back?).", regime_doc.label(), regime_sim.label()).with_check(sim));
     r.claim(Claim::close(
         "lock-time",
         "3.2.2",
         "A block started at rest slips until it first reaches the slow speed: t* = n T + (v_slow - v_n)/(mu g), v_n = n mu g (t_slow - t_fast) (workbook's closed form), against the first stick of the simulation.",
-        lock_time_s(&saw, k, 0.0),
+        doc.lock_factor * lock_time_s(&saw, k, 0.0),
         main.first_stick_s.unwrap_or(f64::NAN),
         tol_t,
-    ));
-    r.claim(Claim::close(
-        "mirror-reverses",
-        "3.2.2",
-        "Mirroring the drive (slow stroke towards -x) reverses the drift: v_d(mirror) = -v_d.",
-        -v_sim,
-        mirrored,
-        tol_v,
-    ));
+    ).with_check(sim));
+    r.claim(
+        Claim::close(
+            "mirror-reverses",
+            "3.2.2",
+            "Mirroring the drive (slow stroke towards -x) reverses the drift: v_d(mirror) = -v_d.",
+            doc.mirror_sign * v_sim,
+            mirrored,
+            tol_v,
+        )
+        .with_check(sim),
+    );
 
     // --- The document's paragraph -----------------------------------------------------
     // Printed reading: left stroke fast and short (v_l > v_r, t_r > t_l): our sawtooth
     // with +x = right. Corrected reading: slow, long stroke to the left: the mirror.
-    let printed_goes_right = v_dir > 0.0;
-    let corrected_goes_left = v_dir_mirror < 0.0;
+    // With the corrected inequalities printed (a wrong variant of the printed text),
+    // the "printed" reading is the slow stroke to the left: the mirror.
+    let (printed_v, corrected_v) = if doc.printed_fast_left {
+        (v_dir, v_dir_mirror)
+    } else {
+        (v_dir_mirror, v_dir)
+    };
+    let printed_goes_right = printed_v > 0.0;
+    let corrected_goes_left = corrected_v < 0.0;
     r.claim(Claim::judged(
         "stroke-inequalities",
         "3.2.2",
@@ -308,7 +337,7 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
         "sign",
         printed_goes_right && corrected_goes_left,
         Verdict::Erratum,
-    ));
+    ).with_check(sim));
     r.claim(Claim::judged(
         "drift-direction",
         "3.2.2",
@@ -316,9 +345,9 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
         "along the slow stroke",
         format!("slow +x: {}; slow -x: {}", fmt_num(v_dir), fmt_num(v_dir_mirror)),
         tol_v,
-        v_dir > 0.0 && v_dir_mirror < 0.0,
+        (v_dir > 0.0 && v_dir_mirror < 0.0) == doc.along_slow_stroke,
         Verdict::Confirmed,
-    ));
+    ).with_check(sim));
     // The impulse over one always-slipping period, from the middle of (-b, a - k T_s).
     if k * ts < a + b {
         let v_start = 0.5 * (-b + a - k * ts);
@@ -335,7 +364,7 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
             0.0,
         );
         let dv = probe.v_window_mps.1 - probe.v_window_mps.0;
-        let j = slipping_impulse_per_mass(&saw, k);
+        let j = doc.impulse_factor * slipping_impulse_per_mass(&saw, k);
         r.claim(Claim::judged(
             "slip-impulse",
             "3.2.2",
@@ -345,16 +374,16 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
             tol_v,
             is_close(j, dv, tol_v) && probe.friction_along_plate,
             Verdict::Confirmed,
-        ));
+        ).with_check(sim));
     }
     r.claim(Claim::close(
         "reaches-slow-speed",
         "3.2.2",
         "The block is accelerated along the slow stroke until its speed reaches v_l (the slow speed, with the corrected labels) for part of a cycle: the largest steady velocity equals the slow speed.",
-        a,
+        doc.reach_factor * a,
         main.v_max_mps,
         tol_v,
-    ));
+    ).with_check(sim));
     // Locomotion needs mu g t_fast < v_slow + v_fast.
     let strong = scaled(&saw, k, 2.0);
     let v_weak = drift_after_lock(coul, &weak, k, measured, &num);
@@ -366,9 +395,9 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
         format!("{} and 0", fmt_num(drift_velocity_mps(&weak, k))),
         format!("{} and {}", fmt_num(v_weak), fmt_num(v_strong)),
         tol_v,
-        is_close(v_weak, drift_velocity_mps(&weak, k), tol_v) && v_weak > 0.0 && v_strong.abs() <= tol_v,
+        is_close(v_weak, drift_velocity_mps(&weak, k), tol_v) && v_weak > 0.0 && (v_strong.abs() <= tol_v) == (2.0 >= doc.slip_threshold),
         Verdict::Approximation,
-    ));
+    ).with_check(sim));
 
     // --- Bi-harmonic drive -------------------------------------------------------------
     let bw = Window {
@@ -378,17 +407,20 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
     let bh = biharmonic(vb, GAMMA_CHECK, EPS_CHECK, k);
     let v_bh = run_block(coul, &bh, 0.0, bw, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
     let v_bh_formula = always_slipping_drift(GAMMA_CHECK, EPS_CHECK).map_or(f64::NAN, |d| d * vb);
+    // The closed form with the mutable coefficient: eps V (1 - k pi^2/(2 Gamma^2)).
+    let bh_corr = std::f64::consts::PI.powi(2) / (2.0 * GAMMA_CHECK * GAMMA_CHECK);
+    let v_bh_doc = EPS_CHECK * vb * (1.0 - doc.biharmonic_factor * bh_corr); // formula: v_d = eps V (1 - pi^2/(2 Gamma^2))
     r.result("drift_velocity_biharmonic_mps", v_bh);
     r.result("drift_velocity_biharmonic_formula_mps", v_bh_formula);
     r.claim(Claim::close(
         "biharmonic-always-slipping",
         "3.2.2",
         &format!("Smooth drive v_p = V (sin wt + eps cos 2wt), always slipping: v_d = eps V (1 - pi^2/(2 Gamma^2)), Gamma = V w/(mu g) (workbook's closed form; -> eps V as Gamma -> infinity). eps = {EPS_CHECK}, Gamma = {GAMMA_CHECK}, V = {} m/s.", fmt_num(vb)),
-        v_bh_formula,
+        v_bh_doc,
         v_bh,
         tol_v, // closed forms, located crossings, transient decayed below 1e-13 m/s
-    ));
-    let g_stick = stick_forever_gamma(EPS_CHECK);
+    ).with_check(sim));
+    let g_stick = doc.stick_gamma_factor * stick_forever_gamma(EPS_CHECK);
     let stuck = biharmonic(vb, 0.9 * g_stick, EPS_CHECK, k);
     let v_stuck = run_block(
         coul,
@@ -410,76 +442,11 @@ pub fn check_all(sc: &Scene, quick: bool, traces: bool, r: &mut ChapterReport) -
         0.0,
         v_stuck,
         tol_v,
-    ));
+    ).with_check(sim));
 
     // --- Work-precision (full mode only; also a figure) -----------------------------------
     if !quick {
-        let mut rows = String::from("| drive | method | setting | rhs evaluations | event-location evaluations | error of the drift (m/s) |\n|---|---|---|---|---|---|\n");
-        // Sawtooth: reference the closed-form drift. Bi-harmonic in the stick-slip band
-        // (Gamma = 1.5, eps = 0.1; no closed form): reference the closed-form-flow run.
-        let wb = biharmonic(vb, 1.5, 0.1, k);
-        let plates: [(&str, &dyn PlateMotion, Window); 2] = [
-            (
-                "sawtooth",
-                &saw,
-                Window {
-                    transient: transient(&saw, k),
-                    measured: 10,
-                },
-            ),
-            (
-                "bi-harmonic",
-                &wb,
-                Window {
-                    transient: slip_transient(1.5),
-                    measured: 10,
-                },
-            ),
-        ];
-        for (drive, plate, win) in plates {
-            let reference = if drive == "sawtooth" {
-                v_formula
-            } else {
-                run_block(coul, plate, 0.0, win, &num, (0.0, 0.0), 0.0).mean_velocity_mps
-            };
-            let mut settings: Vec<(&str, String, Numerics)> = vec![(
-                "closed forms, located events",
-                "-".into(),
-                Numerics::default(),
-            )];
-            for tol in [1e-3, 1e-6, 1e-9, 1e-12] {
-                settings.push((
-                    "DP5, located events",
-                    format!("tol {tol:.0e}"),
-                    Numerics::dopri(tol),
-                ));
-            }
-            // Odd step counts: a grid of T/4^j would hit the stick time (T_f = T/4 after a
-            // slow stroke's start) exactly and hide the late switch by luck.
-            for n in [15, 63, 255, 1023] {
-                settings.push((
-                    "RK4 fixed step, no location",
-                    format!("T/{n}"),
-                    Numerics::fixed_rk4(n, plate.period_s()),
-                ));
-            }
-            for (method, setting, n) in settings {
-                if drive == "bi-harmonic" && method.starts_with("closed") {
-                    continue; // it is the reference
-                }
-                let d = run_block(coul, plate, 0.0, win, &n, (0.0, 0.0), 0.0);
-                let err = (d.mean_velocity_mps - reference).abs();
-                rows.push_str(&format!(
-                    "| {drive} | {method} | {setting} | {} | {} | {} |\n",
-                    d.stats.rhs_evals,
-                    d.locate_evals,
-                    fmt_num(err)
-                ));
-                out.work
-                    .push((drive, method.to_string(), d.stats.rhs_evals, err));
-            }
-        }
-        r.table("work_precision", rows);
+        super::work::work_precision(&saw, k, vb, v_formula, &num, r, &mut out.work);
     }
     out
 }

@@ -6,8 +6,10 @@
 //! model of `physics::block` ([`sims`]). Claims: [`claims`]. Figures: `asymmetric_shaking/figures.rs`.
 
 pub mod claims;
+pub mod doc;
 mod figures;
 pub mod sims;
+pub mod work;
 
 use super::{info, Context};
 use crate::error::{check, positive, Result, WorkbookError};
@@ -131,6 +133,12 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
 
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
+    run_with(args, ctx, &doc::Doc::PRINTED)
+}
+
+/// Runs the chapter with the document's statements `doc` (a wrong variant in the
+/// falsification tests).
+pub fn run_with(args: &Args, ctx: &Context, doc: &doc::Doc) -> Result<ChapterReport> {
     let scene = validate(args, ctx.g())?;
     let mut r = info(ID).expect("registered chapter").report();
     r.param("mu", scene.mu);
@@ -140,7 +148,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     r.param("fast_duration_s", scene.saw.fast_duration_s());
     r.param("viscous_c_per_s", scene.c_per_s);
     r.param("g_mps2", scene.g_mps2);
-    let traces = claims::check_all(&scene, ctx.quick, ctx.figure_dir(ID).is_some(), &mut r);
+    let traces = claims::check_all(&scene, ctx.quick, ctx.figure_dir(ID).is_some(), &mut r, doc);
     if let Some(dir) = ctx.figure_dir(ID) {
         r.figures
             .extend(figures::draw(&scene, ctx.quick, &traces, &dir)?);
@@ -150,5 +158,5 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    Vec::new()
+    doc::mutations()
 }

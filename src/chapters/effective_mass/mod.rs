@@ -8,17 +8,17 @@
 //! linear system) checks every impulse ratio; the document's closed forms are checked
 //! against both.
 
+mod claims;
 mod sketch;
 
 use super::{info, Context};
 use crate::error::{non_negative, open_interval, Result};
 use crate::physics::rigid::{
-    contact_acceleration, effective_mass, impulse_for_velocity_change, in_stick_frame, jam_ratio,
-    rod_contact_offset, stick_normal, tip_contact_offset, RigidBody,
+    effective_mass, in_stick_frame, jam_ratio, rod_contact_offset, tip_contact_offset, RigidBody,
 };
 use crate::plot::{save_chart, save_drawing, Chart, Legend, Series};
-use crate::report::{fmt_num, ChapterReport, Claim, Verdict};
-use nalgebra::{Matrix2, Vector2};
+use crate::report::{fmt_num, ChapterReport};
+use nalgebra::Matrix2;
 
 /// Flags of the chapter.
 #[derive(clap::Args, Debug, Clone)]
@@ -38,10 +38,6 @@ pub struct Args {
 pub const MASS_KG: f64 = 1.0;
 /// Stick length (m).
 pub const LENGTH_M: f64 = 0.15;
-
-/// Rounding tolerance of a 2x2 inversion and a 5x5 LU solve of well-conditioned
-/// systems (condition number <= ~20 here): a few hundred ulps, relative.
-const TOL_LINALG: f64 = 1e-12;
 
 /// The uniform rod of the scene.
 fn rod() -> RigidBody {
@@ -123,171 +119,20 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     r.param("length_m", LENGTH_M);
 
     let theta = angle_deg.to_radians();
-    let q = theta.tan(); // formula: slope 1/q, q = tan(theta)
     let (m_rod, m_pm) = matrices(theta);
     let stick = in_stick_frame(&m_rod, theta);
     let ratio_pm = jam_ratio(&m_pm);
     let ratio_rod = jam_ratio(&m_rod);
 
-    // (A.1): the rod's mass matrix in stick coordinates.
-    let sec = "2, eq. (A.1)";
-    let rel = |x: f64| TOL_LINALG * x.abs().max(1.0);
-    r.claim(Claim::close(
-        "rod-mass-along",
-        sec,
-        "Effective mass of C along the uniform stick: m (kg).",
-        MASS_KG,
-        stick[(0, 0)],
-        rel(MASS_KG),
-    ));
-    r.claim(Claim::close(
-        "rod-mass-across",
-        sec,
-        "Effective mass of C across the uniform stick: m/4 (kg).",
-        MASS_KG / 4.0,
-        stick[(1, 1)],
-        rel(MASS_KG),
-    ));
-    r.claim(Claim::close(
-        "rod-mass-diagonal",
-        sec,
-        "[m]' is diagonal in stick coordinates x'-z' (off-diagonal entry, kg).",
-        0.0,
-        stick[(0, 1)],
-        rel(MASS_KG),
-    ));
-
-    // The document's step-by-step derivation with a unit force across the stick at C.
-    let f = 1.0;
-    let (a_g, omega_dot, a_c) = contact_acceleration(
-        &rod(),
-        rod_contact_offset(theta, LENGTH_M),
-        f * stick_normal(theta),
-    );
-    let i_g = rod().inertia_kgm2;
-    let sec = "2, text after (A.1)";
-    r.claim(Claim::close(
-        "derivation-a-g",
-        sec,
-        "a_G = F/m (m/s^2 for F = 1 N across the stick).",
-        f / MASS_KG,
-        a_g.norm(),
-        rel(f / MASS_KG),
-    ));
-    let wd = f * LENGTH_M / 2.0 / i_g;
-    r.claim(Claim::close(
-        "derivation-omega-dot",
-        sec,
-        "omega_dot = (F L/2)/I (rad/s^2 for F = 1 N).",
-        wd,
-        omega_dot.abs(),
-        rel(wd),
-    ));
-    let a_cg = (a_c - a_g).dot(&stick_normal(theta));
-    r.claim(Claim::close(
-        "derivation-a-c-g",
-        sec,
-        "a_C/G = omega_dot L/2 (m/s^2 for F = 1 N).",
-        wd * LENGTH_M / 2.0,
-        a_cg,
-        rel(wd),
-    ));
-    r.claim(Claim::close(
-        "derivation-a-c",
-        sec,
-        "a_C = F/(m/4): effective mass m/4 across the stick (m/s^2 for F = 1 N).",
-        4.0 * f / MASS_KG,
-        a_c.dot(&stick_normal(theta)),
-        rel(4.0),
-    ));
-
-    // The impulse ratios against the closed forms and against the Newton-Euler solve.
-    let sec = "2, J_l formula";
-    let rod_cf = 3.0 * q / (4.0 + q * q); // formula: J_l/J_v = 3q/(4+q^2)
-    r.claim(Claim::close(
-        "ratio-point-mass",
-        sec,
-        "Point-mass model: J_l = q J_v (ratio at the given angle).",
-        q,
-        ratio_pm,
-        rel(q),
-    ));
-    r.claim(Claim::close(
-        "ratio-uniform-rod",
-        sec,
-        "Uniform rod: J_l = (3q/(4+q^2)) J_v (ratio at the given angle).",
-        rod_cf,
-        ratio_rod,
-        rel(rod_cf),
-    ));
-    let up = Vector2::new(0.0, 1.0);
-    let ne = |b: RigidBody, off: Vector2<f64>| {
-        impulse_for_velocity_change(&b, off, up)
-            .map(|i| i.impulse.x / i.impulse.y)
-            .unwrap_or(f64::NAN)
-    };
-    let ne_rod = ne(rod(), rod_contact_offset(theta, LENGTH_M));
-    let ne_pm = ne(
-        RigidBody::point_mass(MASS_KG),
-        tip_contact_offset(theta, LENGTH_M),
-    );
-    r.claim(Claim::close(
-        "ratio-rod-newton-euler",
-        sec,
-        "Second method (Newton-Euler impulse equations) gives the rod's ratio 3q/(4+q^2).",
-        rod_cf,
-        ne_rod,
-        rel(rod_cf),
-    ));
-    r.claim(Claim::close(
-        "ratio-point-mass-newton-euler",
-        sec,
-        "Second method (Newton-Euler, I_G = 0) gives the point-mass ratio q.",
-        q,
-        ne_pm,
-        rel(q),
-    ));
-
-    let (m45_rod, m45_pm) = matrices(std::f64::consts::FRAC_PI_4);
-    let sec = "2, 45 degree example";
-    r.claim(Claim::close("example-45-point-mass", sec, "At 45 degrees (q = 1) the point-mass model gives a horizontal impulse equal to the vertical one (J_l/J_v).", 1.0, jam_ratio(&m45_pm), TOL_LINALG));
-    r.claim(Claim::close(
-        "example-45-rod-60-percent",
-        sec,
-        "At 45 degrees the uniform rod gives 60 % of the point mass's sideways impulse.",
-        0.6,
-        jam_ratio(&m45_rod) / jam_ratio(&m45_pm),
-        TOL_LINALG,
-    ));
-
-    // The angle of largest sideways impulse of the rod: golden section on the mass
-    // matrix ratio, against the closed form d/dq [3q/(4+q^2)] = 0 -> q = 2.
-    let tol_rad = 1e-12;
-    let best = golden_max(rod_ratio, 0.0, std::f64::consts::FRAC_PI_2 - 1e-9, tol_rad);
-    let best_cf = 2f64.atan(); // formula: q* = 2, theta* = atan 2
-
-    // Near a smooth maximum the ratio is flat to second order, so rounding in the ratio
-    // (~1e-16) moves the argmax by ~sqrt(1e-16) ~ 1e-8 rad: tolerance 1e-6 degrees.
-    r.claim(Claim::close(
-        "rod-best-angle",
-        "2 (workbook)",
-        "The uniform rod's sideways impulse is largest at q = 2, theta = atan 2 (degrees).",
-        best_cf.to_degrees(),
-        best.to_degrees(),
-        1e-6,
-    ));
-    r.claim(Claim::close(
-        "rod-best-ratio",
-        "2 (workbook)",
-        "The largest ratio of the uniform rod is 3/4 (J_l/J_v at q = 2).",
-        0.75,
-        rod_ratio(best),
-        1e-12,
-    ));
-
-    // Self-locking: the document's bound against the rod's own impulse condition.
+    for claim in claims::all(theta, mu, &claims::Doc::PRINTED) {
+        r.claim(claim);
+    }
+    let best = golden_max(rod_ratio, 0.0, std::f64::consts::FRAC_PI_2 - 1e-9, 1e-12);
+    // Both criteria of C holding under a vertical impulse: the document's bound
+    // tan(theta) < mu (exact for the point-mass model) and the uniform rod's own cone
+    // test 3q/(4+q^2) <= mu (from its mass matrix).
     let self_locking = theta.tan().abs() < mu; // formula: tan(theta) < mu (document)
-    self_locking_claim(&mut r, mu);
+    let rod_jams = ratio_rod.abs() <= mu; // formula: |J_l|/J_v <= mu (uniform rod)
 
     r.result("ratio_point_mass", ratio_pm);
     r.result("ratio_uniform_rod", ratio_rod);
@@ -295,6 +140,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     r.result("m_perp_over_m", stick[(1, 1)] / MASS_KG);
     r.result("best_angle_uniform_rod_deg", best.to_degrees());
     r.result("self_locking", self_locking);
+    r.result("rod_jams_under_vertical_impulse", rod_jams);
     r.table("jamming", jamming_table(mu, angle_deg));
 
     if let Some(dir) = ctx.figure_dir("effective-mass") {
@@ -356,83 +202,6 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     Ok(r)
 }
 
-/// The claim on the self-locking bound tan(theta) < mu.
-fn self_locking_claim(r: &mut ChapterReport, mu: f64) {
-    // Numerically: where the rod's mass-matrix ratio crosses mu (bisection to 1e-13 rad
-    // on each side of the maximum), against the closed-form roots.
-    let best = 2f64.atan();
-    let crossings = if rod_ratio(best) > mu && mu > 0.0 {
-        let f = |t: f64| rod_ratio(t) - mu;
-        Some((
-            bisect(f, 0.0, best, 1e-13),
-            bisect(f, best, std::f64::consts::FRAC_PI_2 - 1e-12, 1e-13),
-        ))
-    } else {
-        None
-    };
-    let cf = rod_lock_angles_closed_form(mu);
-    // Point-mass limit: the ratio of a body with I_G = 1e-6 m L^2 tends to q: the gap is
-    // O(I_G) ~ 5e-7, far above the inversion's rounding (cond ~1e6 x 2.2e-16 ~ 2e-10).
-    let t = mu.atan();
-    let thin = RigidBody {
-        mass_kg: MASS_KG,
-        inertia_kgm2: 1e-6 * MASS_KG * LENGTH_M * LENGTH_M,
-    };
-    let limit_gap =
-        (jam_ratio(&effective_mass(&thin, tip_contact_offset(t, LENGTH_M))) - t.tan()).abs();
-    let deg = |x: f64| fmt_num(x.to_degrees());
-    let (expected, computed, holds, detail) = match (cf, crossings) {
-        (Some((a1, a2)), Some((b1, b2))) => {
-            // Bisection to 1e-13 rad; a 1e-9 degree tolerance leaves room for the
-            // rounding of the ratio near the crossings (slope ~1, error ~1e-16).
-            let ok = (a1 - b1).abs().to_degrees() < 1e-9
-                && (a2 - b2).abs().to_degrees() < 1e-9
-                && a1 > t;
-            (
-                format!("rod jams for theta <= {} or theta >= {} degrees", deg(a1), deg(a2)),
-                format!("rod jams for theta <= {} or theta >= {} degrees", deg(b1), deg(b2)),
-                ok,
-                format!("for mu = {} the rod also jams for {} < theta <= {} degrees and for theta >= {} degrees", fmt_num(mu), deg(t), deg(a1), deg(a2)),
-            )
-        }
-        (None, None) if mu > 0.0 => (
-            "rod jams at every angle (mu >= 3/4)".to_string(),
-            format!("largest rod ratio {} <= mu", fmt_num(rod_ratio(best))),
-            true,
-            format!(
-                "for mu = {} >= 3/4 the rod never slips under a vertical impulse",
-                fmt_num(mu)
-            ),
-        ),
-        (None, None) => (
-            "only theta = 0 jams (mu = 0)".to_string(),
-            "only theta = 0 jams (mu = 0)".to_string(),
-            true,
-            "with mu = 0 only the upright stick jams".to_string(),
-        ),
-        _ => (
-            "consistent closed form and bisection".to_string(),
-            "inconsistent".to_string(),
-            false,
-            String::new(),
-        ),
-    };
-    let statement = format!(
-        "As printed (Fig. 1): theta < atan(mu) puts the stick in the self-locking regime. This is exact for a force along the stick (the point-mass model, the limit I_G -> 0: ratio gap {limit_gap:.1e} at I_G = 1e-6 m L^2). For the uniform rod a vertical impulse has |J_l|/J_v = 3q/(4+q^2) <= q, so C holds whenever 3q/(4+q^2) <= mu: tan(theta) < mu is sufficient, not necessary ({detail})."
-    );
-    let holds = holds && limit_gap < 1e-5;
-    r.claim(Claim::judged(
-        "self-locking-bound",
-        "2, Fig. 1 caption",
-        &statement,
-        expected,
-        computed,
-        "1e-9 degrees",
-        holds,
-        Verdict::Approximation,
-    ));
-}
-
 /// Markdown table of the impulse ratios and jamming at a few angles.
 fn jamming_table(mu: f64, angle_deg: f64) -> String {
     let mut angles = vec![10.0, 20.0, 30.0, 45.0, 2f64.atan().to_degrees(), 75.0, 85.0];
@@ -466,5 +235,5 @@ fn jamming_table(mu: f64, angle_deg: f64) -> String {
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    Vec::new()
+    claims::mutations()
 }

@@ -16,7 +16,7 @@ use crate::report::ChapterReport;
 use crate::sweep::{logspace, par_map};
 use drift::{steady_drift, Scene};
 
-mod claims;
+pub mod claims;
 pub mod drift;
 mod figures;
 pub mod work;
@@ -77,6 +77,12 @@ pub fn gamma_for_1pct(scene: &Scene, sweep: &[(f64, f64, f64)], iterations: usiz
 
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
+    run_with(args, ctx, &claims::Doc::PRINTED)
+}
+
+/// Runs the chapter with the document's statements `doc` (a wrong variant in the
+/// falsification tests).
+pub fn run_with(args: &Args, ctx: &Context, doc: &claims::Doc) -> Result<ChapterReport> {
     let mu = open_interval("--mu", args.mu, 0.0, 2.0, "dimensionless")?;
     let amp = positive("--amplitude-m", args.amplitude_m, "m")?;
     let freq = positive("--frequency-hz", args.frequency_hz, "Hz")?;
@@ -134,7 +140,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     r.result("gamma_x_for_1pct_bracket", g1_width);
     r.result("averaged_law_error_times_gamma_x_squared", coeff);
 
-    claims::add(&mut r, &scene, ctx, g1, &sweep)?;
+    claims::add(&mut r, &scene, ctx, g1, &sweep, doc)?;
 
     let rows: Vec<String> = sweep
         .iter()
@@ -192,5 +198,5 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    Vec::new()
+    claims::mutations()
 }

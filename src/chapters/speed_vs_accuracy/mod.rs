@@ -12,6 +12,7 @@
 //!   exact simulation: where within 1 %, and how much cheaper.
 
 pub mod block_scene;
+pub mod doc;
 pub mod economy;
 pub mod failures;
 pub mod figures;
@@ -95,6 +96,12 @@ fn validate(a: &Args) -> Result<()> {
 
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
+    run_with(args, ctx, &doc::Doc::PRINTED)
+}
+
+/// Runs the chapter with the statements `doc` (a wrong variant in the falsification
+/// tests).
+pub fn run_with(args: &Args, ctx: &Context, doc: &doc::Doc) -> Result<ChapterReport> {
     validate(args)?;
     let mut r = super::info("speed-vs-accuracy")
         .expect("registered")
@@ -105,11 +112,13 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     r.param("bias", args.bias);
     r.param("restitution", args.restitution);
     r.param("g_mps2", ctx.g());
-    report_parts::build(args, ctx, &mut r)?;
+    report_parts::build(args, ctx, &mut r, doc)?;
     Ok(r)
 }
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    vec![missed_event::mutation()]
+    let mut all = doc::mutations();
+    all.push(missed_event::mutation());
+    all
 }

@@ -1,6 +1,7 @@
 //! The chapter's computations turned into claims, results and tables.
 
 use super::block_scene::BlockScene;
+use super::doc::Doc;
 use super::economy::{flight_map_drift, law_drift, SweepRow};
 use super::failures::{stiff, zeno, Failure};
 use super::measure::{drift_block_model, timed, window};
@@ -13,7 +14,7 @@ use crate::chapters::Context;
 use crate::error::Result;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::StepControl;
-use crate::report::{fmt_num, ChapterReport, Claim, Verdict};
+use crate::report::{fmt_num, ChapterReport, Check, Claim, Verdict};
 use serde_json::{json, Value};
 
 /// Sizes of the quick and full runs.
@@ -74,6 +75,25 @@ pub fn observed_order(points: &[WpPoint], label: &str, floor: f64) -> f64 {
     sxy / sxx // formula: order = cov(ln h, ln err) / var(ln h)
 }
 
+/// The largest ratio `e(h) / (e(h0) (h/h0)^p)` over the completed points of `label`
+/// (h0 the coarsest step), and the number of points: `<= 2` means the errors lie under
+/// an order-`p` envelope through the coarsest point.
+pub fn envelope(points: &[WpPoint], label: &str, p: f64) -> (f64, usize) {
+    let pts: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|q| q.solver.label() == label && q.completed)
+        .map(|q| (q.solver.knob(), q.error))
+        .collect();
+    let Some(&(h0, e0)) = pts.iter().max_by(|a, b| a.0.total_cmp(&b.0)) else {
+        return (f64::NAN, 0);
+    };
+    let worst = pts
+        .iter()
+        .map(|&(h, e)| e / (e0 * (h / h0).powf(p))) // formula: e(h) <= C e0 (h/h0)^p
+        .fold(0.0f64, f64::max);
+    (worst, pts.len())
+}
+
 /// Formats an error coarsely for tables (two significant digits).
 pub fn fmt_err(e: f64) -> String {
     if e.is_finite() {
@@ -84,7 +104,7 @@ pub fn fmt_err(e: f64) -> String {
 }
 
 /// Fills the report.
-pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
+pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Result<()> {
     let plan = Plan::new(ctx.quick);
     let g = ctx.g();
     let scene = BlockScene::new(args.frequency_hz, args.gamma, args.mu, args.bias, g);
@@ -108,6 +128,11 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         .value
     };
     let (d10, d11, d12) = (dp(1e-10), dp(1e-11), dp(1e-12));
+    let d_ref = if doc.reference_tol == 1e-12 {
+        d12
+    } else {
+        dp(doc.reference_tol)
+    };
     let rel = |v: f64| ((v - reference.value) / reference.value).abs();
     r.result("block_drift_mps", reference.value);
     r.result(
@@ -120,18 +145,22 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     r.claim(Claim::close(
         "reference-converged",
         "numerics",
-        "The closed-form event-driven drift (the reference) agrees with integrated Dormand-Prince at rtol = atol = 1e-12 (relative difference)",
+        &format!("The closed-form event-driven drift (the reference) agrees with integrated Dormand-Prince at rtol = atol = {:e} (relative difference)", doc.reference_tol),
         0.0,
-        rel(d12),
+        rel(d_ref),
         1e-8,
-    ));
+    ).with_check(Check::SecondMethod));
     r.claim(Claim::exact(
         "reference-convergence-study",
         "numerics",
         "Integrated Dormand-Prince approaches the reference as the tolerance tightens: max(err(1e-11), err(1e-12)) <= err(1e-10) or all below 1e-11",
         true,
-        rel(d12).max(rel(d11)) <= rel(d10) || rel(d10).max(rel(d11)).max(rel(d12)) < 1e-11,
-    ));
+        if doc.tightening_helps {
+            rel(d12).max(rel(d11)) <= rel(d10) || rel(d10).max(rel(d11)).max(rel(d12)) < 1e-11
+        } else {
+            rel(d12).min(rel(d11)) >= rel(d10)
+        },
+    ).with_check(Check::Convergence));
 
     // ---- the work-precision ladder
     let solvers = ladder(period, &plan.steps, &plan.tols, &plan.mj_steps);
@@ -179,49 +208,37 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     };
     let points_all = points;
     let points = order_points;
-    // RK4 with events located on its cubic Hermite interpolant: order 4, +-1 because the
-    // phase of the events inside the steps varies from one step size to the next; its
-    // error reaches the round-off floor (~1e-12) near T/640, so it is fitted over the
-    // ladder above 1e-10.
+    // Observed slopes on the block drift, reported (results) but not claimed as orders:
+    // the signed error is a sum of terms of both signs whose balance shifts with h (it
+    // passes through zero near T/290 for Euler; chapter 7's text gives the scan), so
+    // the local slopes of |error| range from about 0 to 7. The convergence orders are
+    // claimed on the stick, where they show cleanly.
     let mut order_json = serde_json::Map::new();
-    let o_rk4 = observed_order(&points, "rk4-located", 1e-10);
-    order_json.insert("rk4-located".to_string(), json!(o_rk4));
-    r.claim(Claim::close(
-        "rk4-located-order",
-        "numerics",
-        "RK4 with located events converges at order 4 on the drift of the default scene (least-squares slope of log error against log step, errors above 1e-10)",
-        4.0,
-        o_rk4,
-        1.0,
-    ));
-    // First-order methods: Euler (located events) and Moreau-Jean. Each has error
-    // sources of both signs (event placement, the flows' truncation) that partly cancel
-    // on an averaged observable, so the observed slope scatters above 1 (measured 1.2 to
-    // 1.8). The check is "at least 0.7": Euler over its asymptotic range h <= T/320 (at
-    // coarser steps a takeoff seen a step late adds an error that does not shrink
-    // smoothly), Moreau-Jean over the whole ladder.
-    let h_asym = bench.period_s() / 320.0 * (1.0 + 1e-9);
-    let asym: Vec<WpPoint> = points
-        .iter()
-        .filter(|p| p.solver.knob() <= h_asym)
-        .cloned()
-        .collect();
-    for (label, name, pts) in [
-        ("euler-located", "Explicit Euler with located events", &asym),
-        ("moreau-jean", "Moreau-Jean", &points),
+    for label in ["rk4-located", "euler-located", "moreau-jean"] {
+        order_json.insert(
+            label.to_string(),
+            json!(observed_order(&points, label, 1e-10)),
+        );
+    }
+    // What the block's data does support for the first-order methods: an envelope
+    // e(h) <= 2 e(h0) (h/h0)^p over the whole ladder (h0 = T/20), with p = 1. A method of
+    // order 0 (no convergence) or 1/2 fails it over the ladder's range of h (a factor
+    // 64 in quick mode, 256 and more in full); order 2 fails it too (tested).
+    for (label, name) in [
+        ("euler-located", "Explicit Euler with located events"),
+        ("moreau-jean", "Moreau-Jean"),
     ] {
-        let o = observed_order(pts, label, 1e-13);
-        order_json.insert(label.to_string(), json!(o));
+        let (worst, n) = envelope(&points, label, doc.first_order);
         r.claim(Claim::judged(
             &format!("{label}-order"),
             "numerics",
-            &format!("{name} converges on the drift of the default scene at least at first order (least-squares slope of log error against log step >= 0.7)"),
-            ">= 1",
-            o,
-            0.3,
-            o >= 0.7,
+            &format!("{name} converges on the block drift of the default scene (Gamma = 2.5, b = 0.02, mu = 0.4) at least at first order: every error of the ladder is below 2 e(h0) (h/h0)^1, h0 = T/20 (computed: the largest ratio e(h) / (e(h0) (h/h0))). A lower bound only: the signed error changes sign and course with h on this observable (chapter 7's text), so no order is fitted here; the orders are fitted on the stick."),
+            format!("<= 2 ({n} step sizes)"),
+            worst,
+            "factor 2 on a first-order envelope",
+            n >= 3 && worst <= 2.0,
             Verdict::Confirmed,
-        ));
+        ).with_check(Check::Convergence));
     }
     r.result("observed_orders", Value::Object(order_json));
     let points = points_all;
@@ -233,8 +250,8 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         "numerics",
         "Without event location Dormand-Prince's error stalls: at the tightest tolerance it is over 100 times the located error (events are taken at step ends)",
         true,
-        unloc > 100.0 * loc.max(1e-15),
-    ));
+        (unloc > 100.0 * loc.max(1e-15)) == doc.unlocated_stalls,
+    ).with_check(Check::Simulation));
     let mut labels = EVENT_DRIVEN_LABELS.to_vec();
     labels.push("moreau-jean");
     r.result(
@@ -261,15 +278,22 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
             });
         }
     }
-    let stiff_ok =
-        st.fixed.iter().all(|(_, e)| e.is_none_or(|e| e > 1e3)) && st.dopri5_error < 1e-6;
+    // Each fixed-step method blows up where h/tau exceeds its stability limit on the
+    // linear decay (Euler: |1 - z| < 1 -> z < 2; RK4: z < 2.785).
+    let stiff_ok = st.fixed.iter().all(|(m, e)| {
+        let limit = match m.name() {
+            "euler" => doc.euler_limit,
+            _ => doc.rk4_limit,
+        };
+        e.is_none_or(|e| e > 1e3) == (st.h_over_tau > limit)
+    }) && st.dopri5_error < 1e-6;
     r.claim(Claim::exact(
         "stiff-relaxation-explicit-blowup",
         "4 (C.3)",
         "On the flight relaxation theta' = -(k/gamma)(theta - theta_0) (k/gamma = 1000/s), fixed steps of T/10 blow up for Euler and RK4 (h/tau beyond 2 and 2.785) while adaptive Dormand-Prince stays within 1e-6 rad of the closed form",
         true,
         stiff_ok,
-    ));
+    ).with_check(Check::ClosedForm));
     let coarse = period / f64::from(plan.steps[0]);
     for m in ["euler", "rk4"] {
         let (l, u) = (
@@ -331,10 +355,10 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         "zeno-ball-stops-at-accumulation",
         "numerics",
         "The event-driven driver stops a ball bouncing with 0 < e < 1 (dropped from 1 m) with a Zeno outcome at the accumulation time t_inf = t1 (1 + e)/(1 - e) (s)",
-        z.ball_t_inf_s,
+        doc.zeno_factor * z.ball_t_inf_s,
         z.ball_zeno_at_s.unwrap_or(f64::NAN),
         1e-6,
-    ));
+    ).with_check(Check::ClosedForm));
     // Moreau-Jean at h = 1 ms loses bounces shorter than a step: it settles within a few
     // steps of the last resolved bounce, itself within ~2 v_min/(g (1-e)) of t_inf with
     // v_min ~ g h, i.e. ~2 h/(1 - e): a few ms at e = 0.5; the bound is 10 h/(1 - e), at
@@ -344,10 +368,10 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         "zeno-ball-moreau-jean-rest",
         "numerics",
         "Moreau-Jean (h = 1 ms) passes through the same accumulation and keeps the ball at rest from about t_inf on (s)",
-        z.ball_t_inf_s,
+        doc.zeno_factor * z.ball_t_inf_s,
         z.ball_mj_rest_s,
         mj_rest_tol,
-    ));
+    ).with_check(Check::ClosedForm));
     // Moreau-Jean at T/1000..T/4000 is first order with an error of ~1e-3 relative on
     // the drift (the ladder above); the sticking threshold of 0.1 mm/s changes the drift
     // by less than that. 2 % allows both.
@@ -356,9 +380,11 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         "3.1.2",
         "On the chattering plate (Gamma = 1.2), the sticking transition (event-driven) and Moreau-Jean give the same drift (relative difference)",
         0.0,
-        ((z.drift_mj_mps - z.drift_sticking_mps) / z.drift_sticking_mps).abs(),
+        ((z.drift_mj_mps - doc.zeno_plate_factor * z.drift_sticking_mps)
+            / z.drift_sticking_mps)
+            .abs(),
         0.02,
-    ));
+    ).with_check(Check::SecondMethod));
     let mj20 = err_of("moreau-jean", coarse);
     fails.push(Failure {
         method: "moreau-jean".into(),
@@ -371,7 +397,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     });
     // ---- the stick (authors' scene; g = 10 m/s^2 unless --g-mps2 is given)
     let stick_points =
-        super::stick_part::build(r, &mut fails, ctx.g_mps2.unwrap_or(10.0), ctx.quick);
+        super::stick_part::build(r, &mut fails, ctx.g_mps2.unwrap_or(10.0), ctx.quick, doc);
     // ---- the missed event (a short lift-off inside one step; certified search)
     super::missed_event::build(r, &mut fails);
     let mut all_points = points.clone();
@@ -429,7 +455,9 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
     // b/mu = 1/20): at b/mu = 1/80 it is well under 1 %.
     let lim = BlockScene::new(args.frequency_hz, 2.5, args.mu, args.mu / 80.0, g);
     let lim_exact = drift_block_model(&lim, &Options::default(), true, 64, tr, cy).value;
-    let lim_err = flight_map_drift(&lim).map_or(f64::NAN, |m| ((m - lim_exact) / lim_exact).abs());
+    let lim_err = flight_map_drift(&lim).map_or(f64::NAN, |m| {
+        ((doc.flight_map_factor * m - lim_exact) / lim_exact).abs()
+    });
     r.claim(Claim::judged(
         "flight-map-economy",
         "3.1.2",
@@ -439,9 +467,16 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         0.01,
         lim_err < 0.01,
         Verdict::Approximation,
-    ));
-    let horizontal =
-        super::economy::horizontal_section(r, args.frequency_hz, args.mu, args.bias, g, ctx.quick);
+    ).with_check(Check::SecondMethod));
+    let horizontal = super::economy::horizontal_section(
+        r,
+        args.frequency_hz,
+        args.mu,
+        args.bias,
+        g,
+        ctx.quick,
+        doc.viscous_factor,
+    );
     super::tables::tables(r, &all_points, &fails, &sweep);
     super::tables::horizontal(r, &horizontal);
     if let Some(dir) = ctx.figure_dir("speed-vs-accuracy") {

@@ -16,6 +16,7 @@ use scene::{run as run_scene, Model, Scene};
 
 pub mod chladni;
 mod claims;
+pub mod doc;
 mod figures;
 pub mod regimes;
 pub mod scene;
@@ -138,10 +139,17 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     }
     r.table("regime-boundaries", t);
 
-    claims::add(&mut r, &scene, &st, takeoff_phase, &bounds, ctx.quick);
+    claims::add(
+        &mut r,
+        &scene,
+        takeoff_phase,
+        &bounds,
+        ctx.quick,
+        &doc::Doc::PRINTED,
+    );
     // Chladni patterns from a small bias (the section's closing remark).
     let chl = chladni::demonstrate(&scene, ctx.quick, transient, observe);
-    chladni::report(&mut r, &chl);
+    chladni::report(&mut r, &chl, doc::Doc::PRINTED.bias_sign);
     let decomposition = claims::decomposition(&scene, transient, observe);
     r.table("law-decomposition", decomposition);
 
@@ -178,5 +186,5 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    Vec::new()
+    doc::mutations()
 }

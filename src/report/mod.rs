@@ -8,9 +8,14 @@
 //! `{"chapter", "title", "section", "params", "claims", "results", "figures"}`, and a
 //! claim is `{"id", "section", "statement", "expected", "computed", "tolerance", "verdict"}`.
 
+mod format;
+mod summary;
+
+pub use format::{fmt_num, fmt_value};
 use serde::Serialize;
 use serde_json::{Map, Value};
 use std::fmt::Write as _;
+pub use summary::{findings_markdown, kinds_of, summary_table};
 
 /// The outcome of checking one claim of the document.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -318,94 +323,58 @@ impl ChapterReport {
         self.count(Verdict::Failed) > 0
     }
 
-    /// One-line summary of the verdicts.
-    pub fn summary(&self) -> String {
-        format!(
-            "{} claims: {} confirmed, {} erratum, {} approximation, {} failed",
-            self.claims.len(),
-            self.count(Verdict::Confirmed),
-            self.count(Verdict::Erratum),
-            self.count(Verdict::Approximation),
-            self.count(Verdict::Failed)
-        )
+    /// Number of claims whose evidence is of kind `kind`.
+    pub fn count_check(&self, kind: Check) -> usize {
+        self.claims.iter().filter(|c| c.check == kind).count()
     }
 
-    /// The human-readable report: parameters, an aligned verdict table, results,
-    /// figures and a one-line summary.
-    pub fn human(&self) -> String {
-        let mut s = String::new();
-        let _ = writeln!(
-            s,
-            "== {} : {} (document section {}) ==",
-            self.chapter, self.title, self.section
-        );
-        if let Some(status) = &self.status {
-            let _ = writeln!(s, "{status}");
+    /// Confirmed claims backed by evidence that could have failed (every kind but
+    /// [`Check::Consistency`]): the only ones counted as confirmation of the document.
+    pub fn confirmed(&self) -> usize {
+        self.claims
+            .iter()
+            .filter(|c| c.verdict == Verdict::Confirmed && c.check != Check::Consistency)
+            .count()
+    }
+
+    /// Confirmed claims that hold by construction ([`Check::Consistency`]): sanity
+    /// checks, counted apart and never as confirmation.
+    pub fn consistency_checks(&self) -> usize {
+        self.claims
+            .iter()
+            .filter(|c| c.verdict == Verdict::Confirmed && c.check == Check::Consistency)
+            .count()
+    }
+
+    /// The counts by kind of evidence, e.g. `"closed_form 3, simulation 2"` (kinds with
+    /// no claim left out).
+    pub fn kinds_summary(&self) -> String {
+        let parts: Vec<String> = Check::ALL
+            .iter()
+            .map(|&k| (k, self.count_check(k)))
+            .filter(|&(_, n)| n > 0)
+            .map(|(k, n)| format!("{} {n}", k.as_str()))
+            .collect();
+        if parts.is_empty() {
+            "none".into()
+        } else {
+            parts.join(", ")
         }
-        if !self.params.is_empty() {
-            let p: Vec<String> = self
-                .params
-                .iter()
-                .map(|(k, v)| format!("{k} = {}", fmt_value(v)))
-                .collect();
-            let _ = writeln!(s, "parameters: {}", p.join(", "));
-        }
-        if !self.claims.is_empty() {
-            let rows: Vec<[String; 6]> = self
-                .claims
-                .iter()
-                .enumerate()
-                .map(|(i, c)| {
-                    [
-                        format!("{}", i + 1),
-                        c.verdict.as_str().to_string(),
-                        c.id.clone(),
-                        fmt_value(&c.expected),
-                        fmt_value(&c.computed),
-                        fmt_value(&c.tolerance),
-                    ]
-                })
-                .collect();
-            let header = ["#", "verdict", "claim", "expected", "computed", "tolerance"];
-            let mut w: Vec<usize> = header.iter().map(|h| h.len()).collect();
-            for r in &rows {
-                for (wi, cell) in w.iter_mut().zip(r) {
-                    *wi = (*wi).max(cell.chars().count()).min(28);
-                }
-            }
-            let line = |cells: &[&str]| {
-                let mut l = String::new();
-                for (i, c) in cells.iter().enumerate() {
-                    let c = clip(c, w[i]);
-                    let _ = write!(l, "{c:<width$}  ", width = w[i]);
-                }
-                l.trim_end().to_string()
-            };
-            let _ = writeln!(s, "{}", line(&header));
-            for (r, c) in rows.iter().zip(&self.claims) {
-                let cells: Vec<&str> = r.iter().map(String::as_str).collect();
-                let _ = writeln!(s, "{}", line(&cells));
-                let _ = writeln!(
-                    s,
-                    "{:indent$}[{}] {}",
-                    "",
-                    c.section,
-                    c.statement,
-                    indent = w[0] + 2
-                );
-            }
-        }
-        if !self.results.is_empty() {
-            let _ = writeln!(s, "results:");
-            for (k, v) in &self.results {
-                let _ = writeln!(s, "  {k} = {}", fmt_value(v));
-            }
-        }
-        if !self.figures.is_empty() {
-            let _ = writeln!(s, "figures: {}", self.figures.join(", "));
-        }
-        let _ = writeln!(s, "summary: {}", self.summary());
-        s
+    }
+
+    /// One-line summary of the verdicts and of the kinds of evidence. Consistency
+    /// checks are counted apart from the confirmed claims.
+    pub fn summary(&self) -> String {
+        format!(
+            "{} claims: {} confirmed (+{} consistency checks), {} erratum, {} approximation, {} failed; by check: {}",
+            self.claims.len(),
+            self.confirmed(),
+            self.consistency_checks(),
+            self.count(Verdict::Erratum),
+            self.count(Verdict::Approximation),
+            self.count(Verdict::Failed),
+            self.kinds_summary()
+        )
     }
 
     /// The JSON object of the contract (pretty-printed is not required; compact).
@@ -415,16 +384,17 @@ impl ChapterReport {
 
     /// The generated Markdown table of claims, for the course text (block `claims`).
     pub fn claims_markdown(&self) -> String {
-        let mut s = String::from("| # | claim | section | verdict | expected | computed | tolerance |\n|---|---|---|---|---|---|---|\n");
+        let mut s = String::from("| # | claim | section | verdict | check | expected | computed | tolerance |\n|---|---|---|---|---|---|---|---|\n");
         for (i, c) in self.claims.iter().enumerate() {
             let _ = writeln!(
                 s,
-                "| {} | **{}**: {} | {} | {} | {} | {} | {} |",
+                "| {} | **{}**: {} | {} | {} | {} | {} | {} | {} |",
                 i + 1,
                 c.id,
                 c.statement.replace('|', "\\|"),
                 c.section,
                 c.verdict.as_str(),
+                c.check.as_str(),
                 fmt_value(&c.expected).replace('|', "\\|"),
                 fmt_value(&c.computed).replace('|', "\\|"),
                 fmt_value(&c.tolerance)
@@ -452,129 +422,5 @@ fn contains_null(v: &Value) -> bool {
     }
 }
 
-fn clip(s: &str, width: usize) -> String {
-    if s.chars().count() <= width {
-        s.to_string()
-    } else {
-        let mut t: String = s.chars().take(width.saturating_sub(1)).collect();
-        t.push('~');
-        t
-    }
-}
-
-/// Formats a number for tables: integers exactly, others with 4 significant digits
-/// (scientific notation outside 1e-3 .. 1e5). Stable across runs and platforms for
-/// numbers that agree to ~5 digits.
-pub fn fmt_num(x: f64) -> String {
-    if !x.is_finite() {
-        return "non-finite".into();
-    }
-    if x == x.trunc() && x.abs() < 1e9 {
-        return format!("{}", x as i64);
-    }
-    let a = x.abs();
-    if (1e-3..1e5).contains(&a) {
-        let digits = (3 - a.log10().floor() as i32).max(0) as usize;
-        let s = format!("{x:.digits$}");
-        let s = if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        };
-        if s == "-0" {
-            "0".into()
-        } else {
-            s
-        }
-    } else {
-        format!("{x:.3e}")
-    }
-}
-
-/// Formats any JSON value for tables (numbers via [`fmt_num`]).
-pub fn fmt_value(v: &Value) -> String {
-    match v {
-        Value::Number(n) => n.as_f64().map(fmt_num).unwrap_or_else(|| n.to_string()),
-        Value::String(s) => s.clone(),
-        Value::Bool(b) => b.to_string(),
-        Value::Null => "non-finite".into(),
-        Value::Array(a) => format!(
-            "[{}]",
-            a.iter().map(fmt_value).collect::<Vec<_>>().join(", ")
-        ),
-        Value::Object(o) => {
-            let parts: Vec<String> = o
-                .iter()
-                .map(|(k, v)| format!("{k}: {}", fmt_value(v)))
-                .collect();
-            format!("{{{}}}", parts.join(", "))
-        }
-    }
-}
-
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn verdict_follows_the_check() {
-        let ok = Claim::close("a", "2", "x is one", 1.0, 1.0 + 1e-13, 1e-12);
-        assert_eq!(ok.verdict, Verdict::Confirmed);
-        let bad = Claim::close("b", "2", "x is one", 1.0, 1.1, 1e-12);
-        assert_eq!(bad.verdict, Verdict::Failed);
-        let nan = Claim::close("c", "2", "x is one", 1.0, f64::NAN, 1e-12);
-        assert_eq!(nan.verdict, Verdict::Failed);
-        assert_eq!(nan.computed, Value::String("non-finite".into()));
-        let e = Claim::judged("d", "3", "s", 1.0, 2.0, 0.1, true, Verdict::Erratum);
-        assert_eq!(e.verdict, Verdict::Erratum);
-    }
-
-    #[test]
-    fn json_has_exactly_the_contract_keys() {
-        let mut r = ChapterReport::new("x", "T", "1");
-        r.param("mu", 0.4);
-        r.result("ratio", 0.6);
-        r.claim(Claim::exact("k", "1", "s", true, true));
-        r.table("t", "|a|".into());
-        let j = r.to_json();
-        let keys: Vec<&String> = j.as_object().unwrap().keys().collect();
-        assert_eq!(
-            keys,
-            ["chapter", "title", "section", "params", "claims", "results", "figures"]
-        );
-        let ck: Vec<&String> = j["claims"][0].as_object().unwrap().keys().collect();
-        assert_eq!(
-            ck,
-            [
-                "id",
-                "section",
-                "statement",
-                "expected",
-                "computed",
-                "tolerance",
-                "verdict",
-                "check"
-            ]
-        );
-    }
-
-    #[test]
-    fn nan_results_fail_loudly() {
-        let mut r = ChapterReport::new("x", "T", "1");
-        r.result("speed_mps", f64::NAN);
-        assert!(r.has_failures());
-        assert_eq!(r.results["speed_mps"], Value::String("non-finite".into()));
-        assert!(!r.to_json().to_string().contains("NaN"));
-    }
-
-    #[test]
-    fn numbers_format_stably() {
-        assert_eq!(fmt_num(0.6), "0.6");
-        assert_eq!(fmt_num(45.0), "45");
-        assert_eq!(fmt_num(0.599999999999), "0.6");
-        assert_eq!(fmt_num(1.23456e-7), "1.235e-7");
-        assert_eq!(fmt_num(-0.00001), "-1.000e-5");
-        assert_eq!(fmt_num(1234.5678), "1235");
-        assert_eq!(fmt_num(1.23456), "1.235");
-    }
-}
+mod tests;
