@@ -170,6 +170,18 @@ impl Printed {
         self
     }
 
+    /// The same rule set read with `semantics`.
+    pub fn with_semantics(mut self, semantics: Semantics) -> Self {
+        self.semantics = semantics;
+        self
+    }
+
+    /// The same rule set with `e` as printed.
+    pub fn without_fix(mut self, e: Erratum) -> Self {
+        self.fixed &= !e.bit();
+        self
+    }
+
     /// Every erratum corrected.
     pub fn all_fixed(self) -> Self {
         Erratum::ALL.iter().fold(self, |p, &e| p.with_fix(e))
