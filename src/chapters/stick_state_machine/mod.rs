@@ -5,9 +5,13 @@
 //! rule of Algorithms 1 to 4 gets a claim (see `claims.rs`).
 
 mod claims;
+mod doc;
 mod evidence;
 mod figures;
+mod impulse;
+mod mutations;
 mod printed_table;
+mod rule_claims;
 
 use super::Context;
 use crate::error::{check, non_negative, positive, Result};
@@ -321,5 +325,5 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    Vec::new()
+    mutations::all()
 }
