@@ -12,6 +12,7 @@ mod impulse;
 mod mutations;
 mod printed_table;
 mod rule_claims;
+mod slide_rules;
 
 use super::Context;
 use crate::error::{check, non_negative, positive, Result};
@@ -36,7 +37,8 @@ pub enum Scene {
     /// 0.4) on a plate at Gamma = 3, 30 Hz, g = 9.81 m/s^2: walks by stick-slip.
     Jamming,
     /// The authors' own scene: L = 0.15 m, m = 1 kg, k = 10 N m/rad, gamma = 0.01 N m
-    /// s/rad, mu = 0.4, static angle 0.5 rad, Gamma = 10, f = 30 Hz, g = 10 m/s^2.
+    /// s/rad, mu = 0.4, static angle 0.5 rad, Gamma = 10, f = 30 Hz, g = 10 m/s^2 (from
+    /// the authors' public code, `main_rod.m` in toshankarghosh/toothpicks, not the document).
     Authors,
 }
 
