@@ -598,3 +598,42 @@ fn rules_printed_runs_on_both_scenes_and_flags_with_a_typed_outcome() {
     assert_eq!(v["params"]["rules"], "physical");
     assert_eq!(v["results"]["printed_rules_fired"], serde_json::json!({}));
 }
+
+#[test]
+fn printed_rules_outcomes_snapshot() {
+    // Discrete results of the printed rules (1 s, both scenes): the outcome and where it
+    // stopped (ms, rounded) for all printed, all corrected, and each erratum left printed
+    // alone in the corrected rules. A change here means a rule's reading changed.
+    use locomotion_workbook::physics::stick::printed::{simulate_printed, Erratum, Printed};
+    let mut out = String::new();
+    for (name, p) in [
+        ("authors", authors_scene(10.0)),
+        ("jamming", jamming_scene(9.81)),
+    ] {
+        let m = StickModel::new(p);
+        let y0 = initial_state(&m, 0.0, p.static_angle().unwrap());
+        let fixed = Printed::AS_PRINTED.all_fixed();
+        let mut sets = vec![
+            ("all printed", Printed::AS_PRINTED),
+            ("all corrected", fixed),
+        ];
+        sets.extend(Erratum::ALL.iter().map(|&e| (e.id(), fixed.without_fix(e))));
+        for (label, rules) in sets {
+            let (s, _) = simulate_printed(
+                &m,
+                rules,
+                0.0,
+                y0,
+                1.0,
+                &opts(1e-10, Method::Dop853),
+                Recording::default(),
+            );
+            out.push_str(&format!(
+                "{name} {label}: {} at {} ms\n",
+                s.outcome.label(),
+                (s.end_time_s * 1e3).round()
+            ));
+        }
+    }
+    insta::assert_snapshot!("printed_rules_outcomes", out);
+}
