@@ -131,6 +131,11 @@ pub fn all() -> Vec<Mutation> {
         m("a1-flight-test", "F_z > 0 -> F_z < 0", |d| {
             d.a1_flight_positive = false
         }),
+        m("a1-exits", "the three tests corrected", |d| {
+            d.a1_right = LESS_PLUS;
+            d.a1_left = LESS_MINUS;
+            d.a1_flight_positive = false;
+        }),
         m("a1-vertical-flight", "|theta| = 0 -> FLIGHT removed", |d| {
             d.a1_vertical_flight = false
         }),

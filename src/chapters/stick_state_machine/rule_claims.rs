@@ -151,6 +151,7 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
         })
         .count();
     v.push(rule("a1-flight-test", "Alg. 1", &format!("As printed: if F_z > 0 -> FLIGHT. Correct: lift off when F_z < 0 (a tensile reaction), and only if the flight moves C away from the plate. {reading} Fraction of pivot samples at which the stated test fires."), json!(0.0), json!(frac(fires, n)), "0", n > 0 && fires == 0, n > 0, Check::Simulation));
+    v.push(alg1_on_violation(d, c));
     // a vertical stick at rest on a plate with Gamma = 0.5: F_z = m (g + z_s''), F_x = 0
     let mut q = c.ev.params[0];
     q.theta0_rad = 0.0;
@@ -184,6 +185,57 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
     }
     v.push(rule("a1-abort-heights", "Alg. 1-4", "As printed: ABORT if z_c < 0 or z_p < 0. Correct: heights count from the plate, and z_s = delta cos(omega t) is negative half the time: the stick has fallen when z_p - z_s <= 0 (|theta| >= 90 deg). Fraction of contact samples of the (completed) evidence runs at which the stated test fires.", json!(0.0), json!(frac(fires, total)), "0", total > 0 && fires == 0, total > 0 && fires_fix == 0, Check::Simulation));
     v
+}
+
+/// Algorithm 1 as a whole under Table 1's reading: executed at every pivot exit.
+fn alg1_on_violation(d: &Doc, c: &Ctx) -> Claim {
+    let (mut agree, mut agree_fix, mut n) = (0usize, 0usize, 0usize);
+    for (run, q) in c.runs() {
+        let m = StickModel::new(*q);
+        let tol = 1e-9 * q.mass_kg * q.g_mps2; // the edge to the event accuracy
+        for &(t, from, to) in &run.events {
+            let (true, Some(to)) = (from == Mode::Pivot, to) else {
+                continue;
+            };
+            let Some(y) = state_at(run, t, Mode::Pivot) else {
+                continue;
+            };
+            let f = m.pivot_eval(t, &y);
+            let mu = q.mu;
+            // the printed lines in order, each assignment overriding the last
+            let mut next = None;
+            if d.a1_right.fires(mu, f.fx, f.fz) {
+                next = Some(Mode::SlideRight);
+            }
+            if d.a1_left.fires(mu, f.fx, f.fz) {
+                next = Some(Mode::SlideLeft);
+            }
+            if if d.a1_flight_positive {
+                f.fz > 0.0
+            } else {
+                f.fz < tol
+            } {
+                next = Some(Mode::Flight);
+            }
+            // corrected: slide right / left beyond the cone's edges, flight if tensile
+            // and the flight lifts C
+            let mut fixed = None;
+            if mu * f.fz + f.fx < tol {
+                fixed = Some(Mode::SlideRight);
+            }
+            if mu * f.fz - f.fx < tol {
+                fixed = Some(Mode::SlideLeft);
+            }
+            if f.fz < tol && matches!(m.takeoff(t, &y), crate::physics::stick::rules::Next::To(..))
+            {
+                fixed = Some(Mode::Flight);
+            }
+            agree += usize::from(next == Some(to));
+            agree_fix += usize::from(fixed == Some(to));
+            n += 1;
+        }
+    }
+    rule("a1-exits", "Alg. 1, Table 1", "Reading: Table 1's caption (HINGE runs when the reaction leaves the cone or turns tensile). Algorithm 1 executed as printed, in order, the last assignment winning, at every pivot exit of both scenes: it must choose the mode the contact conditions chose. As printed, at an exit through the cone's edge F_x = mu F_z the reversed slide-right test and 'F_z > 0 -> FLIGHT' both fire, and FLIGHT wins. Exits at which the printed algorithm agrees (of all exits).", json!(n), json!(agree), "exact", n > 0 && agree == n, n > 0 && agree_fix == n, Check::LiteralExecution)
 }
 
 fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
