@@ -494,3 +494,146 @@ fn jam_impulse_lies_on_the_cone_edge_and_stops_the_slip() {
         }
     }
 }
+
+#[test]
+fn every_mutation_changes_its_claims_verdict_and_covers_every_real_check() {
+    // Each mutation feeds its claim's own check a wrong variant of the document's
+    // statement (flipped sign, swapped inequality, transposed rule, 10 % coefficient,
+    // the other reading): its verdict must differ from the verdict of the printed
+    // statement, judged on the same quick evidence. Every claim of a kind other than
+    // consistency must have at least one such mutation.
+    use locomotion_workbook::chapters::{mutations, run_default, Context};
+    use locomotion_workbook::report::Check;
+    let report = run_default("stick-state-machine", &Context::headless(true)).unwrap();
+    let muts = mutations("stick-state-machine");
+    assert!(muts.len() >= 40);
+    let mut unchanged = Vec::new();
+    for m in &muts {
+        let base = report
+            .claims
+            .iter()
+            .find(|c| c.id == m.claim_id)
+            .unwrap_or_else(|| panic!("no claim {}", m.claim_id));
+        assert_ne!(
+            base.check,
+            Check::Consistency,
+            "{}: a consistency claim",
+            m.claim_id
+        );
+        let mutated = (m.run)();
+        if mutated.verdict == base.verdict {
+            unchanged.push(format!(
+                "{} ({}): {:?}, computed {}",
+                m.claim_id, m.description, base.verdict, mutated.computed
+            ));
+        }
+    }
+    assert!(
+        unchanged.is_empty(),
+        "verdicts unchanged:\n{}",
+        unchanged.join("\n")
+    );
+    for c in report
+        .claims
+        .iter()
+        .filter(|c| c.check != Check::Consistency)
+    {
+        assert!(
+            muts.iter().any(|m| m.claim_id == c.id),
+            "claim {} ({:?}) has no mutation",
+            c.id,
+            c.check
+        );
+    }
+}
+
+#[test]
+fn rules_printed_runs_on_both_scenes_and_flags_with_a_typed_outcome() {
+    // Table 1 and Algorithms 1 to 4 executed as printed: every run ends with a typed
+    // outcome (never a panic or a hang), reports the rule set and the printed lines that
+    // fired, and the claims (judged on the physical run) stay unfailed.
+    let flags: [&[&str]; 8] = [
+        &[],
+        &["--mu", "0"],
+        &["--theta0-rad=-0.3"],
+        &["--gamma", "0"],
+        &["--damping", "0"],
+        &["--stiffness", "0"],
+        &["--collision-angle", "reset", "--method", "dopri5"],
+        &["--gamma", "20", "--duration-s", "0.5"],
+    ];
+    for scene in ["authors", "jamming"] {
+        for extra in flags {
+            let mut a = vec!["--json", "--rules", "printed", "--scene", scene];
+            a.extend_from_slice(extra);
+            let (code, out, err) = cli(&a);
+            assert_eq!(code, 0, "{a:?}: {err}");
+            assert!(!out.contains("NaN") && !out.contains("non-finite"), "{a:?}");
+            let v: Value = serde_json::from_str(&out).unwrap();
+            assert_eq!(v["params"]["rules"], "printed");
+            let r = &v["results"];
+            let outcome = r["outcome"].as_str().unwrap();
+            assert!(
+                ["completed", "fell", "zeno", "invalid", "aborted"].contains(&outcome),
+                "{a:?}: {outcome}"
+            );
+            assert!(r["printed_rules_fired"].is_object(), "{a:?}");
+            if outcome == "invalid" || outcome == "aborted" {
+                assert!(!r["outcome_reason"].as_str().unwrap().is_empty());
+            }
+        }
+    }
+    // the default scene as printed stops at once: Algorithm 1's reversed slide-left test
+    // fires inside the cone, and sliding left has no angle equation (section 4.3)
+    let (_, out, _) = cli(&["--json", "--rules", "printed", "--scene", "authors"]);
+    let v: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["results"]["outcome"], "invalid");
+    assert!(v["results"]["outcome_reason"]
+        .as_str()
+        .unwrap()
+        .contains("section 4.3"));
+    assert_eq!(v["results"]["printed_rules_fired"]["a1-slide-left-test"], 1);
+    let (_, out, _) = cli(&["--json"]);
+    let v: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["params"]["rules"], "physical");
+    assert_eq!(v["results"]["printed_rules_fired"], serde_json::json!({}));
+}
+
+#[test]
+fn printed_rules_outcomes_snapshot() {
+    // Discrete results of the printed rules (1 s, both scenes): the outcome and where it
+    // stopped (ms, rounded) for all printed, all corrected, and each erratum left printed
+    // alone in the corrected rules. A change here means a rule's reading changed.
+    use locomotion_workbook::physics::stick::printed::{simulate_printed, Erratum, Printed};
+    let mut out = String::new();
+    for (name, p) in [
+        ("authors", authors_scene(10.0)),
+        ("jamming", jamming_scene(9.81)),
+    ] {
+        let m = StickModel::new(p);
+        let y0 = initial_state(&m, 0.0, p.static_angle().unwrap());
+        let fixed = Printed::AS_PRINTED.all_fixed();
+        let mut sets = vec![
+            ("all printed", Printed::AS_PRINTED),
+            ("all corrected", fixed),
+        ];
+        sets.extend(Erratum::ALL.iter().map(|&e| (e.id(), fixed.without_fix(e))));
+        for (label, rules) in sets {
+            let (s, _) = simulate_printed(
+                &m,
+                rules,
+                0.0,
+                y0,
+                1.0,
+                &opts(1e-10, Method::Dop853),
+                Recording::default(),
+            );
+            out.push_str(&format!(
+                "{name} {label}: {} at {} ms\n",
+                s.outcome.label(),
+                (s.end_time_s * 1e3).round()
+            ));
+        }
+    }
+    insta::assert_snapshot!("printed_rules_outcomes", out);
+}

@@ -45,6 +45,7 @@ pub mod contact;
 pub mod energy;
 pub mod flight;
 pub mod params;
+pub mod printed;
 pub mod rules;
 pub mod run;
 mod system;
@@ -149,6 +150,8 @@ pub enum StickStop {
     Fell,
     /// The state left the model's validity (the reason).
     Invalid(String),
+    /// A printed rule chose ABORT (which rule, where).
+    Aborted(String),
 }
 
 /// The stick model: parameters plus derived constants. Implements

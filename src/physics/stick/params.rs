@@ -129,9 +129,10 @@ pub fn theta0_for_static_angle(theta_f: f64, k: f64, m: f64, g: f64, l: f64) -> 
     theta_f - m * g * l * theta_f.sin() / k // formula: theta_0 = theta_f - m g L sin(theta_f)/k
 }
 
-/// The authors' scene (reading guide): L = 0.15 m, m = 1 kg, Gamma = 10, f = 30 Hz,
-/// k = 10 N m/rad, gamma = 0.01 N m s/rad, mu = 0.4, static angle 0.5 rad; `g` is 10
-/// m/s^2 in their runs.
+/// The authors' scene: L = 0.15 m, m = 1 kg, Gamma = 10, f = 30 Hz, k = 10 N m/rad,
+/// gamma = 0.01 N m s/rad, mu = 0.4, static angle 0.5 rad; `g` is 10 m/s^2 in their runs.
+/// Source: the authors' public code of the same model (`main_rod.m` in
+/// github.com/toshankarghosh/toothpicks), not the document, which gives no numbers.
 pub fn authors_scene(g_mps2: f64) -> StickParams {
     let (l, m, k) = (0.15, 1.0, 10.0);
     let theta0 = theta0_for_static_angle(0.5, k, m, g_mps2, l);

@@ -3,7 +3,7 @@
 use super::energy::Budget;
 use super::{Mode, State, StickModel, StickStop, NSTATE, OM, TH, VXC, VZC, W_PLATE, XC, ZC};
 use crate::numerics::events::CertifyStats;
-use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment};
+use crate::numerics::hybrid::{simulate, HybridSystem, Observer, Options, Outcome, Segment};
 use crate::numerics::ode::Stats;
 
 /// The typed outcome of a run.
@@ -17,16 +17,28 @@ pub enum StickOutcome {
     Zeno,
     /// The state left the model's validity (the reason).
     Invalid(String),
+    /// A printed rule (Algorithms 1 to 4) chose ABORT (the rule that fired).
+    Aborted(String),
 }
 
 impl StickOutcome {
-    /// `completed`, `fell`, `zeno` or `invalid`.
+    /// `completed`, `fell`, `zeno`, `invalid` or `aborted`.
     pub fn label(&self) -> &'static str {
         match self {
             StickOutcome::Completed => "completed",
             StickOutcome::Fell => "fell",
             StickOutcome::Zeno => "zeno",
             StickOutcome::Invalid(_) => "invalid",
+            StickOutcome::Aborted(_) => "aborted",
+        }
+    }
+
+    /// The outcome of a model stop.
+    pub fn from_stop(x: StickStop) -> Self {
+        match x {
+            StickStop::Fell => StickOutcome::Fell,
+            StickStop::Invalid(r) => StickOutcome::Invalid(r),
+            StickStop::Aborted(r) => StickOutcome::Aborted(r),
         }
     }
 }
@@ -349,6 +361,23 @@ pub fn simulate_stick(
     } else {
         model.select_contact(t0, &y0)
     };
+    simulate_system(model, model, start, t0, y0, t_end, opts, rec)
+}
+
+/// [`simulate_stick`] with another rule set: `sys` (for example the printed rules of
+/// [`super::printed`]) supplies flows, guards and transitions; `model` the geometry
+/// and forces the summary is measured with; `start` is the first mode and state.
+#[allow(clippy::too_many_arguments)]
+pub fn simulate_system<S: HybridSystem<NSTATE, Mode = Mode, Stop = StickStop>>(
+    sys: &S,
+    model: &StickModel,
+    start: super::rules::Next,
+    t0: f64,
+    y0: State,
+    t_end: f64,
+    opts: &Options,
+    rec: Recording,
+) -> RunSummary {
     let mut watch = Watch {
         model,
         rec,
@@ -384,10 +413,7 @@ pub fn simulate_stick(
         super::rules::Next::To(m, y) => (m, model.canonical(m, t0, &y)),
         super::rules::Next::Stop(x) => {
             let mut s = watch.sum;
-            s.outcome = match x {
-                StickStop::Fell => StickOutcome::Fell,
-                StickStop::Invalid(r) => StickOutcome::Invalid(r),
-            };
+            s.outcome = StickOutcome::from_stop(x);
             return s;
         }
     };
@@ -395,13 +421,12 @@ pub fn simulate_stick(
         record_events: false,
         ..*opts
     };
-    let run = simulate(model, mode0, t0, ys, t_end, &opts, &mut watch);
+    let run = simulate(sys, mode0, t0, ys, t_end, &opts, &mut watch);
     let acc = watch.acc;
     let mut s = watch.sum;
     s.outcome = match run.outcome {
         Outcome::Completed => StickOutcome::Completed,
-        Outcome::Stopped(StickStop::Fell) => StickOutcome::Fell,
-        Outcome::Stopped(StickStop::Invalid(r)) => StickOutcome::Invalid(r),
+        Outcome::Stopped(x) => StickOutcome::from_stop(x),
         Outcome::Zeno { .. } => StickOutcome::Zeno,
         Outcome::Failed(e) => StickOutcome::Invalid(format!("integration failed: {e}")),
     };

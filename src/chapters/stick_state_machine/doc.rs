@@ -1,0 +1,157 @@
+//! The document's statements of sections 4 and 5 as data: each check reads the
+//! coefficient, sign, inequality or rule it tests from a [`Doc`], so a falsification
+//! test can feed it a wrong variant ([`super::mutations`]).
+
+/// A printed inequality on the hinge forces, `mu F_z + fx_sign F_x (> or <) 0`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Test {
+    /// Sign of `F_x` in the test (1).
+    pub fx_sign: f64,
+    /// `>` (true) or `<` (false).
+    pub greater: bool,
+}
+
+impl Test {
+    /// Whether the test fires for the forces `(fx, fz)` (N) at friction `mu` (1).
+    pub fn fires(&self, mu: f64, fx: f64, fz: f64) -> bool {
+        let v = mu * fz + self.fx_sign * fx;
+        if self.greater {
+            v > 0.0
+        } else {
+            v < 0.0
+        }
+    }
+}
+
+/// The statements, as printed (see [`Doc::PRINTED`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Doc {
+    /// C.3: `theta' = -flight_rate (k/gamma)(theta - theta_0)` in flight (1).
+    pub flight_rate: f64,
+    /// C.5: `zddot_p = -flight_gravity g` (1).
+    pub flight_gravity: f64,
+    /// C.3's third row is printed among the general kinematics (true) or for flight only.
+    pub c3_general: bool,
+    /// C.6: `m L^2 theta'' = (g + c6_plate zddot_s) m L sin - c6_spring k (theta - theta_0) - gamma theta'`.
+    pub c6_plate: f64,
+    /// See `c6_plate` (1).
+    pub c6_spring: f64,
+    /// Section 4.2: C.6 comes "from the conservation of angular momentum" (true).
+    pub c6_conservation: bool,
+    /// C.9: `F_z = Q / (L (sin + c9_mu mu cos))` for sliding left (printed -1).
+    pub c9_mu: f64,
+    /// C.11: `F_z = Q / (L (sin + c11_mu mu cos))` for sliding right (printed +1).
+    pub c11_mu: f64,
+    /// C.14: `theta'' = (1/sin)((zddot_c - zddot_p)/L + c14_w2 theta'^2 cos)` (printed -1).
+    pub c14_w2: f64,
+    /// C.15: `theta'+ = c15_sign (r x (v_p - zdot_s k)) / L^2` (printed -1).
+    pub c15_sign: f64,
+    /// C.15: the axis of the angular momentum `r x v` (printed k, the vertical).
+    pub c15_axis: [f64; 3],
+    /// Section 4.4: after the collision `theta = theta_0 + reset_offset` (rad; printed 0).
+    pub reset_offset_rad: f64,
+    /// Section 4.3: in sliding left "the point P moves down vertically" (true).
+    pub s43_p_vertical: bool,
+    /// Table 1, Sliding Left: the sign of `v_x` (printed -1, `v_x < 0`).
+    pub t1_left_v: f64,
+    /// Table 1, Sliding Right: the sign of `v_x` (printed -1, `v_x < 0`).
+    pub t1_right_v: f64,
+    /// Alg. 1: the SLIDE RIGHT test (printed `mu F_z + F_x > 0`).
+    pub a1_right: Test,
+    /// Alg. 1: the SLIDE LEFT test (printed `mu F_z - F_x > 0`).
+    pub a1_left: Test,
+    /// Alg. 1: FLIGHT if `F_z > 0` (true) or `F_z < 0` (false).
+    pub a1_flight_positive: bool,
+    /// Alg. 1: `|theta| = 0` -> FLIGHT (true).
+    pub a1_vertical_flight: bool,
+    /// Alg. 1-4: ABORT heights measured from z = 0 (true) or from the plate.
+    pub abort_absolute: bool,
+    /// Alg. 2: the sticking test uses `tan(theta)` (false) or `|tan(theta)|` (true).
+    pub a2_tan_abs: bool,
+    /// Alg. 2: `r_CP` points from C to P (true) or from P to C.
+    pub rcp_from_c: bool,
+    /// Alg. 2: the impulse is applied when `(v_p - v_s) . r_CP >= 0` (true, "rod not
+    /// shortening") or when it is `< 0`.
+    pub a2_impulse_if_nonnegative: bool,
+    /// Alg. 2: `theta' = a2_theta_sign (r_CP x (v_p - v_s)) / L^2` (printed +1).
+    pub a2_theta_sign: f64,
+    /// Alg. 2: HINGE if `mu F_z < |F_x|` (true) or `mu F_z >= |F_x|`.
+    pub a2_hinge_lt: bool,
+    /// Alg. 2: the slide choice after the hinge test is a separate `if` (false) or its `else`.
+    pub a2_slide_is_else: bool,
+    /// Alg. 2: `assert` read as an assignment (true, the last wins) or a return.
+    pub last_assert_wins: bool,
+    /// Alg. 2: `if F_x > 0` SLIDE LEFT (true) else SLIDE RIGHT.
+    pub a2_left_if_fx_positive: bool,
+    /// Alg. 2: a tensional ground reaction implies FLIGHT (true).
+    pub a2_tension_flight: bool,
+    /// Alg. 2: after the angular-momentum map, `if x_c' > 0` picks the slide (true).
+    pub a2_dead_branch: bool,
+    /// Alg. 2, `tan > mu` branch: the slide test reads `x_c'` before its assignment (true).
+    pub a2_test_before_assign: bool,
+    /// Alg. 2, `tan > mu` branch: `theta' <- a2_free_sign (z_p' - z_s')/(L sin)` (printed -1).
+    pub a2_free_sign: f64,
+    /// Alg. 3, 4: the hinge test applies while C slips (true) or once it stopped.
+    pub slide_hinge_while_slipping: bool,
+    /// Alg. 3, 4: a failed hinge test goes to the other slide (true) or the same one.
+    pub slide_to_other: bool,
+    /// Alg. 3, 4: the new slide's `F_z <= 0` -> ABORT (true) or FLIGHT.
+    pub slide_abort: bool,
+    /// Alg. 3, 4: FLIGHT also when `F_x = 0` (true).
+    pub slide_flight_on_fx: bool,
+    /// The rtol pair at which the phase sequence is claimed identical (section 5's state
+    /// machine is discrete: its history must not depend on the tolerance).
+    pub sequence_rtols: [f64; 2],
+    /// Events located on the dense output (true) or taken at step ends.
+    pub sequence_located: bool,
+}
+
+impl Doc {
+    /// The statements as printed.
+    pub const PRINTED: Doc = Doc {
+        flight_rate: 1.0,
+        flight_gravity: 1.0,
+        c3_general: true,
+        c6_plate: 1.0,
+        c6_spring: 1.0,
+        c6_conservation: true,
+        c9_mu: -1.0,
+        c11_mu: 1.0,
+        c14_w2: -1.0,
+        c15_sign: -1.0,
+        c15_axis: [0.0, 0.0, 1.0],
+        reset_offset_rad: 0.0,
+        s43_p_vertical: true,
+        t1_left_v: -1.0,
+        t1_right_v: -1.0,
+        a1_right: Test {
+            fx_sign: 1.0,
+            greater: true,
+        },
+        a1_left: Test {
+            fx_sign: -1.0,
+            greater: true,
+        },
+        a1_flight_positive: true,
+        a1_vertical_flight: true,
+        abort_absolute: true,
+        a2_tan_abs: false,
+        rcp_from_c: true,
+        a2_impulse_if_nonnegative: true,
+        a2_theta_sign: 1.0,
+        a2_hinge_lt: true,
+        a2_slide_is_else: false,
+        last_assert_wins: true,
+        a2_left_if_fx_positive: true,
+        a2_tension_flight: true,
+        a2_dead_branch: true,
+        a2_test_before_assign: true,
+        a2_free_sign: -1.0,
+        slide_hinge_while_slipping: true,
+        slide_to_other: true,
+        slide_abort: true,
+        slide_flight_on_fx: true,
+        sequence_rtols: [1e-10, 1e-8],
+        sequence_located: true,
+    };
+}

@@ -1,0 +1,453 @@
+//! Claims on C.15 and on every rule of Algorithms 1 to 4. Rule-level verdicts state
+//! their reading: Table 1's caption (an algorithm runs when an inequality of its phase is
+//! violated, `OnViolation`) and, for Algorithms 3 and 4, the reading in which the rules
+//! run at every instant (`Continuous`); each reading gets its own claim.
+
+use super::claims::{rule, Ctx};
+use super::doc::Doc;
+use super::evidence::state_at;
+use super::impulse::newton_euler;
+use crate::physics::stick::run::RunSummary;
+use crate::physics::stick::{Mode, State, StickModel, NSTATE, OM, TH, VXC, XC, ZC};
+use crate::report::{Check, Claim, Verdict};
+use serde_json::json;
+
+/// `(model, t, state)` of every landing of the evidence runs (the flight state at the
+/// located event), and their mirror images (theta, theta', x velocities negated), which
+/// the physics maps onto mirrored motions: the scenes lean one way only.
+fn landing_states(c: &Ctx) -> Vec<(StickModel, f64, State, Mode)> {
+    let mut v = Vec::new();
+    for (run, q) in c.runs() {
+        let m = StickModel::new(*q);
+        for l in &run.landings {
+            if let Some(y) = state_at(run, l.t_s, Mode::Flight) {
+                v.push((m, l.t_s, y, l.to));
+                let mut z = y;
+                for k in [TH, OM, VXC, XC] {
+                    z[k] = -z[k];
+                }
+                let to = match l.to {
+                    Mode::SlideLeft => Mode::SlideRight,
+                    Mode::SlideRight => Mode::SlideLeft,
+                    other => other,
+                };
+                v.push((m, l.t_s, z, to));
+            }
+        }
+    }
+    v
+}
+
+/// Relative velocity `(xdot_p, zdot_p - zdot_s)` and `r_CP` under the reading.
+fn geometry(m: &StickModel, t: f64, y: &State, from_c: bool) -> ((f64, f64), (f64, f64)) {
+    let [_, _, vxp, vzp] = m.tip(y);
+    let l = m.p.length_m;
+    let (s, c) = y[TH].sin_cos();
+    let sign = if from_c { 1.0 } else { -1.0 };
+    ((vxp, vzp - m.plate(t).1), (sign * l * s, sign * l * c))
+}
+
+/// C.15 against the Newton-Euler impulse; the axis of `r x v`.
+pub fn c15_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
+    let mut v = Vec::new();
+    let states = landing_states(c);
+    let mut worst = 0.0f64;
+    for (m, t, y, _) in &states {
+        let ne = newton_euler(m, *t, y);
+        let ((ux, uz), (rx, rz)) = geometry(m, *t, y, true);
+        let l = m.p.length_m;
+        let om = d.c15_sign * (rx * uz - rz * ux) / (l * l); // C.15: theta'+ = -(r x (v_p - zdot_s k))/L^2
+        worst = worst.max((om - ne.omega_after).abs() / (ne.omega_after.abs() + 1.0));
+    }
+    // the elimination and C.15 each round a few times: 1e-12 relative is 1e3 ulps
+    v.push(Claim::judged("c15-angular-momentum", "C.15", "The collision map theta'+ = -(r_P/C x (v_p - z_s' k))/L^2 (lever at the landing angle) equals the rate after the impact from the Newton-Euler impulse equations (impulse along the massless rod, C stuck on the plate), solved as a linear system at every landing of both evidence runs and their mirror images. Largest |difference| / (|theta'+| + 1 rad/s).", 0.0, worst, 1e-12, !states.is_empty() && worst <= 1e-12, Verdict::Confirmed).with_check(Check::SecondMethod));
+    // the axis: r = (L sin, 0, L cos), u = (u_x, 0, u_z): r x u = (0, r_z u_x - r_x u_z, 0)
+    let (mut off, mut n) = (0.0f64, 0usize);
+    for (m, t, y, _) in &states {
+        let ((ux, uz), (rx, rz)) = geometry(m, *t, y, true);
+        let h = [0.0, rz * ux - rx * uz, 0.0];
+        let a = d.c15_axis;
+        let cross = [
+            a[1] * h[2] - a[2] * h[1],
+            a[2] * h[0] - a[0] * h[2],
+            a[0] * h[1] - a[1] * h[0],
+        ];
+        let norm = (h[1] * h[1]).sqrt().max(1e-300);
+        off = off.max(cross.iter().map(|x| x.abs()).fold(0.0, f64::max) / norm);
+        n += 1;
+    }
+    v.push(rule("c15-axis", "C.15", "As printed: H = ((x_p - x_c)(z_p' - z_c') - (z_p - z_c) x_p') m k, along k, the vertical. Correct: in the x-z plane r x v points along j (out of the plane): r x (v_p - z_s' k) = ((z_p - z_c) x_p' - (x_p - x_c)(z_p' - z_s')) j, so the printed bracket is the component along -j (the formula C.15 uses is right, its axis is not). |axis x (r x v)| / |r x v| at the landing states (0: parallel).", json!(0.0), json!(off), "1e-12", n > 0 && off <= 1e-12, n > 0, Check::ClosedForm));
+    v
+}
+
+/// The claims of Algorithms 1 to 4 and the phase sequence.
+pub fn all(d: &Doc, c: &Ctx) -> Vec<Claim> {
+    let mut v = alg1(d, c);
+    v.extend(alg2_landing(d, c));
+    v.extend(alg2_hinge(d, c));
+    for mode in [Mode::SlideRight, Mode::SlideLeft] {
+        v.extend(super::slide_rules::alg34(d, c, mode));
+    }
+    v.push(sequence_claim(d, c));
+    v
+}
+
+/// Pivot samples of the evidence strictly inside the cone: `(model, t, state, F_x, F_z)`.
+/// Samples on the cone's edge to 1e-9 m g (the located exits, where both choices are
+/// right to rounding) are left out.
+fn pivot_samples(c: &Ctx) -> Vec<(StickModel, f64, State, f64, f64)> {
+    let mut v = Vec::new();
+    for (run, q) in c.runs() {
+        let m = StickModel::new(*q);
+        let margin = 1e-9 * q.mass_kg * q.g_mps2;
+        for x in run.trace.iter().filter(|x| x.mode == Mode::Pivot) {
+            let f = m.pivot_eval(x.t_s, &x.y);
+            if f.fx.abs() <= q.mu * f.fz - margin {
+                v.push((m, x.t_s, x.y, f.fx, f.fz));
+            }
+        }
+    }
+    v
+}
+
+fn frac(a: usize, b: usize) -> f64 {
+    if b == 0 {
+        0.0
+    } else {
+        a as f64 / b as f64
+    }
+}
+
+fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
+    let ps = pivot_samples(c);
+    let n = ps.len();
+    let mut v = Vec::new();
+    let reading = "Read at the pivot samples of both scenes, where the contact conditions keep the pivot (the reaction inside the cone): a correct slide or flight test fires at none.";
+    for (id, test, printed, fix) in [
+        (
+            "a1-slide-right-test",
+            d.a1_right,
+            "mu F_z + F_x > 0 -> SLIDE RIGHT",
+            "mu F_z + F_x < 0 (F_x below the cone)",
+        ),
+        (
+            "a1-slide-left-test",
+            d.a1_left,
+            "mu F_z - F_x > 0 -> SLIDE LEFT",
+            "mu F_z - F_x < 0 (F_x above the cone)",
+        ),
+    ] {
+        let fires = ps.iter().filter(|s| test.fires(s.0.p.mu, s.3, s.4)).count();
+        v.push(rule(id, "Alg. 1", &format!("As printed: if {printed}. Correct: {fix}. {reading} Fraction of pivot samples at which the stated test fires."), json!(0.0), json!(frac(fires, n)), "0", n > 0 && fires == 0, n > 0, Check::Simulation));
+    }
+    let fires = ps
+        .iter()
+        .filter(|s| {
+            if d.a1_flight_positive {
+                s.4 > 0.0
+            } else {
+                s.4 < 0.0
+            }
+        })
+        .count();
+    v.push(rule("a1-flight-test", "Alg. 1", &format!("As printed: if F_z > 0 -> FLIGHT. Correct: lift off when F_z < 0 (a tensile reaction), and only if the flight moves C away from the plate. {reading} Fraction of pivot samples at which the stated test fires."), json!(0.0), json!(frac(fires, n)), "0", n > 0 && fires == 0, n > 0, Check::Simulation));
+    v.push(alg1_on_violation(d, c));
+    // a vertical stick at rest on a plate with Gamma = 0.5: F_z = m (g + z_s''), F_x = 0
+    let mut q = c.ev.params[0];
+    q.theta0_rad = 0.0;
+    q.plate.amplitude_m = 0.5 * q.g_mps2 / (q.plate.omega_rad_s * q.plate.omega_rad_s);
+    let m = StickModel::new(q);
+    let (mut dev, mut fz_min) = (0.0f64, f64::INFINITY);
+    for k in 0..64 {
+        let t = m.period_s * k as f64 / 64.0;
+        let f = m.pivot_eval(t, &[0.0; NSTATE]);
+        let closed = q.mass_kg * (q.g_mps2 + m.plate(t).2); // formula: F_z = m (g + z_s'')
+        dev = dev.max((f.fz - closed).abs() + f.fx.abs());
+        fz_min = fz_min.min(f.fz);
+    }
+    // closed form and pivot_eval agree to rounding of m g ~ 10 N: 1e-12 N
+    let pivot_ok = dev <= 1e-12 && fz_min > 0.0;
+    v.push(rule("a1-vertical-flight", "Alg. 1", "As printed: with |theta| = 0 (and mu F_z + F_x > 0) the HINGE goes to FLIGHT. Correct: a vertical stick on a plate is an ordinary pivot: F_z = m (g + z_s'') > 0 and F_x = 0 while the plate's acceleration stays below g; only the slides are singular there (C.14). Smallest pivot normal force (N) over a cycle of a vertical stick on a plate at Gamma = 0.5 (closed form and pivot equations agree to 1e-12 N).", json!("F_z > 0: pivot"), json!(fz_min), "sign", !d.a1_vertical_flight && pivot_ok, pivot_ok, Check::ClosedForm));
+    let (mut fires, mut fires_fix, mut total) = (0usize, 0usize, 0usize);
+    for (run, q) in c.runs() {
+        let m = StickModel::new(*q);
+        for x in run.trace.iter().filter(|x| x.mode != Mode::Flight) {
+            let [_, zp, _, _] = m.tip(&x.y);
+            let zs = m.plate(x.t_s).0;
+            total += 1;
+            fires += usize::from(if d.abort_absolute {
+                x.y[ZC] < 0.0 || zp < 0.0
+            } else {
+                zp - zs < 0.0
+            });
+            fires_fix += usize::from(zp - zs < 0.0);
+        }
+    }
+    v.push(rule("a1-abort-heights", "Alg. 1-4", "As printed: ABORT if z_c < 0 or z_p < 0. Correct: heights count from the plate, and z_s = delta cos(omega t) is negative half the time: the stick has fallen when z_p - z_s <= 0 (|theta| >= 90 deg). Fraction of contact samples of the (completed) evidence runs at which the stated test fires.", json!(0.0), json!(frac(fires, total)), "0", total > 0 && fires == 0, total > 0 && fires_fix == 0, Check::Simulation));
+    v
+}
+
+/// Algorithm 1 as a whole under Table 1's reading: executed at every pivot exit.
+fn alg1_on_violation(d: &Doc, c: &Ctx) -> Claim {
+    let (mut agree, mut agree_fix, mut n) = (0usize, 0usize, 0usize);
+    for (run, q) in c.runs() {
+        let m = StickModel::new(*q);
+        let tol = 1e-9 * q.mass_kg * q.g_mps2; // the edge to the event accuracy
+        for &(t, from, to) in &run.events {
+            let (true, Some(to)) = (from == Mode::Pivot, to) else {
+                continue;
+            };
+            let Some(y) = state_at(run, t, Mode::Pivot) else {
+                continue;
+            };
+            let f = m.pivot_eval(t, &y);
+            let mu = q.mu;
+            // the printed lines in order, each assignment overriding the last
+            let mut next = None;
+            if d.a1_right.fires(mu, f.fx, f.fz) {
+                next = Some(Mode::SlideRight);
+            }
+            if d.a1_left.fires(mu, f.fx, f.fz) {
+                next = Some(Mode::SlideLeft);
+            }
+            if if d.a1_flight_positive {
+                f.fz > 0.0
+            } else {
+                f.fz < tol
+            } {
+                next = Some(Mode::Flight);
+            }
+            // corrected: slide right / left beyond the cone's edges, flight if tensile
+            // and the flight lifts C
+            let mut fixed = None;
+            if mu * f.fz + f.fx < tol {
+                fixed = Some(Mode::SlideRight);
+            }
+            if mu * f.fz - f.fx < tol {
+                fixed = Some(Mode::SlideLeft);
+            }
+            if f.fz < tol && matches!(m.takeoff(t, &y), crate::physics::stick::rules::Next::To(..))
+            {
+                fixed = Some(Mode::Flight);
+            }
+            agree += usize::from(next == Some(to));
+            agree_fix += usize::from(fixed == Some(to));
+            n += 1;
+        }
+    }
+    rule("a1-exits", "Alg. 1, Table 1", "Reading: Table 1's caption (HINGE runs when the reaction leaves the cone or turns tensile). Algorithm 1 executed as printed, in order, the last assignment winning, at every pivot exit of both scenes: it must choose the mode the contact conditions chose. As printed, at an exit through the cone's edge F_x = mu F_z the reversed slide-right test and 'F_z > 0 -> FLIGHT' both fire, and FLIGHT wins. Exits at which the printed algorithm agrees (of all exits).", json!(n), json!(agree), "exact", n > 0 && agree == n, n > 0 && agree_fix == n, Check::LiteralExecution)
+}
+
+fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
+    let states = landing_states(c);
+    let mut v = Vec::new();
+    let hmax = c
+        .runs()
+        .iter()
+        .flat_map(|(r, _)| r.landings.iter())
+        .map(|l| l.h_c_m.abs())
+        .fold(0.0, f64::max);
+    v.push(Claim::judged("a2-landing", "Alg. 2", "Landing when z_c - z_s = 0: located on the closed-form flight to near machine precision. Largest |h_c| at located landings (m).", 0.0, hmax, 1e-12, hmax <= 1e-12 && c.ev.authors.hops > 0, Verdict::Confirmed));
+    let (mut dis, mut dis_fix) = (0usize, 0usize);
+    for (m, t, y, _) in &states {
+        let ne = newton_euler(m, *t, y);
+        let in_cone = ne.jx.abs() <= m.p.mu * ne.jz.abs();
+        let th = y[TH];
+        dis += usize::from(
+            (if d.a2_tan_abs {
+                th.tan().abs()
+            } else {
+                th.tan()
+            } <= m.p.mu)
+                != in_cone,
+        );
+        dis_fix += usize::from((th.tan().abs() <= m.p.mu) != in_cone);
+    }
+    let n = states.len();
+    v.push(rule("a2-tan-test", "Alg. 2", "As printed: a sticking impact if tan(theta) <= mu. Correct: |tan(theta)| <= mu: the Newton-Euler impulse lies along the rod, |J_x|/|J_z| = |tan(theta)|. Landings of both scenes and their mirror images (the scenes lean to +x only) at which the stated test disagrees with 'the Newton-Euler impulse lies inside the cone'.", json!(0), json!(dis), "exact", n > 0 && dis == 0, n > 0 && dis_fix == 0, Check::SecondMethod));
+    // the impulse branch against the sign of the Newton-Euler impulse, at sticking candidates
+    let (mut dis, mut dis_fix, mut dis_th, mut dis_th_fix, mut k) = (0, 0, 0, 0, 0usize);
+    for (m, t, y, _) in states.iter().filter(|s| s.2[TH].tan().abs() <= s.0.p.mu) {
+        let ne = newton_euler(m, *t, y);
+        let compressive = ne.along_rod(y[TH]) > 0.0;
+        let ((ux, uz), (rx, rz)) = geometry(m, *t, y, d.rcp_from_c);
+        let dot = ux * rx + uz * rz;
+        let impulse = if d.a2_impulse_if_nonnegative {
+            dot >= 0.0
+        } else {
+            dot < 0.0
+        };
+        dis += usize::from(impulse != compressive);
+        let ((_, _), (fx, fz)) = geometry(m, *t, y, true);
+        dis_fix += usize::from((ux * fx + uz * fz < 0.0) != compressive);
+        let l = m.p.length_m;
+        let om = d.a2_theta_sign * (rx * uz - rz * ux) / (l * l);
+        let om_fix = -(fx * uz - fz * ux) / (l * l);
+        let scale = ne.omega_after.abs() + 1.0;
+        dis_th += usize::from((om - ne.omega_after).abs() > 1e-12 * scale);
+        dis_th_fix += usize::from((om_fix - ne.omega_after).abs() > 1e-12 * scale);
+        k += 1;
+    }
+    let reading = if d.rcp_from_c {
+        "r_CP read from C to P (as r_P/C of C.15)"
+    } else {
+        "r_CP read from P to C"
+    };
+    v.push(rule("a2-shortening-branch", "Alg. 2", &format!("As printed: if (x_p' i + (z_p' - z_s') k) . r_CP < 0 compute the hinge forces without an impulse, else (\"rod not shortening\") apply the angular-momentum map. Reading: {reading}. From C to P the branches are swapped: the Newton-Euler impulse is compressive only when the rod shortens (product < 0). Read from P to C the printed branches are right and only the comment \"rod not shortening\" is wrong. Sticking candidates (|tan| <= mu, both scenes and mirrors) at which the branch disagrees with the sign of the Newton-Euler impulse."), json!(0), json!(dis), "exact", k > 0 && dis == 0, k > 0 && dis_fix == 0, Check::SecondMethod));
+    v.push(rule("a2-theta-dot-sign", "Alg. 2", &format!("As printed: theta' = (r_CP x (v_p - v_s))/L^2, without the minus sign of C.15. Reading: {reading}. From C to P it has the wrong sign (C.15 and the Newton-Euler impulse give -(r_CP x (v_p - v_s))/L^2); from P to C it agrees. Sticking candidates at which the stated theta' differs from the Newton-Euler rate (1e-12 relative)."), json!(0), json!(dis_th), "exact", k > 0 && dis_th == 0, k > 0 && dis_th_fix == 0, Check::SecondMethod));
+    // after the map: "x_c' <- 0 ... if x_c' > 0 SLIDE RIGHT else SLIDE LEFT"
+    let sticking: Vec<_> = c
+        .runs()
+        .into_iter()
+        .flat_map(|(r, _)| r.landings.iter())
+        .filter(|l| l.sticking)
+        .collect();
+    let printed_left = sticking.iter().filter(|l| l.to != Mode::SlideLeft).count();
+    let agree = if d.a2_dead_branch {
+        printed_left == 0
+    } else {
+        true
+    };
+    v.push(rule("a2-dead-branch", "Alg. 2", "As printed: after the angular-momentum map x_c' <- 0, then if x_c' > 0 SLIDE RIGHT else SLIDE LEFT: a test of a value just set to zero, always SLIDE LEFT (and, read as assignments, it overrides the HINGE just chosen). Correct: HINGE, then Table 1's reaction test. Sticking landings of both scenes that the contact conditions send elsewhere than SLIDE LEFT (literal execution of the branch: all should be SLIDE LEFT).", json!(0), json!(printed_left), "exact", !sticking.is_empty() && agree, !sticking.is_empty(), Check::LiteralExecution));
+    v.extend(free_landing(d, c));
+    v
+}
+
+/// Alg. 2's impulse-free branch (`tan(theta) > mu`).
+fn free_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
+    let mut v = Vec::new();
+    let (mut res, mut res_fix, mut order_dis, mut n) = (0.0f64, 0.0f64, 0usize, 0usize);
+    for (run, q) in c.runs() {
+        let m = StickModel::new(*q);
+        for l in run
+            .landings
+            .iter()
+            .filter(|l| !l.sticking && l.to != Mode::Flight)
+        {
+            let Some(y) = state_at(run, l.t_s, Mode::Flight) else {
+                continue;
+            };
+            let [_, _, vxp, vzp] = m.tip(&y);
+            let vs = m.plate(l.t_s).1;
+            let (s, co) = y[TH].sin_cos();
+            let len = q.length_m;
+            let om = d.a2_free_sign * (vzp - vs) / (len * s); // theta' <- -(z_p' - z_s')/(L sin)
+            let om_fix = -(vzp - vs) / (len * s);
+            let xc_new = vxp + (vzp - vs) * co / s; // x_c' <- x_p' + (z_p' - z_s') cot
+                                                    // C.3: z_c' = z_p' + L theta' sin must equal z_s' (C on the plate)
+            res = res.max((vzp + len * om * s - vs).abs());
+            res_fix = res_fix.max((vzp + len * om_fix * s - vs).abs());
+            let tested = if d.a2_test_before_assign {
+                y[VXC]
+            } else {
+                xc_new
+            };
+            order_dis += usize::from((tested > 0.0) != (xc_new > 0.0));
+            n += 1;
+        }
+    }
+    // |z_p' - z_s'| ~ 1 m/s: rounding 1e-15 m/s; 1e-12 m/s
+    v.push(rule("a2-impulse-free-landing", "Alg. 2", "tan(theta) > mu: theta' <- -(z_p' - z_s')/(L sin(theta)), x_c' <- x_p' + (z_p' - z_s') cot(theta): P keeps its velocity and C moves with the plate. Largest |z_c' - z_s'| (m/s) after the stated assignment (C.3) at the impulse-free landings of both scenes.", json!(0.0), json!(res), "1e-12 m/s", n > 0 && res <= 1e-12, n > 0 && res_fix <= 1e-12, Check::ClosedForm));
+    v.push(rule("a2-free-landing-order", "Alg. 2", "As printed (tan(theta) > mu branch): 'if x_c' > 0 then SLIDE RIGHT, x_c' <- x_p' + (z_p' - z_s') cot(theta)': read in order, the test sees C's velocity in flight, before the assignment. Correct: assign first, then choose the slide the new x_c' points to. Impulse-free landings of both scenes at which the two orders choose different slides (literal execution; Table 1's re-selection then repairs the choice at the same instant, see the table of printed rules).", json!(0), json!(order_dis), "exact", n > 0 && order_dis == 0, n > 0, Check::LiteralExecution));
+    v
+}
+
+/// Alg. 2's hinge-forces branch.
+fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
+    let ps = pivot_samples(c);
+    let n = ps.len();
+    let mut v = Vec::new();
+    let hinge = |s: &(StickModel, f64, State, f64, f64), lt: bool| {
+        let (mu, fx, fz) = (s.0.p.mu, s.3, s.4);
+        if lt {
+            mu * fz < fx.abs()
+        } else {
+            mu * fz >= fx.abs()
+        }
+    };
+    let keeps = ps.iter().filter(|s| hinge(s, d.a2_hinge_lt)).count();
+    v.push(rule("a2-hinge-test", "Alg. 2", "As printed: if mu F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= mu F_z (inside the cone). Fraction of pivot samples (where the contact conditions keep the pivot) at which the stated test chooses HINGE (must be 1).", json!(1.0), json!(frac(keeps, n)), "exact", n > 0 && keeps == n, n > 0, Check::Simulation));
+    // the block "if hinge then HINGE; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT", executed
+    let mut ends_hinge = 0usize;
+    for s in &ps {
+        let h = hinge(s, false);
+        let mut next = None;
+        if h {
+            next = Some(Mode::Pivot);
+        }
+        let open = d.last_assert_wins || next.is_none();
+        if open && (!d.a2_slide_is_else || !h) {
+            next = Some(if s.3 > 0.0 {
+                Mode::SlideLeft
+            } else {
+                Mode::SlideRight
+            });
+        }
+        ends_hinge += usize::from(next == Some(Mode::Pivot));
+    }
+    v.push(rule("a2-slide-overrides-hinge", "Alg. 2", &format!("As printed: 'if mu F_z < |F_x| then HINGE end if; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT': two separate ifs. Read as assignments (the last wins: {}), the slide choice overwrites HINGE every time; read as returns, or with the slide choice as the else branch, HINGE stands. Fraction of pivot samples at which the block, executed with the corrected hinge test, ends in HINGE (must be 1).", d.last_assert_wins), json!(1.0), json!(frac(ends_hinge, n)), "exact", n > 0 && ends_hinge == n, n > 0, Check::LiteralExecution));
+    // F_x > 0 -> SLIDE LEFT at the pivot exits of both scenes
+    let (mut agree, mut exits) = (0usize, 0usize);
+    for (run, q) in c.runs() {
+        let m = StickModel::new(*q);
+        for &(t, from, to) in &run.events {
+            let Some(to) = to else { continue };
+            if from != Mode::Pivot || !matches!(to, Mode::SlideLeft | Mode::SlideRight) {
+                continue;
+            }
+            let Some(y) = state_at(run, t, Mode::Pivot) else {
+                continue;
+            };
+            let fx = m.pivot_eval(t, &y).fx;
+            let left = if d.a2_left_if_fx_positive {
+                fx > 0.0
+            } else {
+                fx < 0.0
+            };
+            agree += usize::from((to == Mode::SlideLeft) == left);
+            exits += 1;
+        }
+    }
+    v.push(rule("a2-slide-direction", "Alg. 2", "If F_x > 0 SLIDE LEFT else SLIDE RIGHT (outside the cone): the tangential force the plate cannot supply drives C the other way. Pivot exits of both scenes at which the stated rule picks the slide the simulation's contact conditions took.", json!(exits), json!(agree), "exact", exits > 0 && agree == exits, exits > 0, Check::Simulation));
+    let counter = c.ev.start_fz_n < 0.0 && c.ev.start_liftoff_hdot_mps < 0.0;
+    v.push(rule("a2-tension-flight", "Alg. 2", "As printed: a tensional ground reaction (F_z <= 0) implies FLIGHT. Correct: only if the flight moves C away from the plate; the massless rod released with a loaded spring swings C down at L sin(theta) (k/gamma)(theta - theta_0), and the contact goes on as a slide. Authors' start: pivot F_z < 0, and C's velocity relative to the plate in the flight that would follow (m/s).", json!("h_c' > 0"), json!(c.ev.start_liftoff_hdot_mps), "sign", !(d.a2_tension_flight && counter), counter, Check::Simulation));
+    v
+}
+
+/// The discrete history against the tolerance.
+fn sequence_claim(d: &Doc, c: &Ctx) -> Claim {
+    let ev = c.ev;
+    let [r0, r1] = d.sequence_rtols;
+    let runs_at = |rtol: f64| -> [RunSummary; 2] {
+        let opts = crate::numerics::hybrid::Options {
+            control: crate::numerics::ode::StepControl::tol(rtol, rtol),
+            locate_events: d.sequence_located,
+            ..crate::numerics::hybrid::Options::default()
+        };
+        let rec = crate::physics::stick::run::Recording {
+            sequence_cap: 100_000,
+            trace_dt_s: 0.0,
+            check_invariants: false,
+        };
+        [0, 1].map(|i| super::run_scene(&ev.params[i], ev.duration_s, &opts, rec))
+    };
+    let (a, b): (Vec<String>, Vec<String>) = if (r0, r1) == (1e-10, 1e-8) && d.sequence_located {
+        (
+            vec![ev.authors.sequence.clone(), ev.jamming.sequence.clone()],
+            ev.loose_sequences.to_vec(),
+        )
+    } else {
+        (
+            runs_at(r0).iter().map(|s| s.sequence.clone()).collect(),
+            runs_at(r1).iter().map(|s| s.sequence.clone()).collect(),
+        )
+    };
+    let describe = |x: &str, y: &str| match x.chars().zip(y.chars()).position(|(p, q)| p != q) {
+        None if x.len() == y.len() => format!("identical ({} letters)", x.len()),
+        None => format!("differ in length ({} vs {})", x.len(), y.len()),
+        Some(i) => format!("differ at letter {i}"),
+    };
+    let comp: Vec<String> = a.iter().zip(&b).map(|(x, y)| describe(x, y)).collect();
+    let same = a == b;
+    Claim::judged("phase-sequence-tolerance", "5", &format!("The state machine's phase sequence (authors' and self-locking scene, {} s) is the same at rtol {r0:e} and {r1:e}, events located on the dense output{}: they are located far below any gap between them (the discrete history has converged).", ev.duration_s, if d.sequence_located { "" } else { " (as stated: at step ends)" }), json!(["identical", "identical"]), json!(comp), "exact", same, Verdict::Confirmed).with_check(Check::Convergence)
+}
