@@ -1,0 +1,219 @@
+//! The course's exercises: every answer the book states is computed here by the workbook
+//! (the command line in-process, or the library) and compared with the text, so that the
+//! book cannot drift from the code.
+//!
+//! An answer is marked in the Markdown as `<b class="answer" data-answer="ID">VALUE</b>`.
+//! A number printed with `d` decimals must equal the computed value rounded to `d`
+//! decimals: the tolerance is half a unit of its last printed digit (plus 1e-12 for the
+//! rounding of the comparison itself). A word (`yes`, `no`, a regime label) must match
+//! exactly. Every marked answer has a check below and every check has its answer in the
+//! book (`every_answer_is_checked_and_every_check_has_an_answer`).
+
+mod common;
+
+use std::collections::BTreeMap;
+
+use locomotion_workbook::physics::locomotion::is_locomotion;
+
+/// Every marked answer of `chapters/*.md`: id -> (chapter file, stated text).
+fn stated_answers() -> BTreeMap<String, (String, String)> {
+    let mut answers = BTreeMap::new();
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/chapters");
+    let mut files: Vec<_> = std::fs::read_dir(dir)
+        .expect("chapters/")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "md"))
+        .collect();
+    files.sort();
+    let marker = "data-answer=\"";
+    for path in files {
+        let text = std::fs::read_to_string(&path).expect("chapter text");
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        let mut rest = text.as_str();
+        while let Some(i) = rest.find(marker) {
+            rest = &rest[i + marker.len()..];
+            let id_end = rest.find('"').expect("closing quote of data-answer");
+            let id = rest[..id_end].to_string();
+            let open = rest.find('>').expect("end of the answer tag") + 1;
+            let close = rest[open..].find('<').expect("closing tag of the answer") + open;
+            let value = rest[open..close].trim().to_string();
+            let previous = answers.insert(id.clone(), (name.clone(), value));
+            assert!(previous.is_none(), "answer id {id} appears twice");
+            rest = &rest[close..];
+        }
+    }
+    answers
+}
+
+fn stated(id: &str) -> String {
+    let answers = stated_answers();
+    let (_, value) = answers
+        .get(id)
+        .unwrap_or_else(|| panic!("the book states no answer {id}"));
+    value.clone()
+}
+
+/// The stated number and half a unit of its last printed digit.
+fn stated_number(id: &str) -> (f64, f64) {
+    let text = stated(id);
+    let x: f64 = text
+        .parse()
+        .unwrap_or_else(|_| panic!("answer {id} = {text:?} is not a number"));
+    let decimals = text.split_once('.').map_or(0, |(_, d)| d.len());
+    (x, 0.5 * 10f64.powi(-(decimals as i32)))
+}
+
+/// The book's number `id` is `computed` rounded to the printed digits.
+fn check_number(id: &str, computed: f64) {
+    let (x, half_unit) = stated_number(id);
+    assert!(
+        (x - computed).abs() <= half_unit + 1e-12,
+        "exercise answer {id}: the book says {x}, the workbook computes {computed}"
+    );
+}
+
+fn check_word(id: &str, computed: &str) {
+    let text = stated(id);
+    assert_eq!(text, computed, "exercise answer {id}");
+}
+
+fn yes_no(b: bool) -> &'static str {
+    if b {
+        "yes"
+    } else {
+        "no"
+    }
+}
+
+/// `workbook <args> --quick --json --no-figures` (exit code 0), parsed.
+fn run_json(args: &[&str]) -> serde_json::Value {
+    let mut all: Vec<&str> = args.to_vec();
+    all.extend(["--quick", "--json", "--no-figures"]);
+    let (code, out, err) = common::run(&all);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    serde_json::from_str(out.trim()).expect("one JSON object on stdout")
+}
+
+fn result(report: &serde_json::Value, key: &str) -> f64 {
+    report["results"][key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("result {key} is a number"))
+}
+
+/// Bisection for the switch of a monotone predicate on [lo, hi] (false at lo, true at hi).
+fn switch_point(mut lo: f64, mut hi: f64, pred: impl Fn(f64) -> bool) -> f64 {
+    assert!(!pred(lo) && pred(hi), "bracket");
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if pred(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
+}
+
+// ---------------------------------------------------------------- chapter 1
+
+#[test]
+fn chapter_1_locomotion_definition() {
+    let triangle = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]];
+    let diagonal = |s: f64| [s / 2f64.sqrt(), s / 2f64.sqrt()];
+    let s = switch_point(0.0, 10.0, |s| is_locomotion(diagonal(s), &triangle));
+    check_number("ex1.1-speed", s);
+
+    let r = run_json(&[
+        "locomotion-definition",
+        "--medium-velocity",
+        "1,0",
+        "--medium-velocity",
+        "0,3",
+        "--object-velocity",
+        "0.5,1.5",
+    ]);
+    check_word("ex1.2-locomotion", yes_no(r["results"]["is_locomotion"] == true));
+
+    let r = run_json(&["locomotion-definition", "--object-velocity=-1,4"]);
+    check_word("ex1.3-locomotion", yes_no(r["results"]["is_locomotion"] == true));
+
+    let media = [[5.0, 0.0], [0.0, 0.0]];
+    let v = switch_point(0.0, 10.0, |v| is_locomotion([v, 0.0], &media));
+    check_number("ex1.4-speed", v);
+}
+
+// ---------------------------------------------------------------- the book as a whole
+
+/// The ids checked by the tests above (kept in one list so that a new answer in the
+/// book without a check, or a check whose answer left the book, fails).
+const CHECKED: &[&str] = &["ex1.1-speed", "ex1.2-locomotion", "ex1.3-locomotion", "ex1.4-speed"];
+
+#[test]
+fn every_answer_is_checked_and_every_check_has_an_answer() {
+    let answers = stated_answers();
+    for id in answers.keys() {
+        assert!(CHECKED.contains(&id.as_str()), "answer {id} in the book has no check");
+    }
+    for id in CHECKED {
+        assert!(answers.contains_key(*id), "check {id} has no answer in the book");
+    }
+}
+
+/// The chapters written as lessons (all seven once the course is complete).
+const LESSONS: &[u32] = &[1];
+
+/// Every chapter is a lesson: a question, three or four goals, the source, 3 to 5
+/// exercises each with a collapsible solution.
+#[test]
+fn every_chapter_is_a_lesson() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/chapters");
+    for &n in LESSONS {
+        let path = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .find(|p| {
+                p.file_name()
+                    .unwrap()
+                    .to_string_lossy()
+                    .starts_with(&format!("{n:02}-"))
+            })
+            .unwrap_or_else(|| panic!("chapter {n}"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        let name = path.display();
+        assert!(text.contains("> **The question.**"), "{name}: question");
+        assert!(text.contains("> **The source.**"), "{name}: source");
+        let goals = text
+            .lines()
+            .skip_while(|l| !l.starts_with("> **After this chapter you can**"))
+            .skip(1)
+            .take_while(|l| l.starts_with(">"))
+            .filter(|l| l.len() > 4 && l[2..].starts_with(|c: char| c.is_ascii_digit()))
+            .count();
+        assert!((3..=4).contains(&goals), "{name}: {goals} learning goals");
+        let exercises = text.matches("\n**Exercise ").count();
+        assert!((3..=5).contains(&exercises), "{name}: {exercises} exercises");
+        let solutions = text.matches("<summary>Solution</summary>").count();
+        assert_eq!(solutions, exercises, "{name}: a solution per exercise");
+        let figures = text.matches("![").count();
+        let captions = text.matches("*What to notice.*").count();
+        assert_eq!(captions, figures, "{name}: a 'what to notice' caption per figure");
+    }
+}
+
+/// GitHub's math renderer breaks on `\,`, `\!`, `\{` and `\}` inside `$...$` (Markdown
+/// eats the backslash first): the course uses `\thinspace`, `\negthinspace`, `\lbrace`
+/// and `\rbrace` instead.
+#[test]
+fn math_reads_on_github() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/chapters");
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        let text = std::fs::read_to_string(&path).unwrap();
+        for bad in ["\\,", "\\!", "\\{", "\\}"] {
+            assert!(!text.contains(bad), "{}: contains {bad}", path.display());
+        }
+    }
+}
