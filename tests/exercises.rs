@@ -145,11 +145,94 @@ fn chapter_1_locomotion_definition() {
     check_number("ex1.4-speed", v);
 }
 
+// ---------------------------------------------------------------- chapter 2
+
+fn rod_ratio_at(angle_deg: f64) -> f64 {
+    let r = run_json(&["effective-mass", "--angle-deg", &angle_deg.to_string()]);
+    result(&r, "ratio_uniform_rod")
+}
+
+#[test]
+fn chapter_2_effective_mass() {
+    check_number("ex2.1-ratio", rod_ratio_at(30.0));
+
+    let r = run_json(&["effective-mass"]);
+    let best = result(&r, "best_angle_uniform_rod_deg");
+    check_number("ex2.2-angle-deg", best);
+    check_number("ex2.2-ratio", rod_ratio_at(best));
+
+    // The stated crossings, to their printed digits: the rod's ratio crosses mu = 0.4
+    // between the stated angle minus and plus half a unit of its last digit.
+    let mu = 0.4;
+    let (first, half) = stated_number("ex2.3-first-deg");
+    assert!(rod_ratio_at(first - half) <= mu && rod_ratio_at(first + half) > mu);
+    let (second, half) = stated_number("ex2.3-second-deg");
+    assert!(rod_ratio_at(second - half) > mu && rod_ratio_at(second + half) <= mu);
+
+    let r = run_json(&["effective-mass", "--angle-deg", "25"]);
+    check_number("ex2.4-point-mass", result(&r, "ratio_point_mass"));
+    check_number("ex2.4-rod", result(&r, "ratio_uniform_rod"));
+}
+
+// ---------------------------------------------------------------- chapter 3
+
+fn claim_number(report: &serde_json::Value, id: &str) -> f64 {
+    report["claims"]
+        .as_array()
+        .expect("claims")
+        .iter()
+        .find(|c| c["id"] == id)
+        .unwrap_or_else(|| panic!("claim {id}"))["computed"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("claim {id} computes a number"))
+}
+
+#[test]
+fn chapter_3_horizontal_shaking() {
+    let r = run_json(&["horizontal-shaking"]);
+    check_number("ex3.1-gamma-x", result(&r, "gamma_x"));
+    check_number("ex3.2-averaged-mps", result(&r, "drift_velocity_averaged_mps"));
+    check_number("ex3.2-exact-mps", result(&r, "drift_velocity_mps"));
+    check_number(
+        "ex3.3-slip-tilt-deg",
+        claim_number(&r, "booktop-slip-tilt-arctan-mu"),
+    );
+    // The averaged law at the booktop tilt, from the library's averaged drift.
+    let (mu, tilt) = (0.36, result(&r, "booktop_tilt_deg").to_radians());
+    let v = result(&r, "velocity_amplitude_mps");
+    let averaged =
+        locomotion_workbook::physics::friction::averaged_drift_velocity(tilt.tan() / mu, v);
+    check_number("ex3.3-averaged-mps", averaged);
+    check_number("ex3.3-exact-mps", result(&r, "booktop_drift_mps"));
+
+    let r = run_json(&["horizontal-shaking", "--frequency-hz", "10"]);
+    check_number("ex3.4-error", result(&r, "averaged_law_relative_error"));
+}
+
 // ---------------------------------------------------------------- the book as a whole
 
 /// The ids checked by the tests above (kept in one list so that a new answer in the
 /// book without a check, or a check whose answer left the book, fails).
-const CHECKED: &[&str] = &["ex1.1-speed", "ex1.2-locomotion", "ex1.3-locomotion", "ex1.4-speed"];
+const CHECKED: &[&str] = &[
+    "ex1.1-speed",
+    "ex1.2-locomotion",
+    "ex1.3-locomotion",
+    "ex1.4-speed",
+    "ex2.1-ratio",
+    "ex2.2-angle-deg",
+    "ex2.2-ratio",
+    "ex2.3-first-deg",
+    "ex2.3-second-deg",
+    "ex2.4-point-mass",
+    "ex2.4-rod",
+    "ex3.1-gamma-x",
+    "ex3.2-averaged-mps",
+    "ex3.2-exact-mps",
+    "ex3.3-slip-tilt-deg",
+    "ex3.3-averaged-mps",
+    "ex3.3-exact-mps",
+    "ex3.4-error",
+];
 
 #[test]
 fn every_answer_is_checked_and_every_check_has_an_answer() {
@@ -163,7 +246,7 @@ fn every_answer_is_checked_and_every_check_has_an_answer() {
 }
 
 /// The chapters written as lessons (all seven once the course is complete).
-const LESSONS: &[u32] = &[1];
+const LESSONS: &[u32] = &[1, 2, 3];
 
 /// Every chapter is a lesson: a question, three or four goals, the source, 3 to 5
 /// exercises each with a collapsible solution.
