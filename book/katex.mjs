@@ -21,7 +21,7 @@ function protect(html) {
     .split(/(<[^>]*>)/)
     .map((part, i) =>
       i % 2 === 1
-        ? part
+        ? part.replace(/\s*\n\s*/g, " ") // a newline (KaTeX's SVG paths) would end a table row
         : part.replace(/[\\`*_[\]{}()#+\-.!|~$'"<>]/g, (c) => `&#${c.charCodeAt(0)};`)
     )
     .join("");

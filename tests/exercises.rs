@@ -209,6 +209,39 @@ fn chapter_3_horizontal_shaking() {
     check_number("ex3.4-error", result(&r, "averaged_law_relative_error"));
 }
 
+// ---------------------------------------------------------------- chapter 4
+
+#[test]
+fn chapter_4_vertical_shaking() {
+    let r = run_json(&["vertical-shaking"]);
+    check_number("ex4.1-phase-rad", result(&r, "takeoff_phase_rad"));
+    // Gamma_n against the boundaries the chapter locates. In quick mode they are bisected
+    // to brackets of 2^-12 (the first boundary, 1 + 2^-12, shows the bracket), so the
+    // tolerance is half a printed unit plus that bracket.
+    let boundaries: Vec<f64> = r["results"]["regime_boundaries_gamma"]
+        .as_array()
+        .expect("boundaries")
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    let bracket = boundaries[0] - 1.0;
+    assert!(bracket > 0.0 && bracket < 1e-3, "bracket {bracket}");
+    for id in ["ex4.2-gamma-1", "ex4.2-gamma-2", "ex4.2-gamma-3"] {
+        let (x, half) = stated_number(id);
+        let nearest = boundaries
+            .iter()
+            .map(|b| (b - x).abs())
+            .fold(f64::INFINITY, f64::min);
+        assert!(nearest <= half + bracket, "{id}: {x}, nearest boundary off by {nearest}");
+    }
+    let threshold = r["results"]["chladni"]["drift_threshold_gamma"]
+        .as_f64()
+        .expect("threshold");
+    check_number("ex4.3-threshold", threshold);
+    check_number("ex4.4-law-mps", result(&r, "mean_velocity_law_mps"));
+    check_number("ex4.4-exact-mps", result(&r, "mean_velocity_mps"));
+}
+
 // ---------------------------------------------------------------- the book as a whole
 
 /// The ids checked by the tests above (kept in one list so that a new answer in the
@@ -232,6 +265,13 @@ const CHECKED: &[&str] = &[
     "ex3.3-averaged-mps",
     "ex3.3-exact-mps",
     "ex3.4-error",
+    "ex4.1-phase-rad",
+    "ex4.2-gamma-1",
+    "ex4.2-gamma-2",
+    "ex4.2-gamma-3",
+    "ex4.3-threshold",
+    "ex4.4-law-mps",
+    "ex4.4-exact-mps",
 ];
 
 #[test]
@@ -246,7 +286,7 @@ fn every_answer_is_checked_and_every_check_has_an_answer() {
 }
 
 /// The chapters written as lessons (all seven once the course is complete).
-const LESSONS: &[u32] = &[1, 2, 3];
+const LESSONS: &[u32] = &[1, 2, 3, 4];
 
 /// Every chapter is a lesson: a question, three or four goals, the source, 3 to 5
 /// exercises each with a collapsible solution.
