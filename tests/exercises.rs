@@ -242,6 +242,31 @@ fn chapter_4_vertical_shaking() {
     check_number("ex4.4-exact-mps", result(&r, "mean_velocity_mps"));
 }
 
+// ---------------------------------------------------------------- chapter 5
+
+#[test]
+fn chapter_5_asymmetric_shaking() {
+    let r = run_json(&["asymmetric-shaking"]);
+    check_number("ex5.1-drift-mps", result(&r, "drift_velocity_coulomb_mps"));
+    check_number("ex5.1-mirrored-mps", result(&r, "drift_velocity_mirrored_mps"));
+    check_number("ex5.2-lock-s", result(&r, "lock_time_s"));
+    check_number("ex5.4-linear-mps", result(&r, "drift_velocity_linear_mps"));
+
+    // The friction that stops the walk, to its printed digits: the regime changes between
+    // the stated mu minus and plus half a unit of its last digit.
+    let (mu, half) = stated_number("ex5.3-mu");
+    let regime = |mu: f64| {
+        let r = run_json(&["asymmetric-shaking", "--mu", &mu.to_string()]);
+        r["results"]["regime"].as_str().expect("regime").to_string()
+    };
+    let both = stated("ex5.3-regime");
+    assert_ne!(regime(mu - half), both);
+    assert_eq!(regime(mu + half), both);
+    let r = run_json(&["asymmetric-shaking", "--mu", "4.2"]);
+    check_word("ex5.3-regime", r["results"]["regime"].as_str().unwrap());
+    assert!(result(&r, "drift_velocity_coulomb_mps").abs() < 1e-12);
+}
+
 // ---------------------------------------------------------------- the book as a whole
 
 /// The ids checked by the tests above (kept in one list so that a new answer in the
@@ -272,6 +297,12 @@ const CHECKED: &[&str] = &[
     "ex4.3-threshold",
     "ex4.4-law-mps",
     "ex4.4-exact-mps",
+    "ex5.1-drift-mps",
+    "ex5.1-mirrored-mps",
+    "ex5.2-lock-s",
+    "ex5.3-mu",
+    "ex5.3-regime",
+    "ex5.4-linear-mps",
 ];
 
 #[test]
@@ -286,7 +317,7 @@ fn every_answer_is_checked_and_every_check_has_an_answer() {
 }
 
 /// The chapters written as lessons (all seven once the course is complete).
-const LESSONS: &[u32] = &[1, 2, 3, 4];
+const LESSONS: &[u32] = &[1, 2, 3, 4, 5];
 
 /// Every chapter is a lesson: a question, three or four goals, the source, 3 to 5
 /// exercises each with a collapsible solution.
