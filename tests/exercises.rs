@@ -267,6 +267,32 @@ fn chapter_5_asymmetric_shaking() {
     assert!(result(&r, "drift_velocity_coulomb_mps").abs() < 1e-12);
 }
 
+// ---------------------------------------------------------------- chapter 6
+
+#[test]
+fn chapter_6_stick_state_machine() {
+    use locomotion_workbook::physics::stick::params::{authors_scene, jamming_scene};
+    check_number("ex6.1-theta0-rad", authors_scene(10.0).theta0_rad);
+    let scene = jamming_scene(9.81);
+    check_number(
+        "ex6.1-thetaf-rad",
+        scene.static_angle().expect("a static angle"),
+    );
+    check_number("ex6.2-relax-ms", 1e3 / scene.relax_rate());
+    check_number("ex6.3-edge-rad", scene.mu.atan());
+
+    let r = run_json(&["stick-state-machine"]);
+    let v = result(&r, "mean_velocity_mps");
+    check_number("ex6.4-speed-mps", v);
+    let f = r["params"]["frequency_hz"].as_f64().expect("frequency");
+    check_number("ex6.4-step-mm", 1e3 * v / f);
+    let r = run_json(&["stick-state-machine", "--scene", "authors"]);
+    check_number("ex6.4-authors-mps", result(&r, "mean_velocity_mps"));
+    let phases = &r["results"]["phase_fractions"];
+    let sliding = phases["slide_left"].as_f64().unwrap() + phases["slide_right"].as_f64().unwrap();
+    check_number("ex6.4-authors-sliding", sliding);
+}
+
 // ---------------------------------------------------------------- the book as a whole
 
 /// The ids checked by the tests above (kept in one list so that a new answer in the
@@ -303,6 +329,14 @@ const CHECKED: &[&str] = &[
     "ex5.3-mu",
     "ex5.3-regime",
     "ex5.4-linear-mps",
+    "ex6.1-theta0-rad",
+    "ex6.1-thetaf-rad",
+    "ex6.2-relax-ms",
+    "ex6.3-edge-rad",
+    "ex6.4-speed-mps",
+    "ex6.4-step-mm",
+    "ex6.4-authors-mps",
+    "ex6.4-authors-sliding",
 ];
 
 #[test]
@@ -317,7 +351,7 @@ fn every_answer_is_checked_and_every_check_has_an_answer() {
 }
 
 /// The chapters written as lessons (all seven once the course is complete).
-const LESSONS: &[u32] = &[1, 2, 3, 4, 5];
+const LESSONS: &[u32] = &[1, 2, 3, 4, 5, 6];
 
 /// Every chapter is a lesson: a question, three or four goals, the source, 3 to 5
 /// exercises each with a collapsible solution.
