@@ -293,6 +293,49 @@ fn chapter_6_stick_state_machine() {
     check_number("ex6.4-authors-sliding", sliding);
 }
 
+// ---------------------------------------------------------------- chapter 7
+
+/// Largest fixed step (ms) for which one step of `method` on y' = -y/tau (tau = 1 ms)
+/// does not amplify y: the stability limit, located by bisection on the workbook's own
+/// integrator.
+fn stability_limit_ms(method: locomotion_workbook::numerics::ode::Method) -> f64 {
+    use locomotion_workbook::numerics::ode::{Integrator, StepControl};
+    let tau = 1e-3;
+    let amplifies = |h_ms: f64| {
+        let h = h_ms * 1e-3;
+        let mut integ = Integrator::new(method, StepControl::Fixed { h_s: h });
+        let sys = |_t: f64, y: &[f64; 1]| [-y[0] / tau];
+        let y = integ.integrate(&sys, 0.0, [1.0], h, |_| {}).expect("one step");
+        y[0].abs() > 1.0
+    };
+    switch_point(0.5, 5.0, amplifies)
+}
+
+#[test]
+fn chapter_7_speed_vs_accuracy() {
+    use locomotion_workbook::numerics::ode::Method;
+    check_number("ex7.1-euler-ms", stability_limit_ms(Method::Euler));
+    check_number("ex7.1-rk4-ms", stability_limit_ms(Method::Rk4));
+
+    let r = run_json(&["speed-vs-accuracy"]);
+    // The Zeno time as the run reports it ("Outcome::Zeno at 1.355 s").
+    let zeno = r["results"]["failures"]
+        .as_array()
+        .expect("failures")
+        .iter()
+        .filter_map(|f| f["symptom"].as_str())
+        .find_map(|s| s.split("Outcome::Zeno at ").nth(1))
+        .expect("a Zeno failure");
+    let t: f64 = zeno.trim_end_matches(|c: char| !c.is_ascii_digit()).parse().unwrap();
+    check_number("ex7.2-zeno-s", t);
+    let economy = &r["results"]["economy"];
+    check_number("ex7.3-flight-map", economy["flight_map_error"].as_f64().unwrap());
+    check_number("ex7.3-mu-eff-law", economy["mu_eff_law_error"].as_f64().unwrap());
+    let evals = &r["results"]["stick_rhs_evals_at_1e-10"];
+    let ratio = evals["dop853"].as_f64().unwrap() / evals["dopri5"].as_f64().unwrap();
+    check_number("ex7.4-ratio", ratio);
+}
+
 // ---------------------------------------------------------------- the book as a whole
 
 /// The ids checked by the tests above (kept in one list so that a new answer in the
@@ -337,6 +380,12 @@ const CHECKED: &[&str] = &[
     "ex6.4-step-mm",
     "ex6.4-authors-mps",
     "ex6.4-authors-sliding",
+    "ex7.1-euler-ms",
+    "ex7.1-rk4-ms",
+    "ex7.2-zeno-s",
+    "ex7.3-flight-map",
+    "ex7.3-mu-eff-law",
+    "ex7.4-ratio",
 ];
 
 #[test]
@@ -351,7 +400,7 @@ fn every_answer_is_checked_and_every_check_has_an_answer() {
 }
 
 /// The chapters written as lessons (all seven once the course is complete).
-const LESSONS: &[u32] = &[1, 2, 3, 4, 5, 6];
+const LESSONS: &[u32] = &[1, 2, 3, 4, 5, 6, 7];
 
 /// Every chapter is a lesson: a question, three or four goals, the source, 3 to 5
 /// exercises each with a collapsible solution.
