@@ -191,6 +191,21 @@ async function main() {
           clip: { x: 0, y: 0, width: 1280, height, scale: 0.5 },
         });
         writeFileSync(join(shotDir, `${name}-full.png`), Buffer.from(full.data, "base64"));
+        // The exercises with every solution opened, at full scale.
+        const { result: top } = await s("Runtime.evaluate", {
+          expression: `(() => { document.querySelectorAll("details").forEach((d) => (d.open = true));
+            const h = document.getElementById("exercises");
+            return h ? h.getBoundingClientRect().top + window.scrollY : -1; })()`,
+          returnByValue: true,
+        });
+        if (top.value >= 0) {
+          const ex = await s("Page.captureScreenshot", {
+            format: "png",
+            captureBeyondViewport: true,
+            clip: { x: 300, y: top.value - 20, width: 980, height: 2400, scale: 1 },
+          });
+          writeFileSync(join(shotDir, `${name}-exercises.png`), Buffer.from(ex.data, "base64"));
+        }
       }
       console.log(`ok ${page}: ${info.katexCount} formulas, ${info.links.length} links`);
     }

@@ -135,10 +135,16 @@ fn chapter_1_locomotion_definition() {
         "--object-velocity",
         "0.5,1.5",
     ]);
-    check_word("ex1.2-locomotion", yes_no(r["results"]["is_locomotion"] == true));
+    check_word(
+        "ex1.2-locomotion",
+        yes_no(r["results"]["is_locomotion"] == true),
+    );
 
     let r = run_json(&["locomotion-definition", "--object-velocity=-1,4"]);
-    check_word("ex1.3-locomotion", yes_no(r["results"]["is_locomotion"] == true));
+    check_word(
+        "ex1.3-locomotion",
+        yes_no(r["results"]["is_locomotion"] == true),
+    );
 
     let media = [[5.0, 0.0], [0.0, 0.0]];
     let v = switch_point(0.0, 10.0, |v| is_locomotion([v, 0.0], &media));
@@ -191,7 +197,10 @@ fn claim_number(report: &serde_json::Value, id: &str) -> f64 {
 fn chapter_3_horizontal_shaking() {
     let r = run_json(&["horizontal-shaking"]);
     check_number("ex3.1-gamma-x", result(&r, "gamma_x"));
-    check_number("ex3.2-averaged-mps", result(&r, "drift_velocity_averaged_mps"));
+    check_number(
+        "ex3.2-averaged-mps",
+        result(&r, "drift_velocity_averaged_mps"),
+    );
     check_number("ex3.2-exact-mps", result(&r, "drift_velocity_mps"));
     check_number(
         "ex3.3-slip-tilt-deg",
@@ -232,7 +241,10 @@ fn chapter_4_vertical_shaking() {
             .iter()
             .map(|b| (b - x).abs())
             .fold(f64::INFINITY, f64::min);
-        assert!(nearest <= half + bracket, "{id}: {x}, nearest boundary off by {nearest}");
+        assert!(
+            nearest <= half + bracket,
+            "{id}: {x}, nearest boundary off by {nearest}"
+        );
     }
     let threshold = r["results"]["chladni"]["drift_threshold_gamma"]
         .as_f64()
@@ -248,7 +260,10 @@ fn chapter_4_vertical_shaking() {
 fn chapter_5_asymmetric_shaking() {
     let r = run_json(&["asymmetric-shaking"]);
     check_number("ex5.1-drift-mps", result(&r, "drift_velocity_coulomb_mps"));
-    check_number("ex5.1-mirrored-mps", result(&r, "drift_velocity_mirrored_mps"));
+    check_number(
+        "ex5.1-mirrored-mps",
+        result(&r, "drift_velocity_mirrored_mps"),
+    );
     check_number("ex5.2-lock-s", result(&r, "lock_time_s"));
     check_number("ex5.4-linear-mps", result(&r, "drift_velocity_linear_mps"));
 
@@ -305,7 +320,9 @@ fn stability_limit_ms(method: locomotion_workbook::numerics::ode::Method) -> f64
         let h = h_ms * 1e-3;
         let mut integ = Integrator::new(method, StepControl::Fixed { h_s: h });
         let sys = |_t: f64, y: &[f64; 1]| [-y[0] / tau];
-        let y = integ.integrate(&sys, 0.0, [1.0], h, |_| {}).expect("one step");
+        let y = integ
+            .integrate(&sys, 0.0, [1.0], h, |_| {})
+            .expect("one step");
         y[0].abs() > 1.0
     };
     switch_point(0.5, 5.0, amplifies)
@@ -326,11 +343,20 @@ fn chapter_7_speed_vs_accuracy() {
         .filter_map(|f| f["symptom"].as_str())
         .find_map(|s| s.split("Outcome::Zeno at ").nth(1))
         .expect("a Zeno failure");
-    let t: f64 = zeno.trim_end_matches(|c: char| !c.is_ascii_digit()).parse().unwrap();
+    let t: f64 = zeno
+        .trim_end_matches(|c: char| !c.is_ascii_digit())
+        .parse()
+        .unwrap();
     check_number("ex7.2-zeno-s", t);
     let economy = &r["results"]["economy"];
-    check_number("ex7.3-flight-map", economy["flight_map_error"].as_f64().unwrap());
-    check_number("ex7.3-mu-eff-law", economy["mu_eff_law_error"].as_f64().unwrap());
+    check_number(
+        "ex7.3-flight-map",
+        economy["flight_map_error"].as_f64().unwrap(),
+    );
+    check_number(
+        "ex7.3-mu-eff-law",
+        economy["mu_eff_law_error"].as_f64().unwrap(),
+    );
     let evals = &r["results"]["stick_rhs_evals_at_1e-10"];
     let ratio = evals["dop853"].as_f64().unwrap() / evals["dopri5"].as_f64().unwrap();
     check_number("ex7.4-ratio", ratio);
@@ -392,10 +418,16 @@ const CHECKED: &[&str] = &[
 fn every_answer_is_checked_and_every_check_has_an_answer() {
     let answers = stated_answers();
     for id in answers.keys() {
-        assert!(CHECKED.contains(&id.as_str()), "answer {id} in the book has no check");
+        assert!(
+            CHECKED.contains(&id.as_str()),
+            "answer {id} in the book has no check"
+        );
     }
     for id in CHECKED {
-        assert!(answers.contains_key(*id), "check {id} has no answer in the book");
+        assert!(
+            answers.contains_key(*id),
+            "check {id} has no answer in the book"
+        );
     }
 }
 
@@ -431,12 +463,18 @@ fn every_chapter_is_a_lesson() {
             .count();
         assert!((3..=4).contains(&goals), "{name}: {goals} learning goals");
         let exercises = text.matches("\n**Exercise ").count();
-        assert!((3..=5).contains(&exercises), "{name}: {exercises} exercises");
+        assert!(
+            (3..=5).contains(&exercises),
+            "{name}: {exercises} exercises"
+        );
         let solutions = text.matches("<summary>Solution</summary>").count();
         assert_eq!(solutions, exercises, "{name}: a solution per exercise");
         let figures = text.matches("![").count();
         let captions = text.matches("*What to notice.*").count();
-        assert_eq!(captions, figures, "{name}: a 'what to notice' caption per figure");
+        assert_eq!(
+            captions, figures,
+            "{name}: a 'what to notice' caption per figure"
+        );
     }
 }
 
