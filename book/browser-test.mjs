@@ -209,6 +209,23 @@ async function main() {
       }
       console.log(`ok ${page}: ${info.katexCount} formulas, ${info.links.length} links`);
     }
+    // Equations need no JavaScript: a chapter loaded with scripts disabled still has its
+    // KaTeX elements, laid out in KaTeX's fonts.
+    const probe = list.find((p) => p.startsWith("chapters/02-")) ?? list[list.length - 1];
+    current = `${probe} (JavaScript disabled)`;
+    await s("Emulation.setScriptExecutionDisabled", { value: true });
+    const reloaded = cdp.once("Page.loadEventFired", 30000);
+    await s("Page.navigate", { url: pathToFileURL(join(bookDir, probe)).href });
+    await reloaded;
+    await new Promise((r) => setTimeout(r, 400));
+    await s("Emulation.setScriptExecutionDisabled", { value: false });
+    const { result: nojs } = await s("Runtime.evaluate", { expression: inspect, returnByValue: true });
+    const nojsInfo = JSON.parse(nojs.value);
+    if (nojsInfo.katexCount === 0 || !/KaTeX/.test(nojsInfo.katexFont)) {
+      failures.push(`${current}: no KaTeX math (${nojsInfo.katexCount} elements, font ${nojsInfo.katexFont})`);
+    } else {
+      console.log(`ok ${current}: ${nojsInfo.katexCount} formulas in KaTeX fonts`);
+    }
     // Internal links: the target file exists; an anchor exists on the target page.
     let internal = 0;
     for (const { page, href } of allLinks) {
