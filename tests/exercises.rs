@@ -490,5 +490,25 @@ fn math_reads_on_github() {
         for bad in ["\\,", "\\!", "\\{", "\\}"] {
             assert!(!text.contains(bad), "{}: contains {bad}", path.display());
         }
+        // An inline formula must not run on into a quoted line: the `>` would become
+        // part of the formula.
+        let mut open = false;
+        for (i, line) in text.lines().enumerate() {
+            if open && line.trim_start().starts_with('>') {
+                panic!(
+                    "{}:{}: inline math continues into a quote",
+                    path.display(),
+                    i + 1
+                );
+            }
+            let dollars = line
+                .replace("\\$", "")
+                .replace("$$", "")
+                .matches('$')
+                .count();
+            if dollars % 2 == 1 {
+                open = !open;
+            }
+        }
     }
 }
