@@ -243,8 +243,16 @@ async function main() {
     }
     console.log(`${list.length} pages, ${internal} internal links checked; screenshots in ${shotDir}`);
   } finally {
+    // Wait for Chromium to exit before removing its profile (it writes there until it
+    // is gone); a leftover temporary profile is no test failure.
+    const exited = new Promise((r) => proc.once("exit", r));
     proc.kill();
-    rmSync(profile, { recursive: true, force: true });
+    await Promise.race([exited, new Promise((r) => setTimeout(r, 10000))]);
+    try {
+      rmSync(profile, { recursive: true, force: true, maxRetries: 5, retryDelay: 200 });
+    } catch (e) {
+      console.error(`note: could not remove ${profile}: ${e.message}`);
+    }
   }
   if (failures.length > 0) {
     for (const f of failures) console.error(`FAIL ${f}`);
