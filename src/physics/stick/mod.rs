@@ -48,6 +48,7 @@ pub mod params;
 pub mod rules;
 pub mod run;
 mod system;
+pub mod timestepping;
 
 use crate::numerics::trig::{sin_cos, sin_cos_turns};
 use std::f64::consts::TAU;
