@@ -17,6 +17,8 @@ pub mod failures;
 pub mod figures;
 pub mod measure;
 pub mod report_parts;
+pub mod stick_methods;
+pub mod stick_methods_report;
 pub mod stick_part;
 pub mod tables;
 pub mod work_precision;
@@ -110,5 +112,5 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    Vec::new()
+    stick_methods_report::mutations()
 }

@@ -47,6 +47,7 @@ pub mod flight;
 pub mod params;
 pub mod rules;
 pub mod run;
+pub mod soft;
 mod system;
 pub mod timestepping;
 
