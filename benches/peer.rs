@@ -20,7 +20,7 @@ use locomotion_workbook::chapters::speed_vs_accuracy::measure::{
     drift_block_model, stick_speed, timed,
 };
 use locomotion_workbook::numerics::hybrid::Options;
-use locomotion_workbook::numerics::ode::StepControl;
+use locomotion_workbook::numerics::ode::{Method, StepControl};
 use locomotion_workbook::physics::stick::{authors_scene, StickModel};
 use std::process::Command;
 
@@ -55,6 +55,16 @@ fn peer(python: &str, script: &str, args: &[String]) -> Option<serde_json::Value
 }
 
 fn compare(what: &str, ours: (f64, f64), exact: f64, p: Option<serde_json::Value>) -> bool {
+    compare_as(what, "RK45", ours, exact, p)
+}
+
+fn compare_as(
+    what: &str,
+    method: &str,
+    ours: (f64, f64),
+    exact: f64,
+    p: Option<serde_json::Value>,
+) -> bool {
     let Some(p) = p else {
         println!("{what}: SciPy peer not available");
         return false;
@@ -63,7 +73,7 @@ fn compare(what: &str, ours: (f64, f64), exact: f64, p: Option<serde_json::Value
         p["mean_velocity_mps"].as_f64().unwrap_or(f64::NAN),
         p["wall_s"].as_f64().unwrap_or(f64::NAN),
     );
-    println!("{what}: SciPy solve_ivp (RK45): mean speed {pv:.12e} m/s in {pw:.3e} s ({} rhs evaluations)", p["rhs_evals"]);
+    println!("{what}: SciPy solve_ivp ({method}): mean speed {pv:.12e} m/s in {pw:.3e} s ({} rhs evaluations)", p["rhs_evals"]);
     println!("{what}: speed ratio SciPy / workbook = {:.0}", pw / ours.1);
     println!(
         "{what}: difference of mean speeds = {:.3e} m/s (relative {:.3e}; workbook against its own reference {:.3e})",
@@ -130,6 +140,27 @@ fn main() {
         peer(&python, "stick_scipy.py", &stick_args),
     );
 
+    // 1b. the stick with the best pair on each side: the workbook's default DOP853
+    // against SciPy's DOP853, same tolerance and scene.
+    let opts853 = Options {
+        method: Method::Dop853,
+        ..opts
+    };
+    let (ours853, wall853) = timed(repeats, || stick_speed(&model, cycles, &opts853).0);
+    println!("stick: workbook (DOP853, events located): mean speed {:.12e} m/s in {wall853:.3e} s ({} rhs evaluations, {:.0} cycles/s)", ours853.value, ours853.rhs_evals, cycles / wall853);
+    let args853: Vec<String> = stick_args
+        .iter()
+        .cloned()
+        .chain(["--method".to_string(), "DOP853".to_string()])
+        .collect();
+    let ok_853 = compare_as(
+        "stick",
+        "DOP853",
+        (ours853.value, wall853),
+        reference.value,
+        peer(&python, "stick_scipy.py", &args853),
+    );
+
     // 2. the block
     let s = BlockScene::new(30.0, 2.5, 0.4, 0.02, 9.81);
     let (ours, wall) = timed(repeats, || drift_block_model(&s, &opts, false, 20, 10, 40));
@@ -148,7 +179,7 @@ fn main() {
         exact,
         peer(&python, "block_scipy.py", &block_args),
     );
-    if !(ok_stick && ok_block) {
+    if !(ok_stick && ok_853 && ok_block) {
         std::process::exit(1);
     }
 }

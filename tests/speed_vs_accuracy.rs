@@ -322,3 +322,24 @@ fn bad_input_names_the_flag() {
         );
     }
 }
+
+#[test]
+fn the_stick_methods_claims_fail_when_their_order_is_off_by_one() {
+    // Each mutation reruns its claim's check (the quick ladder on the default scene)
+    // against a wrong statement (order 2 instead of 1): the verdict must change from
+    // confirmed (the chapter's quick run, snapshot above) to failed.
+    let muts = locomotion_workbook::chapters::mutations("speed-vs-accuracy");
+    assert!(muts.len() >= 2);
+    for m in muts {
+        let c = (m.run)();
+        assert_eq!(c.id, m.claim_id);
+        assert_eq!(
+            c.verdict,
+            locomotion_workbook::report::Verdict::Failed,
+            "{}: {} gave {:?}",
+            m.claim_id,
+            m.description,
+            c.computed
+        );
+    }
+}

@@ -382,3 +382,73 @@ fn integrating_the_slide_into_theta_zero_fails_the_pivot_crosses_it() {
         .unwrap();
     assert!(crossed && y1.iter().all(|v| v.is_finite()), "{y1:?}");
 }
+
+// ---- Stiff soft contact: the stick standing in a penalty contact on a still plate.
+//
+// With the regularisation eps of `physics::stick::soft` the contact's damping time is
+// m / c_n = eps tau_0 (tau_0 = T/30 = 1.1 ms at 30 Hz). Standing still, nothing moves
+// on that scale, but an explicit method must keep h / (eps tau_0) inside its stability
+// interval (about 3.3 for DP5): at eps = 1e-4 that is h <= 3.7e-7 s, over 0.2 s about
+// 5.4e5 steps, beyond a budget of 1e5; the L-stable Rosenbrock 2(3) takes steps set by
+// accuracy alone (the state is at rest): far fewer than 1e4.
+
+use locomotion_workbook::physics::stick::soft::run::{simulate_soft, SoftOutcome};
+use locomotion_workbook::physics::stick::StickParams;
+
+fn still_plate_stick() -> StickParams {
+    // The self-locking stick (L = 0.15 m, m = 1 kg, k = 10, gamma = 0.01, mu = 0.4,
+    // theta_0 = 0.3) on a plate that does not move (Gamma = 0).
+    StickParams::new(0.15, 1.0, 10.0, 0.01, 0.4, 0.3, 9.81, 0.0, 30.0)
+}
+
+#[test]
+fn explicit_pair_exhausts_its_budget_on_stiff_soft_contact_the_rosenbrock_method_does_not() {
+    let p = still_plate_stick();
+    let cycles = 6.0; // 0.2 s
+                      // atol 1e-13 m: below the static penetration m g / k_n = 1.2e-10 m at eps = 1e-4
+    let ctl = StepControl::tol(1e-8, 1e-13);
+    let budget = 100_000;
+    let ros = simulate_soft(&p, 1e-4, cycles, Method::Rosenbrock23, ctl, budget);
+    assert_eq!(ros.outcome, SoftOutcome::Completed, "{ros:?}");
+    assert!(ros.stats.accepted < 10_000, "{ros:?}");
+    // At rest: C creeps at most at the slip scale v_eps = 1e-5 m/s (the friction
+    // needed at the static angle is zero; the settling transient moves C sideways).
+    assert!(ros.mean_velocity_mps.abs() < 1e-5, "{ros:?}");
+    let dp = simulate_soft(&p, 1e-4, cycles, Method::Dopri5, ctl, budget);
+    assert!(matches!(dp.outcome, SoftOutcome::Budget { .. }), "{dp:?}");
+    // The explicit pair's steps sit at its stability limit, of the order of the
+    // contact's damping time eps tau_0 = 1.1e-7 s (measured mean step 1.3e-6 s: the
+    // stiff mode's rate is c_n over an effective mass that the turning rod changes, and
+    // DP5's interval reaches 3.3 / rate); the band [0.3, 30] eps tau_0 still separates
+    // it from the Rosenbrock method's steps (0.2 s / 73 = 2.7e-3 s).
+    let tau0 = p.period_s() / 30.0;
+    let h_dp = (dp.stats.accepted as f64).recip()
+        * match dp.outcome {
+            SoftOutcome::Budget { t_s } => t_s,
+            _ => unreachable!(),
+        };
+    assert!(
+        h_dp < 30.0 * 1e-4 * tau0 && h_dp > 0.3 * 1e-4 * tau0,
+        "DP5's mean step {h_dp} s"
+    );
+}
+
+#[test]
+fn the_explicit_pairs_step_count_grows_as_1_over_eps_the_implicit_one_does_not() {
+    // Same scene, 0.1 s, eps from 1e-2 to 1e-3: DP5's steps grow ~10x (stability-bound:
+    // h ~ eps tau_0), Rosenbrock's stay within a factor 3 (accuracy-bound).
+    let p = still_plate_stick();
+    let ctl = StepControl::tol(1e-8, 1e-13);
+    let steps = |m: Method, eps: f64| {
+        let r = simulate_soft(&p, eps, 3.0, m, ctl, 1_000_000);
+        assert_eq!(r.outcome, SoftOutcome::Completed, "{m:?} {eps}: {r:?}");
+        r.stats.accepted as f64
+    };
+    let (d2, d3) = (steps(Method::Dopri5, 1e-2), steps(Method::Dopri5, 1e-3));
+    let (r2, r3) = (
+        steps(Method::Rosenbrock23, 1e-2),
+        steps(Method::Rosenbrock23, 1e-3),
+    );
+    assert!(d3 / d2 > 5.0, "DP5 {d2} -> {d3}");
+    assert!(r3 / r2 < 3.0, "Rosenbrock {r2} -> {r3}");
+}

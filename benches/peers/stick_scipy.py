@@ -32,6 +32,7 @@ class Stick:
     def __init__(self, a):
         self.L, self.m, self.k, self.gam, self.mu = a.length_m, a.mass_kg, a.k, a.gamma_damper, a.mu
         self.th0, self.g = a.theta0_rad, a.g_mps2
+        self.method = a.method
         self.w = 2 * math.pi * a.frequency_hz
         self.d = a.gamma * self.g / self.w ** 2
         self.T = 2 * math.pi / self.w
@@ -216,7 +217,7 @@ class Stick:
                    ev(lambda t, u: math.sin(u[1]), 0),
                    ev(lambda t, u: sg * u[2] - 1e-9, 1)]
         u0 = [y0[0], y0[2], y0[3], y0[5]]
-        sol = solve_ivp(rhs, (t0, t_end), u0, method="RK45", rtol=tol, atol=tol, events=evs, max_step=self.T / 14)
+        sol = solve_ivp(rhs, (t0, t_end), u0, method=self.method, rtol=tol, atol=tol, events=evs, max_step=self.T / 14)
         hits = [(te[0], i) for i, te in enumerate(sol.t_events) if len(te)]
         if not hits:
             if not sol.success:
@@ -273,6 +274,7 @@ def main():
     p.add_argument("--cycles", type=float, default=50.0)
     p.add_argument("--tol", type=float, default=1e-10, help="rtol = atol")
     p.add_argument("--repeats", type=int, default=3)
+    p.add_argument("--method", default="RK45", help="solve_ivp method (RK45, DOP853, ...)")
     a = p.parse_args()
     best, v, nfev, hops = math.inf, float("nan"), 0, 0
     for _ in range(max(1, a.repeats)):

@@ -19,6 +19,8 @@ pub mod figures;
 pub mod measure;
 pub mod missed_event;
 pub mod report_parts;
+pub mod stick_methods;
+pub mod stick_methods_report;
 pub mod stick_part;
 pub mod tables;
 pub mod work_precision;
@@ -120,5 +122,6 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &doc::Doc) -> Result<ChapterRep
 pub fn mutations() -> Vec<crate::report::Mutation> {
     let mut all = doc::mutations();
     all.push(missed_event::mutation());
+    all.extend(stick_methods_report::mutations());
     all
 }

@@ -16,6 +16,7 @@
 mod common;
 mod dop853;
 mod dopri5;
+mod rosenbrock;
 mod step;
 
 use common::{comb, finite, initial_step, stage_arg, Tol};
@@ -34,6 +35,12 @@ pub trait OdeSystem<const N: usize> {
 
     /// The right-hand side `f(t, y)`.
     fn rhs(&self, t: f64, y: &[f64; N]) -> [f64; N];
+
+    /// The Jacobian `df/dy` at `(t, y)`, row-major, for the implicit method; `None`
+    /// (the default): the method forms it by finite differences.
+    fn jacobian(&self, _t: f64, _y: &[f64; N]) -> Option<[[f64; N]; N]> {
+        None
+    }
 }
 
 impl<F, const N: usize> OdeSystem<N> for F
@@ -59,6 +66,10 @@ pub enum Method {
     /// eleven new evaluations per step (first-same-as-last), three more for a step whose
     /// interior is evaluated (the order-7 interpolant).
     Dop853,
+    /// The linearly implicit Rosenbrock 2(3) pair of Shampine & Reichelt (MATLAB's
+    /// `ode23s`), order 2, L-stable, for stiff systems: two evaluations and one LU of
+    /// `I - h d J` per step, plus `N + 1` evaluations for a finite-difference Jacobian.
+    Rosenbrock23,
 }
 
 impl Method {
@@ -69,6 +80,7 @@ impl Method {
             Method::Rk4 => "rk4",
             Method::Dopri5 => "dopri5",
             Method::Dop853 => "dop853",
+            Method::Rosenbrock23 => "rosenbrock23",
         }
     }
 
@@ -79,6 +91,7 @@ impl Method {
             Method::Rk4 => 4,
             Method::Dopri5 => 5,
             Method::Dop853 => 8,
+            Method::Rosenbrock23 => 2,
         }
     }
 }
@@ -91,7 +104,7 @@ pub enum StepControl {
         /// Step size (s).
         h_s: f64,
     },
-    /// Error-controlled steps (the Dormand-Prince pairs only): per component the local error estimate is
+    /// Error-controlled steps (the Dormand-Prince pairs and Rosenbrock 2(3)): per component the local error estimate is
     /// kept below `atol + rtol * |y|` in the RMS norm; steps never exceed `h_max_s`.
     Adaptive {
         /// Relative tolerance.
@@ -250,6 +263,21 @@ impl<const N: usize> Integrator<N> {
                 self.adaptive(sys, t, y, f0, span, Tol { rtol, atol }, h_max_s)?;
                 Ok(&self.last)
             }
+            (
+                Method::Rosenbrock23,
+                StepControl::Adaptive {
+                    rtol,
+                    atol,
+                    h_max_s,
+                },
+            ) => {
+                self.rosenbrock(sys, (t, y, f0), span, Some(Tol { rtol, atol }), h_max_s)?;
+                Ok(&self.last)
+            }
+            (Method::Rosenbrock23, StepControl::Fixed { h_s }) => {
+                self.rosenbrock(sys, (t, y, f0), span, None, h_s.min(span))?;
+                Ok(&self.last)
+            }
             (method, control) => {
                 let h_fixed = match control {
                     StepControl::Fixed { h_s } => h_s,
@@ -300,6 +328,7 @@ impl<const N: usize> Integrator<N> {
                         let (trial, _) = self.trial(sys, t, y, &f0, h, Tol::UNUSED);
                         self.accept(sys, t, y, t1, trial)
                     }
+                    Method::Rosenbrock23 => unreachable!("matched above"),
                 };
                 if !finite(&self.last.y1) {
                     return Err(OdeError::NonFinite { t_s: t1 });

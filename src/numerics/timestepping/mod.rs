@@ -35,6 +35,9 @@
 //! The model supplies its contact data through [`ContactModel`]; this module knows
 //! nothing of blocks, balls or sticks.
 
+mod cases;
+pub use cases::{contact_solutions, distinct_solutions};
+
 /// The data a mechanical system with one frictional unilateral contact supplies.
 ///
 /// Coordinates `q` and velocities `v` have the same dimension `N`, and `q' = v`.
@@ -249,7 +252,73 @@ fn mat_vec<const N: usize>(m: &[[f64; N]; N], x: &[f64; N]) -> [f64; N] {
     out
 }
 
+/// The local contact problem of one step, as [`step`] poses it: `u = u_free + W P`
+/// with `0 <= u_n + s0 _|_ P_n >= 0` and Coulomb's law on `(u_t, P_t)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LocalProblem<const N: usize> {
+    /// The Delassus matrix `W = [w_n w_t]^T M^-1 [w_n w_t]` (1/kg in a mass-like metric).
+    pub w: [[f64; 2]; 2],
+    /// The free relative velocities `(u_n, u_t)` at the end of the step (m/s).
+    pub u_free: [f64; 2],
+    /// Newton's target `e u_n,k` (m/s, zero or negative).
+    pub s0: f64,
+    /// `M^-1 w_n` and `M^-1 w_t`: the velocity change per unit impulse.
+    pub m_wn: [f64; N],
+    /// See `m_wn`.
+    pub m_wt: [f64; N],
+    /// The free velocity update `v_free`.
+    pub v_free: [f64; N],
+    /// The midpoint coordinates `q_m`.
+    pub q_m: [f64; N],
+}
+
+/// The midpoint, the free velocity and, when the contact is active at the midpoint, the
+/// local problem of a step of length `h` from `(t, q, v)`: `(q_m, v_free, problem)`.
+pub fn local_problem<M: ContactModel<N> + ?Sized, const N: usize>(
+    model: &M,
+    t: f64,
+    q: &[f64; N],
+    v: &[f64; N],
+    h: f64,
+    theta: f64,
+) -> ([f64; N], [f64; N], Option<LocalProblem<N>>) {
+    let t1 = t + h;
+    let t_m = t + (1.0 - theta) * h;
+    let mut q_m = *q;
+    for i in 0..N {
+        q_m[i] += (1.0 - theta) * h * v[i]; // formula: q_m = q_k + (1 - theta) h v_k
+    }
+    let v_free = model.free_velocity(t_m, &q_m, v, h); // formula: v_free = v_k + h M^-1 f
+    if model.gap(t_m, &q_m) > 0.0 {
+        return (q_m, v_free, None);
+    }
+    let (wn, wt) = model.jacobians(t_m, &q_m);
+    let minv = model.inv_mass(t_m, &q_m, h);
+    let (m_wn, m_wt) = (mat_vec(&minv, &wn), mat_vec(&minv, &wt));
+    // formula: W = [w_n w_t]^T M^-1 [w_n w_t]
+    let w = [
+        [dot(&wn, &m_wn), dot(&wn, &m_wt)],
+        [dot(&wt, &m_wn), dot(&wt, &m_wt)],
+    ];
+    let (bn0, _) = model.obstacle_velocity(t);
+    let (bn1, bt1) = model.obstacle_velocity(t1);
+    let un_k = dot(&wn, v) - bn0; // formula: u_n,k = w_n . v_k - b_n(t_k)
+    let u_free = [dot(&wn, &v_free) - bn1, dot(&wt, &v_free) - bt1];
+    let s0 = model.restitution() * un_k.min(0.0); // formula: e u_n,k (approaching only)
+    let problem = LocalProblem {
+        w,
+        u_free,
+        s0,
+        m_wn,
+        m_wt,
+        v_free,
+        q_m,
+    };
+    (q_m, v_free, Some(problem))
+}
+
 /// One Moreau-Jean step of length `h` from `(t, q, v)`: returns `(q1, v1, impulse)`.
+#[allow(clippy::needless_range_loop)] // v1, m_wn, m_wt: one index over three arrays
 pub fn step<M: ContactModel<N> + ?Sized, const N: usize>(
     model: &M,
     t: f64,
@@ -259,36 +328,18 @@ pub fn step<M: ContactModel<N> + ?Sized, const N: usize>(
     theta: f64,
 ) -> Result<([f64; N], [f64; N], Impulse), MjError> {
     let t1 = t + h;
-    let t_m = t + (1.0 - theta) * h;
-    let mut q_m = *q;
-    for i in 0..N {
-        q_m[i] += (1.0 - theta) * h * v[i]; // formula: q_m = q_k + (1 - theta) h v_k
-    }
-    let v_free = model.free_velocity(t_m, &q_m, v, h); // formula: v_free = v_k + h M^-1 f
+    let (q_m, v_free, problem) = local_problem(model, t, q, v, h, theta);
     let mut v1 = v_free;
     let mut impulse = Impulse {
         status: ContactStatus::Inactive,
         p_n: 0.0,
         p_t: 0.0,
     };
-    if model.gap(t_m, &q_m) <= 0.0 {
-        let (wn, wt) = model.jacobians(t_m, &q_m);
-        let minv = model.inv_mass(t_m, &q_m, h);
-        let (mwn, mwt) = (mat_vec(&minv, &wn), mat_vec(&minv, &wt));
-        // formula: W = [w_n w_t]^T M^-1 [w_n w_t]
-        let w = [
-            [dot(&wn, &mwn), dot(&wn, &mwt)],
-            [dot(&wt, &mwn), dot(&wt, &mwt)],
-        ];
-        let (bn0, _) = model.obstacle_velocity(t);
-        let (bn1, bt1) = model.obstacle_velocity(t1);
-        let un_k = dot(&wn, v) - bn0; // formula: u_n,k = w_n . v_k - b_n(t_k)
-        let u_free = [dot(&wn, &v_free) - bn1, dot(&wt, &v_free) - bt1];
-        let s0 = model.restitution() * un_k.min(0.0); // formula: e u_n,k (approaching only)
-        impulse = solve_contact(w, u_free, s0, model.mu())
+    if let Some(lp) = problem {
+        impulse = solve_contact(lp.w, lp.u_free, lp.s0, model.mu())
             .ok_or(MjError::NoContactSolution { t_s: t })?;
         for i in 0..N {
-            v1[i] += mwn[i] * impulse.p_n + mwt[i] * impulse.p_t; // formula: v_{k+1} = v_free + M^-1 (w_n P_n + w_t P_t)
+            v1[i] += lp.m_wn[i] * impulse.p_n + lp.m_wt[i] * impulse.p_t; // formula: v_{k+1} = v_free + M^-1 (w_n P_n + w_t P_t)
         }
     }
     let mut q1 = q_m;

@@ -48,7 +48,9 @@ pub mod params;
 pub mod printed;
 pub mod rules;
 pub mod run;
+pub mod soft;
 mod system;
+pub mod timestepping;
 
 use crate::numerics::trig::{sin_cos, sin_cos_turns};
 use std::f64::consts::TAU;

@@ -1,0 +1,100 @@
+//! The stick-by-three-methods section of the chapter: results, claims and the charts
+//! of error against force evaluations (one per scene).
+
+use super::stick_methods::{claims, measure_scene, Plan, SceneMethods};
+use crate::error::Result;
+use crate::physics::stick::{authors_scene, jamming_scene};
+use crate::plot::{save_panels, Chart, Legend, Series};
+use crate::report::{ChapterReport, Mutation};
+use std::path::Path;
+use std::sync::OnceLock;
+
+/// Labels and colours of the methods in the charts.
+const STYLE: [(&str, &str, usize); 4] = [
+    ("event_dop853", "event-driven DOP853 (rtol)", 4),
+    ("event_dopri5", "event-driven DP5 (rtol)", 2),
+    ("moreau_jean", "Moreau-Jean (step h)", 3),
+    ("soft_contact", "soft contact + Rosenbrock (eps)", 0),
+];
+
+/// Errors below this are drawn at it (log axis).
+const FLOOR: f64 = 1e-15;
+
+/// Measures both scenes, adds results and the default scene's claims to `r`, and
+/// draws the charts into `dir` (when given).
+pub fn build(r: &mut ChapterReport, g_mps2: f64, quick: bool, dir: Option<&Path>) -> Result<()> {
+    let plan = Plan::new(quick);
+    let default = measure_scene(&jamming_scene(g_mps2), &plan);
+    let authors = measure_scene(&authors_scene(g_mps2), &plan);
+    r.result("stick_methods", default.to_json());
+    r.result("stick_methods_authors", authors.to_json());
+    for c in claims(&default, 1.0) {
+        r.claim(c);
+    }
+    if let Some(dir) = dir {
+        r.figures.extend(chart(
+            dir,
+            &default,
+            "Stick by three methods: self-locking scene",
+            "stick-methods-default",
+        )?);
+        r.figures.extend(chart(
+            dir,
+            &authors,
+            "Stick by three methods: authors' scene",
+            "stick-methods-authors",
+        )?);
+    }
+    Ok(())
+}
+
+fn chart(dir: &Path, s: &SceneMethods, title: &str, name: &str) -> Result<Vec<String>> {
+    let mut c = Chart::new(
+        title,
+        "force evaluations",
+        "relative difference of the mean speed",
+    )
+    .log_x()
+    .log_y()
+    .legend(Legend::LowerRight);
+    for (key, label, col) in STYLE {
+        let pts: Vec<(f64, f64)> = s
+            .ladder(key)
+            .rungs
+            .iter()
+            .filter(|r| r.rel.is_finite() && r.evals > 0)
+            .map(|r| (r.evals as f64, r.rel.max(FLOOR)))
+            .collect();
+        c = c
+            .series(Series::line(label, pts.clone()).color(col))
+            .series(Series::points("", pts).color(col));
+    }
+    save_panels(&[c], 1, dir, name)
+}
+
+/// Mutations of this section's claims: the claimed order off by one.
+pub fn mutations() -> Vec<Mutation> {
+    // One quick measurement serves both (the ladders do not depend on the claims).
+    static QUICK: OnceLock<SceneMethods> = OnceLock::new();
+    let run = |id: &'static str| {
+        move || {
+            let s = QUICK.get_or_init(|| measure_scene(&jamming_scene(9.81), &Plan::new(true)));
+            claims(s, 2.0)
+                .into_iter()
+                .find(|c| c.id == id)
+                .expect("the claim")
+        }
+    };
+    vec![
+        Mutation::new(
+            "stick-methods-moreau-jean-order",
+            "Moreau-Jean order 1 -> 2",
+            run("stick-methods-moreau-jean-order"),
+        ),
+        Mutation::new(
+            "stick-methods-moreau-jean-gap-within-estimate",
+            "Richardson estimate with order 2 instead of 1",
+            run("stick-methods-moreau-jean-gap-within-estimate"),
+        ),
+    ]
+}

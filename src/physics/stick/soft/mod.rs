@@ -1,0 +1,244 @@
+//! Regularised (soft) contact for the stick: the plate pushes on C with a stiff spring
+//! and damper when C is below it, and friction is Coulomb's law smoothed over a
+//! slip-velocity scale. The rod stays massless, so its moment balance about P (C.8) is
+//! solved for `theta'` at every right-hand side. An [`OdeSystem`] with `N = 5`.
+//!
+//! State `y = (x_p, d, x_p', z_p', theta)` (m, m, m/s, m/s, rad) with `d = z_c - z_s` the
+//! height of C over the plate (negative: penetration), so that the error control sees
+//! the penetration itself, not a small difference of large heights. With
+//! `s, c = sin, cos theta`, C's velocity is `x_c' = x_p' - L c theta'`,
+//! `d' = z_p' + L s theta' - z_s'` (C.3) and, for `d < 0`,
+//!
+//! ```text
+//! F_z = max(0, -k_n d - r c_n d')               (spring and damper, never pulling)
+//! F_x = -mu F_z tanh(x_c' / v_eps)              (Coulomb, smoothed)
+//! 0   = k (theta - theta_0) + gamma theta' + L (F_x c - F_z s)        (C.8)
+//! ```
+//!
+//! with the damper ramped in over a small penetration, `r = min(1, -d / delta_r)`, so
+//! that the force is continuous in the state at first contact.
+//!
+//! Both forces depend on `theta'`, so C.8 is a scalar equation `g(theta') = 0`; `g` is
+//! linear and increasing where `F_z = 0` (above the rate where the damper would pull)
+//! and tends to `-infinity` for `theta' -> -infinity` (for `s > 0`), so a root exists.
+//! It is found by bracketing from the free rate `-k (theta - theta_0) / gamma` and a
+//! safeguarded Newton iteration. In the self-locking range a slide towards -x can make
+//! `g` non-monotone (the soft form of the Painleve case); the root taken is then the one
+//! the bracket search from the free rate meets first.
+//!
+//! The regularisation is one parameter `eps` (dimensionless) with a time scale `tau_0`:
+//! `c_n = m / (eps tau_0)`, `k_n = m / (eps tau_0^2)`, `v_eps = eps v_0`. Then the
+//! contact's damping time `m / c_n = eps tau_0`, its rebound `e ~ k_n m / c_n^2 = eps`
+//! (overdamped: `zeta = 1/(2 sqrt eps)`), the static penetration `m g / k_n = eps g
+//! tau_0^2` and the stick's creep `~ v_eps` all vanish linearly with `eps`: first order
+//! convergence to the rigid model (plastic impacts, exact Coulomb).
+
+pub mod run;
+
+use super::{StickModel, StickParams};
+use crate::numerics::ode::OdeSystem;
+
+/// The soft-contact constants (SI units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SoftParams {
+    /// Normal stiffness k_n (N/m).
+    pub stiffness_n_per_m: f64,
+    /// Normal damping c_n (N s/m).
+    pub damping_ns_per_m: f64,
+    /// Slip-velocity scale of the smoothed friction v_eps (m/s).
+    pub slip_scale_mps: f64,
+    /// Penetration over which the damper is ramped in, `delta_r` (m): the force is
+    /// then continuous in the state at first contact (a jump of `c_n d'` there makes
+    /// the Rosenbrock method's linearisation useless across it).
+    pub damping_ramp_m: f64,
+}
+
+impl SoftParams {
+    /// The one-parameter family of the module doc: `eps` (1) with `tau_0` = a thirtieth
+    /// of the drive period and `v_0` = 0.1 m/s (the order of the walking speed).
+    pub fn regularised(p: &StickParams, eps: f64) -> Self {
+        let tau0 = p.period_s() / 30.0;
+        let m = p.mass_kg;
+        SoftParams {
+            stiffness_n_per_m: m / (eps * tau0 * tau0), // formula: k_n = m / (eps tau_0^2)
+            damping_ns_per_m: m / (eps * tau0),         // formula: c_n = m / (eps tau_0)
+            slip_scale_mps: eps * 0.1,                  // formula: v_eps = eps v_0
+            // a tenth of the static penetration m g / k_n: at rest the damper is full
+            damping_ramp_m: 0.1 * p.g_mps2 * eps * tau0 * tau0, // formula: delta_r = 0.1 m g / k_n
+        }
+    }
+}
+
+/// The stick with soft contact, an [`OdeSystem`] of dimension 5.
+#[derive(Debug, Clone, Copy)]
+pub struct SoftStick {
+    /// The stick.
+    pub model: StickModel,
+    /// The contact constants.
+    pub soft: SoftParams,
+}
+
+/// State index: x of P (m).
+pub const SX: usize = 0;
+/// State index: height of C over the plate, `d = z_c - z_s` (m).
+pub const SD: usize = 1;
+/// State index: x velocity of P (m/s).
+pub const SVX: usize = 2;
+/// State index: z velocity of P (m/s).
+pub const SVZ: usize = 3;
+/// State index: theta (rad).
+pub const STH: usize = 4;
+
+/// The rod's rate and the contact force at one state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SoftForces {
+    /// theta' (rad/s), the root of C.8.
+    pub theta_dot: f64,
+    /// Horizontal force on C (N).
+    pub fx: f64,
+    /// Vertical force on C (N).
+    pub fz: f64,
+    /// Evaluations of the balance `g` spent.
+    pub iterations: u32,
+}
+
+impl SoftStick {
+    /// The soft stick of `p` with regularisation `eps`.
+    pub fn new(p: StickParams, eps: f64) -> Self {
+        SoftStick {
+            model: StickModel::new(p),
+            soft: SoftParams::regularised(&p, eps),
+        }
+    }
+
+    /// The state of the stick standing still on the plate at `t` at angle `theta`, C at
+    /// `x = 0` and exactly on the plate.
+    pub fn at_rest(&self, t: f64, theta: f64) -> [f64; 5] {
+        let (_, vs, _) = self.model.plate(t);
+        [self.model.p.length_m * theta.sin(), 0.0, 0.0, vs, theta]
+    }
+
+    /// x of C (m).
+    pub fn x_c(&self, y: &[f64; 5]) -> f64 {
+        y[SX] - self.model.p.length_m * y[STH].sin() // formula: C.1 x_c = x_p - L sin
+    }
+
+    /// The forces of the contact law at rod rate `w`: `(F_x, F_z)` (N).
+    #[inline]
+    fn forces_at(&self, y: &[f64; 5], vs: f64, (s, c): (f64, f64), w: f64) -> (f64, f64) {
+        let (l, sp) = (self.model.p.length_m, &self.soft);
+        let d_dot = y[SVZ] + l * s * w - vs; // formula: d' = z_p' + L s theta' - z_s'
+        let ramp = (-y[SD] / sp.damping_ramp_m).min(1.0); // formula: min(1, -d / delta_r)
+        let fz = (-sp.stiffness_n_per_m * y[SD] - ramp * sp.damping_ns_per_m * d_dot).max(0.0); // formula: F_z = max(0, -k_n d - r c_n d')
+        let vxc = y[SVX] - l * c * w; // formula: x_c' = x_p' - L c theta'
+        let fx = -self.model.p.mu * fz * (vxc / sp.slip_scale_mps).tanh(); // formula: F_x = -mu F_z tanh(x_c'/v_eps)
+        (fx, fz)
+    }
+
+    /// The balance `g(w) = k (theta - theta_0) + gamma w + L (F_x c - F_z s)` (C.8)
+    /// and its derivative in `w` (N m, N m s).
+    #[inline]
+    pub(crate) fn balance(&self, y: &[f64; 5], vs: f64, (s, c): (f64, f64), w: f64) -> (f64, f64) {
+        let p = &self.model.p;
+        let (l, sp) = (p.length_m, &self.soft);
+        let (fx, fz) = self.forces_at(y, vs, (s, c), w);
+        let q = p.stiffness_nm_per_rad * (y[STH] - p.theta0_rad) + p.damping_nms_per_rad * w;
+        let g = q + l * (fx * c - fz * s); // formula: C.8
+        let dfz = if fz > 0.0 {
+            -(-y[SD] / sp.damping_ramp_m).min(1.0) * sp.damping_ns_per_m * l * s
+        } else {
+            0.0
+        };
+        let u = (y[SVX] - l * c * w) / sp.slip_scale_mps;
+        let th = u.tanh();
+        let dfx = -p.mu * (dfz * th + fz * (1.0 - th * th) * (-l * c / sp.slip_scale_mps));
+        (g, p.damping_nms_per_rad + l * (dfx * c - dfz * s))
+    }
+
+    /// The rod's rate and the contact force at `(t, y)`.
+    pub fn forces(&self, t: f64, y: &[f64; 5]) -> SoftForces {
+        let p = &self.model.p;
+        let (_, vs, _) = self.model.plate(t);
+        let sc = y[STH].sin_cos();
+        let free = -p.stiffness_nm_per_rad * (y[STH] - p.theta0_rad) / p.damping_nms_per_rad; // formula: C.3 theta' = -(k/gamma)(theta - theta_0)
+        let done = |w: f64, iterations| {
+            let (fx, fz) = self.forces_at(y, vs, sc, w);
+            SoftForces {
+                theta_dot: w,
+                fx,
+                fz,
+                iterations,
+            }
+        };
+        if y[SD] >= 0.0 {
+            return done(free, 0);
+        }
+        let (g0, _) = self.balance(y, vs, sc, free);
+        if g0 == 0.0 {
+            return done(free, 1);
+        }
+        // Bracket: step away from the free rate (downwards when g > 0) doubling the step.
+        let dir = if g0 > 0.0 { -1.0 } else { 1.0 };
+        let mut step = free.abs().max(1.0);
+        let (mut a, mut b) = (free, free + dir * step);
+        let mut n = 1;
+        while self.balance(y, vs, sc, b).0.signum() == g0.signum() {
+            a = b;
+            step *= 2.0;
+            b = free + dir * step;
+            n += 1;
+            if n > 200 {
+                return done(free, n);
+            }
+        }
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        let ga_neg = self.balance(y, vs, sc, a).0 < 0.0;
+        // Safeguarded Newton on [a, b] (bisection when a Newton step leaves it).
+        let mut w = 0.5 * (a + b);
+        for _ in 0..100 {
+            let (g, dg) = self.balance(y, vs, sc, w);
+            n += 1;
+            if g == 0.0 {
+                break;
+            }
+            if (g < 0.0) == ga_neg {
+                a = w;
+            } else {
+                b = w;
+            }
+            let newton = w - g / dg; // formula: Newton step on C.8
+            let next = if dg != 0.0 && newton > a && newton < b {
+                newton
+            } else {
+                0.5 * (a + b)
+            };
+            if (next - w).abs() <= 1e-15 * w.abs().max(1.0) || b - a <= 1e-15 * w.abs().max(1.0) {
+                w = next;
+                break;
+            }
+            w = next;
+        }
+        done(w, n)
+    }
+}
+
+impl OdeSystem<5> for SoftStick {
+    fn rhs(&self, t: f64, y: &[f64; 5]) -> [f64; 5] {
+        let p = &self.model.p;
+        let f = self.forces(t, y);
+        let (_, vs, _) = self.model.plate(t);
+        let s = y[STH].sin();
+        [
+            y[SVX],
+            y[SVZ] + p.length_m * s * f.theta_dot - vs, // formula: d' = z_p' + L s theta' - z_s'
+            f.fx * self.model.inv_mass,                 // formula: m x_p'' = F_x
+            f.fz * self.model.inv_mass - p.g_mps2,      // formula: m z_p'' = F_z - m g
+            f.theta_dot,
+        ]
+    }
+}
+
+#[cfg(test)]
+mod tests;
