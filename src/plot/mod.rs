@@ -351,6 +351,7 @@ pub fn save_drawing<D: Drawing>(
 ) -> Result<Vec<String>> {
     ensure_font();
     let dir = dir.as_ref();
+    check_name(name)?;
     std::fs::create_dir_all(dir)
         .map_err(|e| WorkbookError::Io(format!("cannot create {}: {e}", dir.display())))?;
     let size = (size.0.clamp(50, 20_000), size.1.clamp(50, 20_000));
@@ -362,6 +363,29 @@ pub fn save_drawing<D: Drawing>(
     render(SVGBackend::new(&svg, size).into_drawing_area(), d).map_err(|e| fail(&svg, e))?;
     render(BitMapBackend::new(&png, size).into_drawing_area(), d).map_err(|e| fail(&png, e))?;
     Ok(vec![svg.display().to_string(), png.display().to_string()])
+}
+
+/// Whether `name` is a kebab-case file stem (lower-case ASCII letters and digits in
+/// words joined by single hyphens, as the chapter ids): the one naming style of figures.
+pub fn is_kebab(name: &str) -> bool {
+    !name.is_empty()
+        && name.split('-').all(|w| {
+            !w.is_empty()
+                && w.bytes()
+                    .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit())
+        })
+}
+
+/// Refuses a figure name that is not kebab-case (a programming error of a chapter,
+/// reported as an output error rather than a silently inconsistent file name).
+fn check_name(name: &str) -> Result<()> {
+    if is_kebab(name) {
+        Ok(())
+    } else {
+        Err(WorkbookError::Io(format!(
+            "figure name {name:?} is not kebab-case (a-z, 0-9, single hyphens)"
+        )))
+    }
 }
 
 fn render<DB: DrawingBackend, D: Drawing>(

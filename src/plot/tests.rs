@@ -235,3 +235,32 @@ fn an_unwritable_folder_is_an_io_error() {
     let err = save_chart(&demo(), &file, "c").unwrap_err();
     assert!(matches!(err, WorkbookError::Io(_)), "{err:?}");
 }
+
+#[test]
+fn figure_names_are_kebab_case() {
+    for good in [
+        "time-series",
+        "speed-map",
+        "work-precision-block-drift",
+        "c",
+        "a1-b2",
+    ] {
+        assert!(is_kebab(good), "{good}");
+    }
+    for bad in [
+        "time_series",
+        "Speed-map",
+        "a--b",
+        "-a",
+        "a-",
+        "",
+        "a.b",
+        "θ",
+    ] {
+        assert!(!is_kebab(bad), "{bad}");
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let err = save_chart(&demo(), dir.path(), "work_precision").unwrap_err();
+    assert!(err.to_string().contains("kebab-case"), "{err}");
+    assert!(!dir.path().join("work_precision.png").exists());
+}

@@ -118,7 +118,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
             .line(&format!("always slipping, Gamma = {gamma}"), theory)
             .points(&format!("simulation, Gamma = {gamma}"), pts);
     }
-    paths.extend(save_panels(&[p1, p2], 2, dir, "drift_vs_asymmetry")?);
+    paths.extend(save_panels(&[p1, p2], 2, dir, "drift-vs-asymmetry")?);
 
     // 3. Bi-harmonic drift against the drive number.
     let gammas = logspace(0.5, 100.0, if quick { 6 } else { 30 });
@@ -153,7 +153,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
         );
     }
     c3 = c3.hline(1.0, "limit eps V");
-    paths.extend(save_chart(&c3, dir, "drift_vs_drive")?);
+    paths.extend(save_chart(&c3, dir, "drift-vs-drive")?);
 
     // 4. Regime map of the sawtooth (closed form) with the boundary y = r (r + 1).
     let rs = linspace(1.05, 4.0, 60);
@@ -182,7 +182,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
         boundary,
     ))
     .overlay(Series::points("this scene", here));
-    paths.extend(save_heatmap(&h, dir, "regime_map")?);
+    paths.extend(save_heatmap(&h, dir, "regime-map")?);
 
     // 5. Work-precision (full mode: the rows come from the checks).
     if !tr.work.is_empty() {
@@ -218,7 +218,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
                 .hline(1e-12, "claim tolerance"),
             );
         }
-        paths.extend(save_panels(&charts, 2, dir, "work_precision")?);
+        paths.extend(save_panels(&charts, 2, dir, "work-precision")?);
     }
     Ok(paths)
 }

@@ -77,12 +77,7 @@ pub fn work_precision(
         "wall time (s, minimum of repeats)",
         |p| p.wall_s,
     );
-    save_panels(
-        &[a, b],
-        2,
-        dir,
-        &format!("work_precision_{}", problem.replace('-', "_")),
-    )
+    save_panels(&[a, b], 2, dir, &format!("work-precision-{problem}"))
 }
 
 /// The economy charts: relative error of the averaged laws against Gamma (vertical

@@ -84,7 +84,7 @@ fn time_series(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>
     let c4 = shade(Chart::new("Foot position", "t (s)", "x_C (mm)"), w)
         .line("x_C", pts(&|s| s.y[XC] * mm))
         .legend(Legend::UpperLeft);
-    save_panels(&[c1, c2, c3, c4], 2, dir, "time_series")
+    save_panels(&[c1, c2, c3, c4], 2, dir, "time-series")
 }
 
 fn snapshots(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>> {
@@ -170,7 +170,7 @@ fn energy(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
             }),
         )
         .log_y();
-    save_panels(&[c, r], 2, dir, "energy_budget")
+    save_panels(&[c, r], 2, dir, "energy-budget")
 }
 
 fn mean_speed(s: &RunSummary) -> f64 {
@@ -243,7 +243,7 @@ fn speed_sweeps(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Res
         cg = cg.series(Series::line(name, series(si, 0)).color(si));
         cf = cf.series(Series::line(name, series(si, 1)).color(si));
     }
-    save_panels(&[cg, cf], 2, dir, "speed_sweeps")
+    save_panels(&[cg, cf], 2, dir, "speed-sweeps")
 }
 
 fn map(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
@@ -297,5 +297,5 @@ fn map(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<S
         }
     }
     let _ = Mode::ALL;
-    save_heatmap(&h, dir, "speed_map")
+    save_heatmap(&h, dir, "speed-map")
 }
