@@ -1,6 +1,7 @@
 //! Drawing a [`Chart`] into any plotters area.
 
 use super::axis::{self, Pt, Ticked};
+use super::layout;
 use super::{
     color, font, Chart, Kind, Legend, Series, GRID, LABEL_PX, REFERENCE, TICK_PX, TITLE_PX,
 };
@@ -171,32 +172,65 @@ pub(super) fn tick_label(v: f64, step: f64, log: bool) -> String {
     }
 }
 
-/// Draws the chart into `area`.
-pub(super) fn draw_chart<DB: DrawingBackend>(
-    c: &Chart,
-    area: &DrawingArea<DB, Shift>,
-) -> Result<(), String> {
-    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
-    let runs: Vec<Vec<Vec<Pt>>> = c
-        .series
-        .iter()
-        .map(|s| axis::runs(&s.points, c.log_x, c.log_y))
-        .collect();
-    let (mut xs, mut ys) = (Vec::new(), Vec::new());
-    for p in runs.iter().flatten().flatten() {
-        xs.push(p.0);
-        ys.push(p.1);
-    }
-    xs.extend(c.vlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_x)));
-    ys.extend(c.hlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_y)));
-    let only_lines = c.series.iter().all(|s| s.kind != Kind::Points);
-    let (x0, x1) = axis::range(c.x_range, &xs, if only_lines { 0.0 } else { 0.04 }, c.log_x);
-    let (y0, y1) = axis::range(c.y_range, &ys, 0.06, c.log_y);
-    let bx = (x0, x1, y0, y1);
-    let logs = (c.log_x, c.log_y);
-    let (mut ch, steps) = build_chart(area, &c.title, bx, logs)?;
-    draw_axes(&mut ch, (&c.x_label, &c.y_label), steps, logs, true)?;
+/// The legend's labels of a chart (bands first, as they are drawn).
+fn legend_labels(c: &Chart) -> Vec<&str> {
+    let bands = c.bands.iter().map(|b| b.2.as_str());
+    let series = c.series.iter().map(|s| s.label.as_str());
+    bands.chain(series).filter(|l| !l.is_empty()).collect()
+}
 
+/// The legend corner of `c` over the box `bx` (axis units) on `area_px` pixels, and the
+/// top of the y axis (raised for headroom when every corner covers data and the range
+/// is automatic). `None` when there is no legend.
+fn place_legend(
+    c: &Chart,
+    runs: &[Vec<Vec<Pt>>],
+    bx: (f64, f64, f64, f64),
+    area_px: (u32, u32),
+) -> (Option<SeriesLabelPosition>, f64) {
+    let labels = legend_labels(c);
+    let fixed = |p| (Some(p), bx.3);
+    match c.legend {
+        _ if labels.is_empty() => (None, bx.3),
+        Legend::Hidden => (None, bx.3),
+        Legend::UpperRight => fixed(SeriesLabelPosition::UpperRight),
+        Legend::UpperLeft => fixed(SeriesLabelPosition::UpperLeft),
+        Legend::LowerRight => fixed(SeriesLabelPosition::LowerRight),
+        Legend::LowerLeft => fixed(SeriesLabelPosition::LowerLeft),
+        Legend::Auto => {
+            let size = layout::legend_fraction(&labels, layout::plot_px(area_px));
+            let drawn: Vec<(bool, &[Pt])> = c
+                .series
+                .iter()
+                .zip(runs)
+                .flat_map(|(s, r)| r.iter().map(move |run| (s.kind != Kind::Points, &run[..])))
+                .collect();
+            let pts = layout::samples(&drawn, bx);
+            let (corner, n) = layout::best_corner(&pts, size);
+            if n == 0 || c.y_range.is_some() || size.1 > 0.5 {
+                return (Some(corner.position()), bx.3);
+            }
+            // every corner covers data: raise the top of the axis over the emptier upper corner
+            let up = |right| layout::Corner { upper: true, right };
+            let (r, l) = (up(true), up(false));
+            let (hr, hl) = (
+                layout::headroom(&pts, r, size),
+                layout::headroom(&pts, l, size),
+            );
+            let (corner, top) = if hr <= hl { (r, hr) } else { (l, hl) };
+            (Some(corner.position()), bx.2 + top * (bx.3 - bx.2))
+        }
+    }
+}
+
+/// Draws the shaded bands; returns whether any got a legend label.
+fn draw_bands<DB: DrawingBackend>(
+    ch: &mut Ctx<'_, DB>,
+    c: &Chart,
+    bx: (f64, f64, f64, f64),
+) -> Result<bool, String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let (x0, x1, y0, y1) = bx;
     let mut any_label = false;
     for (i, (a, b, label)) in c.bands.iter().enumerate() {
         let (Some(a), Some(b)) = (axis::to_axis(*a, c.log_x), axis::to_axis(*b, c.log_x)) else {
@@ -220,10 +254,18 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
             });
         }
     }
+    Ok(any_label)
+}
 
-    any_label |= draw_series(&mut ch, &c.series, (c.log_x, c.log_y), bx, color)?;
-
-    let reference = font(TICK_PX).color(&REFERENCE);
+/// Draws the reference lines with their labels on white boxes (vertical lines' labels
+/// stacked from the top, horizontal lines' at the right end above the line).
+fn draw_references<DB: DrawingBackend>(
+    ch: &mut Ctx<'_, DB>,
+    c: &Chart,
+    bx: (f64, f64, f64, f64),
+) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let (x0, x1, y0, y1) = bx;
     let mut nv = 0;
     for (x, label) in &c.vlines {
         let Some(x) = axis::to_axis(*x, c.log_x).filter(|x| *x >= x0 && *x <= x1) else {
@@ -240,14 +282,15 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
         } else {
             (HPos::Left, 5)
         };
-        let t = Text::new(
-            label.clone(),
-            (dx, 5 + 22 * nv),
-            reference.pos(Pos::new(h, VPos::Top)),
-        );
-        ch.plotting_area()
-            .draw(&(EmptyElement::at((x, y1)) + t))
-            .map_err(e)?;
+        let pos = Pos::new(h, VPos::Top);
+        layout::boxed_text(
+            ch.plotting_area(),
+            (x, y1),
+            (dx, 5 + 24 * nv),
+            label,
+            pos,
+            REFERENCE,
+        )?;
         nv += 1;
     }
     for (y, label) in &c.hlines {
@@ -259,25 +302,58 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
         if label.is_empty() {
             continue;
         }
-        let t = Text::new(
-            label.clone(),
-            (-5, -4),
-            reference.pos(Pos::new(HPos::Right, VPos::Bottom)),
-        );
-        ch.plotting_area()
-            .draw(&(EmptyElement::at((x1, y)) + t))
-            .map_err(e)?;
-    }
-
-    let pos = match c.legend {
-        Legend::UpperRight => SeriesLabelPosition::UpperRight,
-        Legend::UpperLeft => SeriesLabelPosition::UpperLeft,
-        Legend::LowerRight => SeriesLabelPosition::LowerRight,
-        Legend::LowerLeft => SeriesLabelPosition::LowerLeft,
-        Legend::Hidden => return Ok(()),
-    };
-    if any_label {
-        crate::plot::draw_legend(&mut ch, pos)?;
+        // below the line when the line is near the top (the label would leave the frame)
+        let near_top = y > y1 - 0.08 * (y1 - y0);
+        let (v, dy) = if near_top {
+            (VPos::Top, 4)
+        } else {
+            (VPos::Bottom, -4)
+        };
+        let pos = Pos::new(HPos::Right, v);
+        layout::boxed_text(ch.plotting_area(), (x1, y), (-8, dy), label, pos, REFERENCE)?;
     }
     Ok(())
+}
+
+/// Draws the chart into `area`.
+pub(super) fn draw_chart<DB: DrawingBackend>(
+    c: &Chart,
+    area: &DrawingArea<DB, Shift>,
+) -> Result<(), String> {
+    let runs: Vec<Vec<Vec<Pt>>> = c
+        .series
+        .iter()
+        .map(|s| axis::runs(&s.points, c.log_x, c.log_y))
+        .collect();
+    let (mut xs, mut ys) = (Vec::new(), Vec::new());
+    for p in runs.iter().flatten().flatten() {
+        xs.push(p.0);
+        ys.push(p.1);
+    }
+    xs.extend(c.vlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_x)));
+    ys.extend(c.hlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_y)));
+    let only_lines = c.series.iter().all(|s| s.kind != Kind::Points);
+    let (x0, x1) = axis::range(c.x_range, &xs, if only_lines { 0.0 } else { 0.04 }, c.log_x);
+    let (y0, y1) = axis::range(c.y_range, &ys, 0.06, c.log_y);
+    let (pos, y1) = place_legend(c, &runs, (x0, x1, y0, y1), area.dim_in_pixel());
+    let bx = (x0, x1, y0, y1);
+    let logs = (c.log_x, c.log_y);
+    let (mut ch, steps) = build_chart(area, &c.title, bx, logs)?;
+    draw_axes(&mut ch, (&c.x_label, &c.y_label), steps, logs, true)?;
+    let mut any_label = draw_bands(&mut ch, c, bx)?;
+    any_label |= draw_series(&mut ch, &c.series, logs, bx, color)?;
+    draw_references(&mut ch, c, bx)?;
+    let notes: Vec<(f64, f64, String)> = c
+        .notes
+        .iter()
+        .filter_map(|(x, y, t)| {
+            let (x, y) = (axis::to_axis(*x, c.log_x)?, axis::to_axis(*y, c.log_y)?);
+            Some((x, y, t.clone()))
+        })
+        .collect();
+    layout::draw_notes(ch.plotting_area(), &notes)?;
+    match pos {
+        Some(pos) if any_label => crate::plot::draw_legend(&mut ch, pos),
+        _ => Ok(()),
+    }
 }

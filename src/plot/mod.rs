@@ -19,6 +19,7 @@
 mod axis;
 mod chart;
 mod heatmap;
+mod layout;
 #[cfg(test)]
 mod tests;
 
@@ -162,7 +163,10 @@ impl Series {
 /// Where the legend goes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Legend {
-    /// Upper right corner of the plotting area (the default).
+    /// The corner that covers the least data; headroom above the data when every
+    /// corner covers some (the default of [`Chart::new`]).
+    Auto,
+    /// Upper right corner of the plotting area.
     UpperRight,
     /// Upper left corner.
     UpperLeft,
@@ -201,6 +205,8 @@ pub struct Chart {
     pub bands: Vec<(f64, f64, String)>,
     /// Legend position.
     pub legend: Legend,
+    /// Text notes `(x, y, text)` in data units, left-centred at the point, on a white box.
+    pub notes: Vec<(f64, f64, String)>,
 }
 
 impl Chart {
@@ -218,7 +224,8 @@ impl Chart {
             vlines: Vec::new(),
             hlines: Vec::new(),
             bands: Vec::new(),
-            legend: Legend::UpperRight,
+            legend: Legend::Auto,
+            notes: Vec::new(),
         }
     }
     /// Adds a solid line.
@@ -276,6 +283,11 @@ impl Chart {
     /// Moves (or hides) the legend.
     pub fn legend(mut self, at: Legend) -> Self {
         self.legend = at;
+        self
+    }
+    /// A text note left-centred at `(x, y)` (data units), on a white box.
+    pub fn note(mut self, x: f64, y: f64, text: &str) -> Self {
+        self.notes.push((x, y, text.to_string()));
         self
     }
 }

@@ -8,9 +8,9 @@ use crate::error::Result;
 use crate::numerics::hybrid::Options;
 use crate::physics::stick::run::{Recording, RunSummary, Sample, StickOutcome};
 use crate::physics::stick::{
-    Mode, StickModel, StickParams, D_DAMP, D_FRIC, D_IMPACT, TH, W_PLATE, XC, ZC,
+    StickModel, StickParams, D_DAMP, D_FRIC, D_IMPACT, TH, W_PLATE, XC, ZC,
 };
-use crate::plot::{save_chart, save_heatmap, save_panels, Chart, HeatMap, Legend, Series};
+use crate::plot::{save_chart, save_panels, Chart, Legend, Series};
 use crate::sweep::{linspace, par_map};
 use std::path::Path;
 
@@ -41,7 +41,7 @@ pub fn draw_all(
     out.extend(snapshots(dir, p, &window)?);
     out.extend(energy(dir, p, opts)?);
     out.extend(speed_sweeps(dir, ev, opts, ctx)?);
-    out.extend(map(dir, ev, opts, ctx)?);
+    out.extend(super::maps::draw(dir, ev, opts, ctx)?);
     Ok(out)
 }
 
@@ -184,7 +184,7 @@ fn mean_speed(s: &RunSummary) -> f64 {
 /// The stick of `base` on a plate of peak acceleration `gamma_accel` (over g) at
 /// `frequency_hz` (Hz), built by [`StickParams::new`] (its collision angle is `new`'s
 /// default, not `base`'s).
-fn with_drive(base: &StickParams, gamma_accel: f64, frequency_hz: f64) -> StickParams {
+pub(super) fn with_drive(base: &StickParams, gamma_accel: f64, frequency_hz: f64) -> StickParams {
     StickParams::new(
         base.length_m,
         base.mass_kg,
@@ -244,58 +244,4 @@ fn speed_sweeps(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Res
         cf = cf.series(Series::line(name, series(si, 1)).color(si));
     }
     save_panels(&[cg, cf], 2, dir, "speed-sweeps")
-}
-
-fn map(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
-    let n = if ctx.quick { 6 } else { 24 };
-    let dur = if ctx.quick { 1.0 } else { 3.0 };
-    let ths = linspace(0.05, 0.9, n);
-    let mus = linspace(0.1, 0.9, n);
-    let base = ev.params[1];
-    let items: Vec<(f64, f64)> = mus
-        .iter()
-        .flat_map(|&mu| ths.iter().map(move |&th| (th, mu)))
-        .collect();
-    let res = par_map(&items, "stick (theta_0, mu) map", |&(th, mu)| {
-        let mut p = base;
-        p.theta0_rad = th;
-        p.mu = mu;
-        let s = run_scene(&p, dur, opts, Recording::default());
-        (mean_speed(&s), s.outcome.label())
-    });
-    let values: Vec<Vec<f64>> = res
-        .chunks(n)
-        .map(|row| row.iter().map(|r| r.0).collect())
-        .collect();
-    let mark = |label: &str| -> Vec<(f64, f64)> {
-        items
-            .iter()
-            .zip(&res)
-            .filter(|(_, r)| r.1 == label)
-            .map(|(x, _)| *x)
-            .collect()
-    };
-    let boundary: Vec<(f64, f64)> = linspace(0.05, 0.9, 60)
-        .into_iter()
-        .map(|t| (t, t.tan()))
-        .filter(|(_, m)| *m <= 0.9)
-        .collect();
-    let mut h = HeatMap::new(
-        "Mean speed over (theta_0, mu), self-locking scene's plate (grey: not completed)",
-        "theta_0 (rad)",
-        "mu",
-        ths,
-        mus,
-        values,
-        "mean velocity (m/s)",
-    )
-    .overlay(Series::line("self-locking edge mu = tan(theta_0)", boundary).color(6));
-    for (i, label) in ["fell", "zeno", "invalid"].iter().enumerate() {
-        let pts = mark(label);
-        if !pts.is_empty() {
-            h = h.overlay(Series::points(label, pts).color(i + 1));
-        }
-    }
-    let _ = Mode::ALL;
-    save_heatmap(&h, dir, "speed-map")
 }

@@ -7,6 +7,7 @@
 mod claims;
 mod evidence;
 mod figures;
+mod maps;
 
 use super::Context;
 use crate::error::{check, non_negative, positive, Result};
