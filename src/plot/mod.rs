@@ -377,6 +377,43 @@ pub fn save_drawing<D: Drawing>(
     Ok(vec![svg.display().to_string(), png.display().to_string()])
 }
 
+/// Writes an animated GIF `dir/name.gif` of `frames` (one [`Drawing`] per frame, each on
+/// a white page of `size` pixels), `delay_ms` milliseconds per frame (rounded to the
+/// format's 10 ms), looping forever; returns the path. Colours are quantised per frame
+/// by the deterministic NeuQuant of the `gif` crate: the same bytes on every run.
+pub fn save_gif<D: Drawing>(
+    frames: &[D],
+    dir: impl AsRef<Path>,
+    name: &str,
+    size: (u32, u32),
+    delay_ms: u32,
+) -> Result<Vec<String>> {
+    ensure_font();
+    let dir = dir.as_ref();
+    check_name(name)?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| WorkbookError::Io(format!("cannot create {}: {e}", dir.display())))?;
+    let size = (size.0.clamp(50, 4000), size.1.clamp(50, 4000));
+    let path = dir.join(format!("{name}.gif"));
+    let fail =
+        |e: String| WorkbookError::Io(format!("cannot write figure {}: {e}", path.display()));
+    let backend = BitMapBackend::gif(&path, size, delay_ms).map_err(|e| fail(e.to_string()))?;
+    let root = backend.into_drawing_area();
+    for f in frames {
+        render_frame(&root, f).map_err(fail)?;
+    }
+    Ok(vec![path.display().to_string()])
+}
+
+fn render_frame<DB: DrawingBackend, D: Drawing>(
+    root: &DrawingArea<DB, Shift>,
+    d: &D,
+) -> std::result::Result<(), String> {
+    root.fill(&WHITE).map_err(|e| e.to_string())?;
+    d.draw(root)?;
+    root.present().map_err(|e| e.to_string())
+}
+
 /// Whether `name` is a kebab-case file stem (lower-case ASCII letters and digits in
 /// words joined by single hyphens, as the chapter ids): the one naming style of figures.
 pub fn is_kebab(name: &str) -> bool {

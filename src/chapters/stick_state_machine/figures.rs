@@ -2,7 +2,7 @@
 //! them). Sweeps run in parallel with `sweep::par_map` and are summed in order.
 
 use super::evidence::Evidence;
-use super::run_scene;
+use super::{gait, run_scene};
 use crate::chapters::Context;
 use crate::error::Result;
 use crate::numerics::hybrid::Options;
@@ -10,7 +10,7 @@ use crate::physics::stick::run::{Recording, RunSummary, Sample, StickOutcome};
 use crate::physics::stick::{
     StickModel, StickParams, D_DAMP, D_FRIC, D_IMPACT, TH, W_PLATE, XC, ZC,
 };
-use crate::plot::{save_chart, save_panels, Chart, Legend, Series};
+use crate::plot::{save_drawing, save_panels, Chart, Drawing, Legend, Series};
 use crate::sweep::{linspace, par_map};
 use std::path::Path;
 
@@ -38,7 +38,8 @@ pub fn draw_all(
     );
     let window: Vec<&Sample> = traced.trace.iter().filter(|s| s.t_s >= 10.0 * t).collect();
     out.extend(time_series(dir, p, &window)?);
-    out.extend(snapshots(dir, p, &window)?);
+    out.extend(snapshots(dir, p, opts)?);
+    out.extend(gifs(dir, ev, opts, ctx)?);
     out.extend(energy(dir, p, opts)?);
     out.extend(speed_sweeps(dir, ev, opts, ctx)?);
     out.extend(super::maps::draw(dir, ev, opts, ctx)?);
@@ -87,46 +88,66 @@ fn time_series(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>
     save_panels(&[c1, c2, c3, c4], 2, dir, "time-series")
 }
 
-fn snapshots(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>> {
-    let m = StickModel::new(*p);
-    let t = p.period_s();
-    let mut c = Chart::new(
-        "Stick snapshots every T/8 over two cycles (offset 40 mm per frame; colour = mode)",
-        "x_C - x_C(first) + 40 mm x frame (mm)",
-        "z (mm)",
-    )
-    .legend(Legend::LowerRight);
-    let mut named = [false; 4];
-    let x_first = w.first().map(|s| s.y[XC]).unwrap_or(0.0);
-    let t0 = w.first().map(|s| s.t_s).unwrap_or(0.0);
-    for k in 0..=16 {
-        let tk = t0 + k as f64 * t / 8.0;
-        let Some(s) = w
-            .iter()
-            .min_by(|a, b| (a.t_s - tk).abs().total_cmp(&(b.t_s - tk).abs()))
-        else {
-            continue;
-        };
-        let off = 40.0 * k as f64;
-        let [xp, zp, _, _] = m.tip(&s.y);
-        let xc = (s.y[XC] - x_first) * 1e3 + off;
-        let zs = m.plate(s.t_s).0 * 1e3;
-        let label = if named[s.mode.index()] {
-            ""
-        } else {
-            s.mode.name()
-        };
-        named[s.mode.index()] = true;
-        c = c.series(
-            Series::line(
-                label,
-                vec![(xc, s.y[ZC] * 1e3), ((xp - x_first) * 1e3 + off, zp * 1e3)],
-            )
-            .color(s.mode.index()),
-        );
-        c = c.series(Series::line("", vec![(xc - 12.0, zs), (xc + 12.0, zs)]).color(6));
+/// Eight frames of the gait a quarter period apart over two drive cycles (after ten
+/// cycles of start transient), each drawn to scale with the foot's close-up.
+fn snapshots(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
+    let fr = gait::frames(p, opts, 10.0, 2.0, 4);
+    let v = gait::view(&fr, p.length_m * 1e3, p.mass_kg * p.g_mps2);
+    let pics: Vec<gait::Picture> = fr
+        .iter()
+        .map(|frame| gait::Picture {
+            frame,
+            view: v,
+            scene: "",
+        })
+        .collect();
+    let grid = Grid {
+        cells: &pics,
+        cols: 2,
+    };
+    let rows = pics.len().div_ceil(2).max(1) as u32;
+    save_drawing(&grid, dir, "snapshots", (2 * 720, rows * 400))
+}
+
+/// Drawings in a grid, `cols` per row.
+struct Grid<'a, D> {
+    cells: &'a [D],
+    cols: usize,
+}
+
+impl<D: Drawing> Drawing for Grid<'_, D> {
+    fn draw<DB: plotters::prelude::DrawingBackend>(
+        &self,
+        area: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    ) -> std::result::Result<(), String> {
+        let rows = self.cells.len().div_ceil(self.cols).max(1);
+        for (c, a) in self.cells.iter().zip(area.split_evenly((rows, self.cols))) {
+            c.draw(&a)?;
+        }
+        Ok(())
     }
-    save_chart(&c, dir, "snapshots")
+}
+
+/// The animated gait of both scenes: `gait-self-locking.gif` and `gait-authors.gif`.
+fn gifs(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
+    let shape = if ctx.quick { (1.0, 6) } else { (3.0, 10) };
+    let mut out = gait::write_gif(
+        dir,
+        "gait-self-locking",
+        "self-locking scene",
+        &ev.params[1],
+        opts,
+        shape,
+    )?;
+    out.extend(gait::write_gif(
+        dir,
+        "gait-authors",
+        "authors' scene",
+        &ev.params[0],
+        opts,
+        shape,
+    )?);
+    Ok(out)
 }
 
 fn energy(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {

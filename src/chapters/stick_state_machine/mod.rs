@@ -7,6 +7,7 @@
 mod claims;
 mod evidence;
 mod figures;
+mod gait;
 mod maps;
 
 use super::Context;
