@@ -52,6 +52,20 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
                 .flat_map(|run| axis::clip_polyline(run, bx))
                 .collect(),
         };
+        if s.kind != Kind::Points {
+            // The bitmap backend joins wide segments with miters, and a miter at a
+            // near-reversal (a noisy trace) is a spike far out of the frame: drop points
+            // on the previous one's pixel and split the line where it turns back.
+            pieces = pieces
+                .into_iter()
+                .flat_map(|mut piece| {
+                    piece.dedup_by(|b, a| ch.backend_coord(a) == ch.backend_coord(b));
+                    let px: Vec<(i32, i32)> = piece.iter().map(|p| ch.backend_coord(p)).collect();
+                    split_at_reversals(piece, &px)
+                })
+                .filter(|p| !p.is_empty())
+                .collect();
+        }
         if pieces.is_empty() {
             pieces.push(Vec::new()); // drawn empty so that the legend still lists it
         }
@@ -102,6 +116,28 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
         }
     }
     Ok(any_label)
+}
+
+/// Splits a polyline (points `pts`, their pixels `px`) where it turns back by more than
+/// 120 degrees; the pieces share the turning point, so the drawn line stays connected.
+fn split_at_reversals(pts: Vec<Pt>, px: &[(i32, i32)]) -> Vec<Vec<Pt>> {
+    let mut out = Vec::new();
+    let mut cur: Vec<Pt> = Vec::new();
+    for (i, p) in pts.iter().enumerate() {
+        cur.push(*p);
+        if i == 0 || i + 1 >= pts.len() {
+            continue;
+        }
+        let (a, b, c) = (px[i - 1], px[i], px[i + 1]);
+        let u = ((b.0 - a.0) as f64, (b.1 - a.1) as f64);
+        let v = ((c.0 - b.0) as f64, (c.1 - b.1) as f64);
+        let cos = (u.0 * v.0 + u.1 * v.1) / (u.0.hypot(u.1) * v.0.hypot(v.1)).max(1e-12);
+        if cos < -0.5 {
+            out.push(std::mem::replace(&mut cur, vec![*p])); // formula: turn > 120 deg
+        }
+    }
+    out.push(cur);
+    out
 }
 
 /// Builds the house-style chart on `area`: caption `title`, margins, label areas, and
