@@ -36,13 +36,24 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
     let (mut auto, mut shapes) = (0usize, 0usize);
     for s in series {
         let r = axis::runs(&s.points, logs.0, logs.1);
-        let col = pal(s.color.unwrap_or_else(|| {
+        let ci = s.color.unwrap_or_else(|| {
             auto += 1;
             auto - 1
-        }));
+        });
+        let col = pal(ci);
         let shape = shapes;
+        if s.kind == Kind::LinePoints {
+            // the line first (no legend entry), then the markers as a points series
+            let line = Series {
+                label: String::new(),
+                kind: Kind::Line,
+                color: Some(ci),
+                ..s.clone()
+            };
+            draw_series(ch, &[line], logs, bx, pal)?;
+        }
         let mut pieces: Vec<Vec<Pt>> = match s.kind {
-            Kind::Points => {
+            Kind::Points | Kind::LinePoints => {
                 shapes += 1;
                 let inside = |p: &&Pt| p.0 >= x0 && p.0 <= x1 && p.1 >= y0 && p.1 <= y1;
                 vec![r.iter().flatten().filter(inside).copied().collect()]
@@ -85,7 +96,12 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
                 }};
             }
             let sq = |at| EmptyElement::at(at) + Rectangle::new([(-5, -5), (5, 5)], fill);
-            match (s.kind, shape % 4) {
+            let kind = if s.kind == Kind::LinePoints {
+                Kind::Points
+            } else {
+                s.kind
+            };
+            match (kind, shape % 4) {
                 (Kind::Line, _) => put!(
                     LineSeries::new(piece, st),
                     move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], st)
@@ -108,7 +124,7 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
                 (Kind::Points, 2) => put!(piece.iter().map(|&p| sq(p)), move |(x, y)| {
                     EmptyElement::at((x + 11, y)) + Rectangle::new([(-5, -5), (5, 5)], fill)
                 }),
-                (Kind::Points, _) => put!(
+                (Kind::Points | Kind::LinePoints, _) => put!(
                     piece.iter().map(|&p| Cross::new(p, 5, st)),
                     move |(x, y)| { Cross::new((x + 11, y), 5, st) }
                 ),
@@ -241,7 +257,9 @@ fn place_legend(
                 .zip(runs)
                 .flat_map(|(s, r)| r.iter().map(move |run| (s.kind != Kind::Points, &run[..])))
                 .collect();
-            let pts = layout::samples(&drawn, bx);
+            let data = layout::samples(&drawn, bx);
+            let mut pts = data.clone();
+            pts.extend(reference_label_samples(c, bx, layout::plot_px(area_px)));
             let (corner, n) = layout::best_corner(&pts, size);
             if n == 0 || c.y_range.is_some() || size.1 > 0.5 {
                 return (Some(corner.position()), bx.3);
@@ -250,13 +268,51 @@ fn place_legend(
             let up = |right| layout::Corner { upper: true, right };
             let (r, l) = (up(true), up(false));
             let (hr, hl) = (
-                layout::headroom(&pts, r, size),
-                layout::headroom(&pts, l, size),
+                layout::headroom(&data, r, size),
+                layout::headroom(&data, l, size),
             );
             let (corner, top) = if hr <= hl { (r, hr) } else { (l, hl) };
             (Some(corner.position()), bx.2 + top * (bx.3 - bx.2))
         }
     }
+}
+
+/// Samples (fractions of the axes) filling the boxes of the reference lines' labels as
+/// [`draw_references`] places them, so that the legend avoids them too.
+fn reference_label_samples(c: &Chart, bx: (f64, f64, f64, f64), px: (f64, f64)) -> Vec<Pt> {
+    let (x0, x1, y0, y1) = bx;
+    let width = |l: &str| (0.6 * TICK_PX * l.chars().count() as f64 + 10.0) / px.0;
+    let row = 24.0 / px.1;
+    let mut boxes = Vec::new(); // (u0, u1, v0, v1)
+    let mut nv = 0.0;
+    for (x, label) in c.vlines.iter().filter(|v| !v.1.is_empty()) {
+        let Some(u) = axis::to_axis(*x, c.log_x).map(|x| (x - x0) / (x1 - x0)) else {
+            continue;
+        };
+        let w = width(label);
+        let (a, b) = if u > 0.7 { (u - w, u) } else { (u, u + w) };
+        boxes.push((a, b, 1.0 - row * (nv + 1.0), 1.0 - row * nv));
+        nv += 1.0;
+    }
+    for (y, label) in c.hlines.iter().filter(|h| !h.1.is_empty()) {
+        let Some(v) = axis::to_axis(*y, c.log_y).map(|y| (y - y0) / (y1 - y0)) else {
+            continue;
+        };
+        boxes.push((1.0 - width(label), 1.0, v - row, v + row));
+    }
+    let mut out = Vec::new();
+    for (a, b, lo, hi) in boxes {
+        for i in 0..=10 {
+            for j in 0..=4 {
+                out.push((
+                    a + (b - a) * i as f64 / 10.0,
+                    lo + (hi - lo) * j as f64 / 4.0,
+                ));
+            }
+        }
+    }
+    out.retain(|p| (0.0..=1.0).contains(&p.0) && (0.0..=1.0).contains(&p.1));
+    out
 }
 
 /// Draws the shaded bands; returns whether any got a legend label.
@@ -294,11 +350,13 @@ fn draw_bands<DB: DrawingBackend>(
 }
 
 /// Draws the reference lines with their labels on white boxes (vertical lines' labels
-/// stacked from the top, horizontal lines' at the right end above the line).
+/// stacked from the top; horizontal lines' above the line at its right end, left end or
+/// middle, whichever covers the fewest of the `data` samples, fractions of the axes).
 fn draw_references<DB: DrawingBackend>(
     ch: &mut Ctx<'_, DB>,
     c: &Chart,
     bx: (f64, f64, f64, f64),
+    data: &[Pt],
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     let (x0, x1, y0, y1) = bx;
@@ -345,8 +403,30 @@ fn draw_references<DB: DrawingBackend>(
         } else {
             (VPos::Bottom, -4)
         };
-        let pos = Pos::new(HPos::Right, v);
-        layout::boxed_text(ch.plotting_area(), (x1, y), (-8, dy), label, pos, REFERENCE)?;
+        // at the end of the line (right, left or middle) whose label box covers least data
+        let vf = (y - y0) / (y1 - y0);
+        let (pw, ph) = ch.plotting_area().dim_in_pixel();
+        let w = (0.6 * TICK_PX * label.chars().count() as f64 + 16.0) / pw.max(1) as f64;
+        let h = 24.0 / ph.max(1) as f64;
+        let (vlo, vhi) = if near_top { (vf - h, vf) } else { (vf, vf + h) };
+        let count = |u0: f64| {
+            let inside = |p: &&Pt| p.0 >= u0 && p.0 <= u0 + w && p.1 >= vlo && p.1 <= vhi;
+            data.iter().filter(inside).count()
+        };
+        let spots = [(1.0 - w, HPos::Right, x1, -8), (0.0, HPos::Left, x0, 8)];
+        let spots = spots.into_iter().chain(std::iter::once((
+            0.5 - 0.5 * w,
+            HPos::Center,
+            0.5 * (x0 + x1),
+            0,
+        )));
+        let (_, hp, at, dx) = spots
+            .map(|sp| (count(sp.0), sp))
+            .min_by_key(|(n, _)| *n)
+            .map(|(_, sp)| sp)
+            .unwrap_or((0.0, HPos::Right, x1, -8));
+        let pos = Pos::new(hp, v);
+        layout::boxed_text(ch.plotting_area(), (at, y), (dx, dy), label, pos, REFERENCE)?;
     }
     Ok(())
 }
@@ -368,7 +448,10 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
     }
     xs.extend(c.vlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_x)));
     ys.extend(c.hlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_y)));
-    let only_lines = c.series.iter().all(|s| s.kind != Kind::Points);
+    let only_lines = c
+        .series
+        .iter()
+        .all(|s| matches!(s.kind, Kind::Line | Kind::Dashed));
     let (x0, x1) = axis::range(c.x_range, &xs, if only_lines { 0.0 } else { 0.04 }, c.log_x);
     let (y0, y1) = axis::range(c.y_range, &ys, 0.06, c.log_y);
     let (pos, y1) = place_legend(c, &runs, (x0, x1, y0, y1), area.dim_in_pixel());
@@ -378,7 +461,13 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
     draw_axes(&mut ch, (&c.x_label, &c.y_label), steps, logs, true)?;
     let mut any_label = draw_bands(&mut ch, c, bx)?;
     any_label |= draw_series(&mut ch, &c.series, logs, bx, color)?;
-    draw_references(&mut ch, c, bx)?;
+    let drawn: Vec<(bool, &[Pt])> = c
+        .series
+        .iter()
+        .zip(&runs)
+        .flat_map(|(s, r)| r.iter().map(move |run| (s.kind != Kind::Points, &run[..])))
+        .collect();
+    draw_references(&mut ch, c, bx, &layout::samples(&drawn, bx))?;
     let notes: Vec<(f64, f64, String)> = c
         .notes
         .iter()

@@ -110,6 +110,8 @@ pub enum Kind {
     Dashed,
     /// Markers only.
     Points,
+    /// A solid line with a marker on every point (work-precision ladders).
+    LinePoints,
 }
 
 /// One data series: label (empty = not in the legend), points in data units, style.
@@ -141,6 +143,15 @@ impl Series {
             label: label.to_string(),
             points,
             kind: Kind::Dashed,
+            color: None,
+        }
+    }
+    /// A solid line with a marker on every point.
+    pub fn line_points(label: &str, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            label: label.to_string(),
+            points,
+            kind: Kind::LinePoints,
             color: None,
         }
     }
@@ -236,6 +247,10 @@ impl Chart {
     pub fn dashed(self, label: &str, points: Vec<(f64, f64)>) -> Self {
         self.series(Series::dashed(label, points))
     }
+    /// Adds a solid line with a marker on every point.
+    pub fn line_points(self, label: &str, points: Vec<(f64, f64)>) -> Self {
+        self.series(Series::line_points(label, points))
+    }
     /// Adds markers.
     pub fn points(self, label: &str, points: Vec<(f64, f64)>) -> Self {
         self.series(Series::points(label, points))
@@ -309,6 +324,43 @@ impl Drawing for Chart {
         area: &DrawingArea<DB, Shift>,
     ) -> std::result::Result<(), String> {
         chart::draw_chart(self, area)
+    }
+}
+
+/// A chart with a second chart drawn over it as an inset (a zoom, for example) on a
+/// white, framed box at `frac = (left, top, width, height)`, fractions of the area.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WithInset {
+    /// The main chart.
+    pub main: Chart,
+    /// The inset chart.
+    pub inset: Chart,
+    /// The inset's box: left, top, width, height as fractions of the whole area.
+    pub frac: (f64, f64, f64, f64),
+}
+
+impl Drawing for WithInset {
+    fn draw<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+    ) -> std::result::Result<(), String> {
+        self.main.draw(area)?;
+        let (w, h) = area.dim_in_pixel();
+        let f = |v: f64, n: u32| (v.clamp(0.0, 1.0) * n as f64).round() as i32;
+        let (l, t) = (f(self.frac.0, w), f(self.frac.1, h));
+        let size = (
+            f(self.frac.2, w).max(1) as u32,
+            f(self.frac.3, h).max(1) as u32,
+        );
+        let sub = area.clone().shrink((l, t), size);
+        sub.fill(&WHITE).map_err(|e| e.to_string())?;
+        self.inset.draw(&sub)?;
+        let (sw, sh) = sub.dim_in_pixel();
+        let frame = Rectangle::new(
+            [(0, 0), (sw as i32 - 1, sh as i32 - 1)],
+            REFERENCE.stroke_width(1),
+        );
+        sub.draw(&frame).map_err(|e| e.to_string())
     }
 }
 

@@ -10,7 +10,7 @@ use crate::physics::stick::run::{Recording, RunSummary, Sample, StickOutcome};
 use crate::physics::stick::{
     StickModel, StickParams, D_DAMP, D_FRIC, D_IMPACT, TH, W_PLATE, XC, ZC,
 };
-use crate::plot::{save_drawing, save_panels, Chart, Drawing, Legend, Series};
+use crate::plot::{save_drawing, save_panels, Chart, Drawing, Series};
 use crate::sweep::{linspace, par_map};
 use std::path::Path;
 
@@ -61,9 +61,13 @@ fn shade(mut c: Chart, samples: &[&Sample]) -> Chart {
         while c.bands.len() % 5 != m.index() {
             c = c.band(-1e9, -1e9, "");
         }
-        let label = if labelled[m.index()] { "" } else { m.name() };
+        let label = if labelled[m.index()] {
+            String::new()
+        } else {
+            m.name().replace('_', " ")
+        };
         labelled[m.index()] = true;
-        c = c.band(a, b, label);
+        c = c.band(a, b, &label);
         i = j + 1;
     }
     c
@@ -74,17 +78,16 @@ fn time_series(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>
     let pts = |f: &dyn Fn(&Sample) -> f64| w.iter().map(|s| (s.t_s, f(s))).collect::<Vec<_>>();
     let mm = 1e3;
     let c1 = shade(Chart::new("Foot C and plate", "t (s)", "height (mm)"), w)
-        .line("z_C", pts(&|s| s.y[ZC] * mm))
+        .line("z_c (foot)", pts(&|s| s.y[ZC] * mm))
         .dashed("z_s (plate)", pts(&|s| m.plate(s.t_s).0 * mm));
-    let c2 = shade(Chart::new("Tip P", "t (s)", "z_P (mm)"), w)
-        .line("z_P", pts(&|s| m.tip(&s.y)[1] * mm));
-    let c3 = shade(Chart::new("Angle", "t (s)", "theta (rad)"), w)
-        .line("theta", pts(&|s| s.y[TH]))
-        .hline(p.theta0_rad, "theta_0")
-        .hline(p.mu.atan(), "atan(mu)");
-    let c4 = shade(Chart::new("Foot position", "t (s)", "x_C (mm)"), w)
-        .line("x_C", pts(&|s| s.y[XC] * mm))
-        .legend(Legend::UpperLeft);
+    let c2 = shade(Chart::new("Tip P", "t (s)", "z_p (mm)"), w)
+        .line("z_p", pts(&|s| m.tip(&s.y)[1] * mm));
+    let c3 = shade(Chart::new("Angle", "t (s)", "θ (rad)"), w)
+        .line("θ", pts(&|s| s.y[TH]))
+        .hline(p.theta0_rad, "θ₀")
+        .hline(p.mu.atan(), "arctan μ");
+    let c4 = shade(Chart::new("Foot position", "t (s)", "x_c (mm)"), w)
+        .line("x_c", pts(&|s| s.y[XC] * mm));
     save_panels(&[c1, c2, c3, c4], 2, dir, "time-series")
 }
 
@@ -174,11 +177,10 @@ fn energy(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
         .line("damper", pts(&|x| x.y[D_DAMP]))
         .line("impacts", pts(&|x| x.y[D_IMPACT]))
         .line(
-            "change of mechanical energy",
+            "change of mechanical energy ΔE",
             pts(&|x| m.mechanical_energy(&x.y) - e0),
-        )
-        .legend(Legend::UpperLeft);
-    let r = Chart::new("Budget residual W - dE - losses", "t (s)", "|residual| (J)")
+        );
+    let r = Chart::new("Budget residual W − ΔE − losses", "t (s)", "|residual| (J)")
         .line(
             "|residual|",
             pts(&|x| {
@@ -251,12 +253,12 @@ fn speed_sweeps(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Res
     };
     let names = ["authors' scene", "self-locking scene"];
     let mut cg = Chart::new(
-        "Mean speed of C against Gamma (f fixed)",
-        "Gamma = delta omega^2 / g",
+        "Mean speed of C against Γ (f fixed)",
+        "Γ = δω² / g",
         "mean velocity (m/s)",
     );
     let mut cf = Chart::new(
-        "Mean speed of C against frequency (Gamma fixed)",
+        "Mean speed of C against frequency (Γ fixed)",
         "f (Hz)",
         "mean velocity (m/s)",
     );

@@ -126,7 +126,7 @@ pub fn frames(
 }
 
 /// The trace sample nearest to `t` (s).
-fn nearest<'a>(tr: &'a [Sample], t: f64) -> Option<&'a Sample> {
+fn nearest(tr: &[Sample], t: f64) -> Option<&Sample> {
     tr.iter()
         .min_by(|a, b| (a.t_s - t).abs().total_cmp(&(b.t_s - t).abs()))
 }
