@@ -204,3 +204,43 @@ pub(super) fn draw_notes<DB: DrawingBackend>(
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_legend_goes_to_the_emptiest_corner() {
+        // a rising line fills the lower left and the upper right: the upper left is free
+        let run: Vec<Pt> = (0..=10).map(|i| (i as f64, i as f64)).collect();
+        let pts = samples(&[(true, &run[..])], (0.0, 10.0, 0.0, 10.0));
+        let (c, n) = best_corner(&pts, (0.3, 0.3));
+        assert_eq!((c.upper, c.right, n), (true, false, 0));
+        // a falling line: the upper right is free
+        let run: Vec<Pt> = (0..=10).map(|i| (i as f64, 10.0 - i as f64)).collect();
+        let pts = samples(&[(true, &run[..])], (0.0, 10.0, 0.0, 10.0));
+        let (c, n) = best_corner(&pts, (0.3, 0.3));
+        assert_eq!((c.upper, c.right, n), (true, true, 0));
+    }
+
+    #[test]
+    fn lines_are_sampled_between_their_points() {
+        // two points far apart: the segment between them covers the middle of the axes
+        let run = [(0.0, 5.0), (10.0, 5.0)];
+        let pts = samples(&[(true, &run[..])], (0.0, 10.0, 0.0, 10.0));
+        assert!(pts.len() > 300, "{}", pts.len());
+        let markers = samples(&[(false, &run[..])], (0.0, 10.0, 0.0, 10.0));
+        assert_eq!(markers.len(), 2);
+    }
+
+    #[test]
+    fn headroom_lifts_the_data_below_an_upper_legend() {
+        // data up to the top of the axes on the right: the axis grows by 1 / (1 - h)
+        let pts = vec![(0.9, 1.0), (0.1, 0.2)];
+        let right = Corner::ALL[0];
+        let top = headroom(&pts, right, (0.3, 0.25));
+        assert!((top - 1.0 / 0.75).abs() < 1e-12, "{top}");
+        // no data under the legend's columns: no headroom
+        assert_eq!(headroom(&[(0.1, 1.0)], right, (0.3, 0.25)), 1.0);
+    }
+}
