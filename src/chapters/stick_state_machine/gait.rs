@@ -195,7 +195,7 @@ impl Picture<'_> {
     ) -> std::result::Result<(), String> {
         let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
         let (f, v) = (self.frame, self.view);
-        let mut ch = equal_aspect(area, v.whole, (36, 52))?;
+        let mut ch = equal_aspect(area, v.whole, (36, 62))?;
         let (xr, zr) = (ch.x_range(), ch.y_range());
         ch.configure_mesh()
             .bold_line_style(GRID.stroke_width(1))
@@ -206,6 +206,7 @@ impl Picture<'_> {
             .y_label_formatter(&|v| format!("{v:.0}"))
             .label_style(font(TICK_PX))
             .x_desc("x (mm)")
+            .y_desc("z (mm)")
             .axis_desc_style(font(TICK_PX))
             .draw()
             .map_err(e)?;
@@ -242,7 +243,7 @@ impl Picture<'_> {
         let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
         let (f, v) = (self.frame, self.view);
         let bx = (f.c.0 - v.half.0, f.c.0 + v.half.0, -v.half.1, v.half.1);
-        let mut ch = equal_aspect(area, bx, (36, 52))?;
+        let mut ch = equal_aspect(area, bx, (36, 62))?;
         let (xr, zr) = (ch.x_range(), ch.y_range());
         ch.configure_mesh()
             .bold_line_style(GRID.stroke_width(1))
@@ -253,6 +254,7 @@ impl Picture<'_> {
             .y_label_formatter(&|v| format!("{v:.0}"))
             .label_style(font(TICK_PX))
             .x_desc("foot close-up, x (mm)")
+            .y_desc("z (mm)")
             .axis_desc_style(font(TICK_PX))
             .draw()
             .map_err(e)?;
