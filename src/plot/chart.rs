@@ -1,6 +1,7 @@
 //! Drawing a [`Chart`] into any plotters area.
 
 use super::axis::{self, Pt, Ticked};
+use super::layout;
 use super::{
     color, font, Chart, Kind, Legend, Series, GRID, LABEL_PX, REFERENCE, TICK_PX, TITLE_PX,
 };
@@ -35,13 +36,24 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
     let (mut auto, mut shapes) = (0usize, 0usize);
     for s in series {
         let r = axis::runs(&s.points, logs.0, logs.1);
-        let col = pal(s.color.unwrap_or_else(|| {
+        let ci = s.color.unwrap_or_else(|| {
             auto += 1;
             auto - 1
-        }));
+        });
+        let col = pal(ci);
         let shape = shapes;
+        if s.kind == Kind::LinePoints {
+            // the line first (no legend entry), then the markers as a points series
+            let line = Series {
+                label: String::new(),
+                kind: Kind::Line,
+                color: Some(ci),
+                ..s.clone()
+            };
+            draw_series(ch, &[line], logs, bx, pal)?;
+        }
         let mut pieces: Vec<Vec<Pt>> = match s.kind {
-            Kind::Points => {
+            Kind::Points | Kind::LinePoints => {
                 shapes += 1;
                 let inside = |p: &&Pt| p.0 >= x0 && p.0 <= x1 && p.1 >= y0 && p.1 <= y1;
                 vec![r.iter().flatten().filter(inside).copied().collect()]
@@ -51,6 +63,20 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
                 .flat_map(|run| axis::clip_polyline(run, bx))
                 .collect(),
         };
+        if s.kind != Kind::Points {
+            // The bitmap backend joins wide segments with miters, and a miter at a
+            // near-reversal (a noisy trace) is a spike far out of the frame: drop points
+            // on the previous one's pixel and split the line where it turns back.
+            pieces = pieces
+                .into_iter()
+                .flat_map(|mut piece| {
+                    piece.dedup_by(|b, a| ch.backend_coord(a) == ch.backend_coord(b));
+                    let px: Vec<(i32, i32)> = piece.iter().map(|p| ch.backend_coord(p)).collect();
+                    split_at_reversals(piece, &px)
+                })
+                .filter(|p| !p.is_empty())
+                .collect();
+        }
         if pieces.is_empty() {
             pieces.push(Vec::new()); // drawn empty so that the legend still lists it
         }
@@ -70,7 +96,12 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
                 }};
             }
             let sq = |at| EmptyElement::at(at) + Rectangle::new([(-5, -5), (5, 5)], fill);
-            match (s.kind, shape % 4) {
+            let kind = if s.kind == Kind::LinePoints {
+                Kind::Points
+            } else {
+                s.kind
+            };
+            match (kind, shape % 4) {
                 (Kind::Line, _) => put!(
                     LineSeries::new(piece, st),
                     move |(x, y)| PathElement::new(vec![(x, y), (x + 22, y)], st)
@@ -93,7 +124,7 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
                 (Kind::Points, 2) => put!(piece.iter().map(|&p| sq(p)), move |(x, y)| {
                     EmptyElement::at((x + 11, y)) + Rectangle::new([(-5, -5), (5, 5)], fill)
                 }),
-                (Kind::Points, _) => put!(
+                (Kind::Points | Kind::LinePoints, _) => put!(
                     piece.iter().map(|&p| Cross::new(p, 5, st)),
                     move |(x, y)| { Cross::new((x + 11, y), 5, st) }
                 ),
@@ -101,6 +132,28 @@ pub(super) fn draw_series<'a, DB: DrawingBackend + 'a>(
         }
     }
     Ok(any_label)
+}
+
+/// Splits a polyline (points `pts`, their pixels `px`) where it turns back by more than
+/// 120 degrees; the pieces share the turning point, so the drawn line stays connected.
+fn split_at_reversals(pts: Vec<Pt>, px: &[(i32, i32)]) -> Vec<Vec<Pt>> {
+    let mut out = Vec::new();
+    let mut cur: Vec<Pt> = Vec::new();
+    for (i, p) in pts.iter().enumerate() {
+        cur.push(*p);
+        if i == 0 || i + 1 >= pts.len() {
+            continue;
+        }
+        let (a, b, c) = (px[i - 1], px[i], px[i + 1]);
+        let u = ((b.0 - a.0) as f64, (b.1 - a.1) as f64);
+        let v = ((c.0 - b.0) as f64, (c.1 - b.1) as f64);
+        let cos = (u.0 * v.0 + u.1 * v.1) / (u.0.hypot(u.1) * v.0.hypot(v.1)).max(1e-12);
+        if cos < -0.5 {
+            out.push(std::mem::replace(&mut cur, vec![*p])); // formula: turn > 120 deg
+        }
+    }
+    out.push(cur);
+    out
 }
 
 /// Builds the house-style chart on `area`: caption `title`, margins, label areas, and
@@ -171,32 +224,105 @@ pub(super) fn tick_label(v: f64, step: f64, log: bool) -> String {
     }
 }
 
-/// Draws the chart into `area`.
-pub(super) fn draw_chart<DB: DrawingBackend>(
-    c: &Chart,
-    area: &DrawingArea<DB, Shift>,
-) -> Result<(), String> {
-    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
-    let runs: Vec<Vec<Vec<Pt>>> = c
-        .series
-        .iter()
-        .map(|s| axis::runs(&s.points, c.log_x, c.log_y))
-        .collect();
-    let (mut xs, mut ys) = (Vec::new(), Vec::new());
-    for p in runs.iter().flatten().flatten() {
-        xs.push(p.0);
-        ys.push(p.1);
-    }
-    xs.extend(c.vlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_x)));
-    ys.extend(c.hlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_y)));
-    let only_lines = c.series.iter().all(|s| s.kind != Kind::Points);
-    let (x0, x1) = axis::range(c.x_range, &xs, if only_lines { 0.0 } else { 0.04 }, c.log_x);
-    let (y0, y1) = axis::range(c.y_range, &ys, 0.06, c.log_y);
-    let bx = (x0, x1, y0, y1);
-    let logs = (c.log_x, c.log_y);
-    let (mut ch, steps) = build_chart(area, &c.title, bx, logs)?;
-    draw_axes(&mut ch, (&c.x_label, &c.y_label), steps, logs, true)?;
+/// The legend's labels of a chart (bands first, as they are drawn).
+fn legend_labels(c: &Chart) -> Vec<&str> {
+    let bands = c.bands.iter().map(|b| b.2.as_str());
+    let series = c.series.iter().map(|s| s.label.as_str());
+    bands.chain(series).filter(|l| !l.is_empty()).collect()
+}
 
+/// The legend corner of `c` over the box `bx` (axis units) on `area_px` pixels, and the
+/// top of the y axis (raised for headroom when every corner covers data and the range
+/// is automatic). `None` when there is no legend.
+fn place_legend(
+    c: &Chart,
+    runs: &[Vec<Vec<Pt>>],
+    bx: (f64, f64, f64, f64),
+    area_px: (u32, u32),
+) -> (Option<SeriesLabelPosition>, f64) {
+    let labels = legend_labels(c);
+    let fixed = |p| (Some(p), bx.3);
+    match c.legend {
+        _ if labels.is_empty() => (None, bx.3),
+        Legend::Hidden => (None, bx.3),
+        Legend::UpperRight => fixed(SeriesLabelPosition::UpperRight),
+        Legend::UpperLeft => fixed(SeriesLabelPosition::UpperLeft),
+        Legend::LowerRight => fixed(SeriesLabelPosition::LowerRight),
+        Legend::LowerLeft => fixed(SeriesLabelPosition::LowerLeft),
+        Legend::Auto => {
+            let size = layout::legend_fraction(&labels, layout::plot_px(area_px));
+            let drawn: Vec<(bool, &[Pt])> = c
+                .series
+                .iter()
+                .zip(runs)
+                .flat_map(|(s, r)| r.iter().map(move |run| (s.kind != Kind::Points, &run[..])))
+                .collect();
+            let data = layout::samples(&drawn, bx);
+            let mut pts = data.clone();
+            pts.extend(reference_label_samples(c, bx, layout::plot_px(area_px)));
+            let (corner, n) = layout::best_corner(&pts, size);
+            if n == 0 || c.y_range.is_some() || size.1 > 0.5 {
+                return (Some(corner.position()), bx.3);
+            }
+            // every corner covers data: raise the top of the axis over the emptier upper corner
+            let up = |right| layout::Corner { upper: true, right };
+            let (r, l) = (up(true), up(false));
+            let (hr, hl) = (
+                layout::headroom(&data, r, size),
+                layout::headroom(&data, l, size),
+            );
+            let (corner, top) = if hr <= hl { (r, hr) } else { (l, hl) };
+            (Some(corner.position()), bx.2 + top * (bx.3 - bx.2))
+        }
+    }
+}
+
+/// Samples (fractions of the axes) filling the boxes of the reference lines' labels as
+/// [`draw_references`] places them, so that the legend avoids them too.
+fn reference_label_samples(c: &Chart, bx: (f64, f64, f64, f64), px: (f64, f64)) -> Vec<Pt> {
+    let (x0, x1, y0, y1) = bx;
+    let width = |l: &str| (0.6 * TICK_PX * l.chars().count() as f64 + 10.0) / px.0;
+    let row = 24.0 / px.1;
+    let mut boxes = Vec::new(); // (u0, u1, v0, v1)
+    let mut nv = 0.0;
+    for (x, label) in c.vlines.iter().filter(|v| !v.1.is_empty()) {
+        let Some(u) = axis::to_axis(*x, c.log_x).map(|x| (x - x0) / (x1 - x0)) else {
+            continue;
+        };
+        let w = width(label);
+        let (a, b) = if u > 0.7 { (u - w, u) } else { (u, u + w) };
+        boxes.push((a, b, 1.0 - row * (nv + 1.0), 1.0 - row * nv));
+        nv += 1.0;
+    }
+    for (y, label) in c.hlines.iter().filter(|h| !h.1.is_empty()) {
+        let Some(v) = axis::to_axis(*y, c.log_y).map(|y| (y - y0) / (y1 - y0)) else {
+            continue;
+        };
+        boxes.push((1.0 - width(label), 1.0, v - row, v + row));
+    }
+    let mut out = Vec::new();
+    for (a, b, lo, hi) in boxes {
+        for i in 0..=10 {
+            for j in 0..=4 {
+                out.push((
+                    a + (b - a) * i as f64 / 10.0,
+                    lo + (hi - lo) * j as f64 / 4.0,
+                ));
+            }
+        }
+    }
+    out.retain(|p| (0.0..=1.0).contains(&p.0) && (0.0..=1.0).contains(&p.1));
+    out
+}
+
+/// Draws the shaded bands; returns whether any got a legend label.
+fn draw_bands<DB: DrawingBackend>(
+    ch: &mut Ctx<'_, DB>,
+    c: &Chart,
+    bx: (f64, f64, f64, f64),
+) -> Result<bool, String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let (x0, x1, y0, y1) = bx;
     let mut any_label = false;
     for (i, (a, b, label)) in c.bands.iter().enumerate() {
         let (Some(a), Some(b)) = (axis::to_axis(*a, c.log_x), axis::to_axis(*b, c.log_x)) else {
@@ -220,10 +346,20 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
             });
         }
     }
+    Ok(any_label)
+}
 
-    any_label |= draw_series(&mut ch, &c.series, (c.log_x, c.log_y), bx, color)?;
-
-    let reference = font(TICK_PX).color(&REFERENCE);
+/// Draws the reference lines with their labels on white boxes (vertical lines' labels
+/// stacked from the top; horizontal lines' above the line at its right end, left end or
+/// middle, whichever covers the fewest of the `data` samples, fractions of the axes).
+fn draw_references<DB: DrawingBackend>(
+    ch: &mut Ctx<'_, DB>,
+    c: &Chart,
+    bx: (f64, f64, f64, f64),
+    data: &[Pt],
+) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let (x0, x1, y0, y1) = bx;
     let mut nv = 0;
     for (x, label) in &c.vlines {
         let Some(x) = axis::to_axis(*x, c.log_x).filter(|x| *x >= x0 && *x <= x1) else {
@@ -240,14 +376,15 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
         } else {
             (HPos::Left, 5)
         };
-        let t = Text::new(
-            label.clone(),
-            (dx, 5 + 22 * nv),
-            reference.pos(Pos::new(h, VPos::Top)),
-        );
-        ch.plotting_area()
-            .draw(&(EmptyElement::at((x, y1)) + t))
-            .map_err(e)?;
+        let pos = Pos::new(h, VPos::Top);
+        layout::boxed_text(
+            ch.plotting_area(),
+            (x, y1),
+            (dx, 5 + 24 * nv),
+            label,
+            pos,
+            REFERENCE,
+        )?;
         nv += 1;
     }
     for (y, label) in &c.hlines {
@@ -259,25 +396,89 @@ pub(super) fn draw_chart<DB: DrawingBackend>(
         if label.is_empty() {
             continue;
         }
-        let t = Text::new(
-            label.clone(),
-            (-5, -4),
-            reference.pos(Pos::new(HPos::Right, VPos::Bottom)),
-        );
-        ch.plotting_area()
-            .draw(&(EmptyElement::at((x1, y)) + t))
-            .map_err(e)?;
-    }
-
-    let pos = match c.legend {
-        Legend::UpperRight => SeriesLabelPosition::UpperRight,
-        Legend::UpperLeft => SeriesLabelPosition::UpperLeft,
-        Legend::LowerRight => SeriesLabelPosition::LowerRight,
-        Legend::LowerLeft => SeriesLabelPosition::LowerLeft,
-        Legend::Hidden => return Ok(()),
-    };
-    if any_label {
-        crate::plot::draw_legend(&mut ch, pos)?;
+        // below the line when the line is near the top (the label would leave the frame)
+        let near_top = y > y1 - 0.08 * (y1 - y0);
+        let (v, dy) = if near_top {
+            (VPos::Top, 4)
+        } else {
+            (VPos::Bottom, -4)
+        };
+        // at the end of the line (right, left or middle) whose label box covers least data
+        let vf = (y - y0) / (y1 - y0);
+        let (pw, ph) = ch.plotting_area().dim_in_pixel();
+        let w = (0.6 * TICK_PX * label.chars().count() as f64 + 16.0) / pw.max(1) as f64;
+        let h = 24.0 / ph.max(1) as f64;
+        let (vlo, vhi) = if near_top { (vf - h, vf) } else { (vf, vf + h) };
+        let count = |u0: f64| {
+            let inside = |p: &&Pt| p.0 >= u0 && p.0 <= u0 + w && p.1 >= vlo && p.1 <= vhi;
+            data.iter().filter(inside).count()
+        };
+        let spots = [(1.0 - w, HPos::Right, x1, -8), (0.0, HPos::Left, x0, 8)];
+        let spots = spots.into_iter().chain(std::iter::once((
+            0.5 - 0.5 * w,
+            HPos::Center,
+            0.5 * (x0 + x1),
+            0,
+        )));
+        let (_, hp, at, dx) = spots
+            .map(|sp| (count(sp.0), sp))
+            .min_by_key(|(n, _)| *n)
+            .map(|(_, sp)| sp)
+            .unwrap_or((0.0, HPos::Right, x1, -8));
+        let pos = Pos::new(hp, v);
+        layout::boxed_text(ch.plotting_area(), (at, y), (dx, dy), label, pos, REFERENCE)?;
     }
     Ok(())
+}
+
+/// Draws the chart into `area`.
+pub(super) fn draw_chart<DB: DrawingBackend>(
+    c: &Chart,
+    area: &DrawingArea<DB, Shift>,
+) -> Result<(), String> {
+    let runs: Vec<Vec<Vec<Pt>>> = c
+        .series
+        .iter()
+        .map(|s| axis::runs(&s.points, c.log_x, c.log_y))
+        .collect();
+    let (mut xs, mut ys) = (Vec::new(), Vec::new());
+    for p in runs.iter().flatten().flatten() {
+        xs.push(p.0);
+        ys.push(p.1);
+    }
+    xs.extend(c.vlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_x)));
+    ys.extend(c.hlines.iter().filter_map(|v| axis::to_axis(v.0, c.log_y)));
+    let only_lines = c
+        .series
+        .iter()
+        .all(|s| matches!(s.kind, Kind::Line | Kind::Dashed));
+    let (x0, x1) = axis::range(c.x_range, &xs, if only_lines { 0.0 } else { 0.04 }, c.log_x);
+    let (y0, y1) = axis::range(c.y_range, &ys, 0.06, c.log_y);
+    let (pos, y1) = place_legend(c, &runs, (x0, x1, y0, y1), area.dim_in_pixel());
+    let bx = (x0, x1, y0, y1);
+    let logs = (c.log_x, c.log_y);
+    let (mut ch, steps) = build_chart(area, &c.title, bx, logs)?;
+    draw_axes(&mut ch, (&c.x_label, &c.y_label), steps, logs, true)?;
+    let mut any_label = draw_bands(&mut ch, c, bx)?;
+    any_label |= draw_series(&mut ch, &c.series, logs, bx, color)?;
+    let drawn: Vec<(bool, &[Pt])> = c
+        .series
+        .iter()
+        .zip(&runs)
+        .flat_map(|(s, r)| r.iter().map(move |run| (s.kind != Kind::Points, &run[..])))
+        .collect();
+    draw_references(&mut ch, c, bx, &layout::samples(&drawn, bx))?;
+    let notes: Vec<(f64, f64, String)> = c
+        .notes
+        .iter()
+        .filter_map(|(x, y, t)| {
+            let (x, y) = (axis::to_axis(*x, c.log_x)?, axis::to_axis(*y, c.log_y)?);
+            Some((x, y, t.clone()))
+        })
+        .collect();
+    layout::draw_notes(ch.plotting_area(), &notes)?;
+    match pos {
+        Some(pos) if any_label => crate::plot::draw_legend(&mut ch, pos),
+        _ => Ok(()),
+    }
 }

@@ -26,8 +26,10 @@ pub struct HeatMap {
     pub color_label: String,
     /// Curves drawn over the map (boundaries, theory), in data units.
     pub overlays: Vec<Series>,
-    /// Legend position for the overlays.
+    /// Legend position for the overlays ([`Legend::Auto`] means upper right here).
     pub legend: Legend,
+    /// Text notes `(x, y, text)` in data units, left-centred at the point, on a white box.
+    pub notes: Vec<(f64, f64, String)>,
 }
 
 impl HeatMap {
@@ -51,11 +53,17 @@ impl HeatMap {
             color_label: color_label.to_string(),
             overlays: Vec::new(),
             legend: Legend::UpperRight,
+            notes: Vec::new(),
         }
     }
     /// Draws a curve over the map.
     pub fn overlay(mut self, s: Series) -> Self {
         self.overlays.push(s);
+        self
+    }
+    /// A text note left-centred at `(x, y)` (data units), on a white box.
+    pub fn note(mut self, x: f64, y: f64, text: &str) -> Self {
+        self.notes.push((x, y, text.to_string()));
         self
     }
     /// Moves (or hides) the overlay legend.
@@ -114,6 +122,34 @@ fn edges(v: &[f64]) -> Vec<f64> {
     }
 }
 
+/// The cells as an RGB image of `size` pixels covering the map's box (edges `ex`, `ey`
+/// in data units, y upwards): each pixel takes the colour of the cell holding its centre.
+/// One image instead of one rectangle per cell keeps a 128 x 128 map's SVG small.
+fn cell_pixels(
+    size: (u32, u32),
+    (ex, ey): (&[f64], &[f64]),
+    colour: impl Fn(usize, usize) -> RGBColor,
+) -> Vec<u8> {
+    let (w, h) = (size.0 as usize, size.1 as usize);
+    let (x0, x1) = (ex[0], ex[ex.len() - 1]);
+    let (y0, y1) = (ey[0], ey[ey.len() - 1]);
+    let cell = |edges: &[f64], v: f64| {
+        edges[1..edges.len() - 1].partition_point(|&b| b <= v) // index of the cell holding v
+    };
+    let cols: Vec<usize> = (0..w)
+        .map(|i| cell(ex, x0 + (i as f64 + 0.5) / w as f64 * (x1 - x0)))
+        .collect();
+    let mut buf = Vec::with_capacity(w * h * 3);
+    for j in 0..h {
+        let iy = cell(ey, y1 - (j as f64 + 0.5) / h as f64 * (y1 - y0));
+        for &ix in &cols {
+            let c = colour(ix, iy);
+            buf.extend([c.0, c.1, c.2]);
+        }
+    }
+    buf
+}
+
 fn overlay_color(i: usize) -> RGBColor {
     [
         RGBColor(255, 255, 255),
@@ -142,20 +178,19 @@ impl Drawing for HeatMap {
         let (y0, y1) = (ey[0], ey[ey.len() - 1]);
         let linear = (false, false);
         let (mut ch, steps) = build_chart(&main, &self.title, (x0, x1, y0, y1), linear)?;
-        let (ex, ey) = (&ex, &ey);
-        let cells = (0..self.ys.len().max(1)).flat_map(|iy| {
-            (0..self.xs.len().max(1)).map(move |ix| {
-                let v = self
-                    .values
-                    .get(iy)
-                    .and_then(|r| r.get(ix))
-                    .copied()
-                    .unwrap_or(f64::NAN);
-                let col = viridis((v - vmin) / (vmax - vmin));
-                Rectangle::new([(ex[ix], ey[iy]), (ex[ix + 1], ey[iy + 1])], col.filled())
-            })
-        });
-        ch.draw_series(cells).map_err(e)?;
+        let colour = |ix: usize, iy: usize| {
+            let v = self.values.get(iy).and_then(|r| r.get(ix)).copied();
+            viridis((v.unwrap_or(f64::NAN) - vmin) / (vmax - vmin))
+        };
+        let (px, py) = ch.plotting_area().get_pixel_range();
+        let size = (
+            (px.end - px.start).max(1) as u32,
+            (py.end - py.start).max(1) as u32,
+        );
+        let pixels = cell_pixels(size, (&ex, &ey), colour);
+        if let Some(img) = BitMapElement::with_owned_buffer((x0, y1), size, pixels) {
+            ch.plotting_area().draw(&img).map_err(e)?;
+        }
         draw_axes(
             &mut ch,
             (&self.x_label, &self.y_label),
@@ -171,12 +206,13 @@ impl Drawing for HeatMap {
             overlay_color,
         )?;
         let pos = match self.legend {
-            Legend::UpperRight => Some(SeriesLabelPosition::UpperRight),
+            Legend::UpperRight | Legend::Auto => Some(SeriesLabelPosition::UpperRight),
             Legend::UpperLeft => Some(SeriesLabelPosition::UpperLeft),
             Legend::LowerRight => Some(SeriesLabelPosition::LowerRight),
             Legend::LowerLeft => Some(SeriesLabelPosition::LowerLeft),
             Legend::Hidden => None,
         };
+        super::layout::draw_notes(ch.plotting_area(), &self.notes)?;
         if let (true, Some(pos)) = (labelled, pos) {
             ch.configure_series_labels()
                 .position(pos)

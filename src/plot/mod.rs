@@ -19,6 +19,7 @@
 mod axis;
 mod chart;
 mod heatmap;
+mod layout;
 #[cfg(test)]
 mod tests;
 
@@ -109,6 +110,8 @@ pub enum Kind {
     Dashed,
     /// Markers only.
     Points,
+    /// A solid line with a marker on every point (work-precision ladders).
+    LinePoints,
 }
 
 /// One data series: label (empty = not in the legend), points in data units, style.
@@ -143,6 +146,15 @@ impl Series {
             color: None,
         }
     }
+    /// A solid line with a marker on every point.
+    pub fn line_points(label: &str, points: Vec<(f64, f64)>) -> Self {
+        Series {
+            label: label.to_string(),
+            points,
+            kind: Kind::LinePoints,
+            color: None,
+        }
+    }
     /// Markers.
     pub fn points(label: &str, points: Vec<(f64, f64)>) -> Self {
         Series {
@@ -162,7 +174,10 @@ impl Series {
 /// Where the legend goes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Legend {
-    /// Upper right corner of the plotting area (the default).
+    /// The corner that covers the least data; headroom above the data when every
+    /// corner covers some (the default of [`Chart::new`]).
+    Auto,
+    /// Upper right corner of the plotting area.
     UpperRight,
     /// Upper left corner.
     UpperLeft,
@@ -201,6 +216,8 @@ pub struct Chart {
     pub bands: Vec<(f64, f64, String)>,
     /// Legend position.
     pub legend: Legend,
+    /// Text notes `(x, y, text)` in data units, left-centred at the point, on a white box.
+    pub notes: Vec<(f64, f64, String)>,
 }
 
 impl Chart {
@@ -218,7 +235,8 @@ impl Chart {
             vlines: Vec::new(),
             hlines: Vec::new(),
             bands: Vec::new(),
-            legend: Legend::UpperRight,
+            legend: Legend::Auto,
+            notes: Vec::new(),
         }
     }
     /// Adds a solid line.
@@ -228,6 +246,10 @@ impl Chart {
     /// Adds a dashed line.
     pub fn dashed(self, label: &str, points: Vec<(f64, f64)>) -> Self {
         self.series(Series::dashed(label, points))
+    }
+    /// Adds a solid line with a marker on every point.
+    pub fn line_points(self, label: &str, points: Vec<(f64, f64)>) -> Self {
+        self.series(Series::line_points(label, points))
     }
     /// Adds markers.
     pub fn points(self, label: &str, points: Vec<(f64, f64)>) -> Self {
@@ -278,6 +300,11 @@ impl Chart {
         self.legend = at;
         self
     }
+    /// A text note left-centred at `(x, y)` (data units), on a white box.
+    pub fn note(mut self, x: f64, y: f64, text: &str) -> Self {
+        self.notes.push((x, y, text.to_string()));
+        self
+    }
 }
 
 /// A picture drawn into a plotters drawing area: implement it for custom figures
@@ -297,6 +324,43 @@ impl Drawing for Chart {
         area: &DrawingArea<DB, Shift>,
     ) -> std::result::Result<(), String> {
         chart::draw_chart(self, area)
+    }
+}
+
+/// A chart with a second chart drawn over it as an inset (a zoom, for example) on a
+/// white, framed box at `frac = (left, top, width, height)`, fractions of the area.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WithInset {
+    /// The main chart.
+    pub main: Chart,
+    /// The inset chart.
+    pub inset: Chart,
+    /// The inset's box: left, top, width, height as fractions of the whole area.
+    pub frac: (f64, f64, f64, f64),
+}
+
+impl Drawing for WithInset {
+    fn draw<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+    ) -> std::result::Result<(), String> {
+        self.main.draw(area)?;
+        let (w, h) = area.dim_in_pixel();
+        let f = |v: f64, n: u32| (v.clamp(0.0, 1.0) * n as f64).round() as i32;
+        let (l, t) = (f(self.frac.0, w), f(self.frac.1, h));
+        let size = (
+            f(self.frac.2, w).max(1) as u32,
+            f(self.frac.3, h).max(1) as u32,
+        );
+        let sub = area.clone().shrink((l, t), size);
+        sub.fill(&WHITE).map_err(|e| e.to_string())?;
+        self.inset.draw(&sub)?;
+        let (sw, sh) = sub.dim_in_pixel();
+        let frame = Rectangle::new(
+            [(0, 0), (sw as i32 - 1, sh as i32 - 1)],
+            REFERENCE.stroke_width(1),
+        );
+        sub.draw(&frame).map_err(|e| e.to_string())
     }
 }
 
@@ -351,6 +415,7 @@ pub fn save_drawing<D: Drawing>(
 ) -> Result<Vec<String>> {
     ensure_font();
     let dir = dir.as_ref();
+    check_name(name)?;
     std::fs::create_dir_all(dir)
         .map_err(|e| WorkbookError::Io(format!("cannot create {}: {e}", dir.display())))?;
     let size = (size.0.clamp(50, 20_000), size.1.clamp(50, 20_000));
@@ -362,6 +427,66 @@ pub fn save_drawing<D: Drawing>(
     render(SVGBackend::new(&svg, size).into_drawing_area(), d).map_err(|e| fail(&svg, e))?;
     render(BitMapBackend::new(&png, size).into_drawing_area(), d).map_err(|e| fail(&png, e))?;
     Ok(vec![svg.display().to_string(), png.display().to_string()])
+}
+
+/// Writes an animated GIF `dir/name.gif` of `frames` (one [`Drawing`] per frame, each on
+/// a white page of `size` pixels), `delay_ms` milliseconds per frame (rounded to the
+/// format's 10 ms), looping forever; returns the path. Colours are quantised per frame
+/// by the deterministic NeuQuant of the `gif` crate: the same bytes on every run.
+pub fn save_gif<D: Drawing>(
+    frames: &[D],
+    dir: impl AsRef<Path>,
+    name: &str,
+    size: (u32, u32),
+    delay_ms: u32,
+) -> Result<Vec<String>> {
+    ensure_font();
+    let dir = dir.as_ref();
+    check_name(name)?;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| WorkbookError::Io(format!("cannot create {}: {e}", dir.display())))?;
+    let size = (size.0.clamp(50, 4000), size.1.clamp(50, 4000));
+    let path = dir.join(format!("{name}.gif"));
+    let fail =
+        |e: String| WorkbookError::Io(format!("cannot write figure {}: {e}", path.display()));
+    let backend = BitMapBackend::gif(&path, size, delay_ms).map_err(|e| fail(e.to_string()))?;
+    let root = backend.into_drawing_area();
+    for f in frames {
+        render_frame(&root, f).map_err(fail)?;
+    }
+    Ok(vec![path.display().to_string()])
+}
+
+fn render_frame<DB: DrawingBackend, D: Drawing>(
+    root: &DrawingArea<DB, Shift>,
+    d: &D,
+) -> std::result::Result<(), String> {
+    root.fill(&WHITE).map_err(|e| e.to_string())?;
+    d.draw(root)?;
+    root.present().map_err(|e| e.to_string())
+}
+
+/// Whether `name` is a kebab-case file stem (lower-case ASCII letters and digits in
+/// words joined by single hyphens, as the chapter ids): the one naming style of figures.
+pub fn is_kebab(name: &str) -> bool {
+    !name.is_empty()
+        && name.split('-').all(|w| {
+            !w.is_empty()
+                && w.bytes()
+                    .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit())
+        })
+}
+
+/// Refuses a figure name that is not kebab-case (a programming error of a chapter,
+/// reported as an output error rather than a silently inconsistent file name).
+fn check_name(name: &str) -> Result<()> {
+    if is_kebab(name) {
+        Ok(())
+    } else {
+        Err(WorkbookError::Io(format!(
+            "figure name {name:?} is not kebab-case (a-z, 0-9, single hyphens)"
+        )))
+    }
 }
 
 fn render<DB: DrawingBackend, D: Drawing>(

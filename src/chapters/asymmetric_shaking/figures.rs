@@ -51,8 +51,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
         steady.into_iter().step_by(10).collect(),
     )
     .hline(vd, "closed-form drift")
-    .vline(t_lock * 1e3, "first stick")
-    .legend(Legend::LowerLeft);
+    .vline(t_lock * 1e3, "first stick");
     let c2 = Chart::new(
         "Linear friction: the block follows the plate, mean zero",
         "time (ms)",
@@ -60,8 +59,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     )
     .dashed("plate", ms(&tr.linear, 2))
     .line("block (simulated)", ms(&tr.linear, 1))
-    .hline(0.0, "zero")
-    .legend(Legend::LowerLeft);
+    .hline(0.0, "zero");
     paths.extend(save_panels(&[c1, c2], 1, dir, "velocities")?);
 
     // 2. Drift against the asymmetry: sawtooth speed ratio, bi-harmonic eps.
@@ -81,7 +79,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
         .map(|r| (r, drift_ratio(r, y)))
         .collect();
     let p1 = Chart::new(
-        &format!("Sawtooth, friction number mu g t_slow / v_slow = {y:.3}"),
+        &format!("Sawtooth, friction number μg T_slow / v_slow = {y:.3}"),
         "speed ratio v_fast / v_slow",
         "drift / v_slow",
     )
@@ -90,14 +88,11 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     let vb = 0.5 * (saw.slow_velocity_mps + saw.fast_velocity_mps);
     let epss = linspace(-0.45, 0.45, if quick { 5 } else { 19 });
     let mut p2 = Chart::new(
-        "Bi-harmonic drive v_p = V (sin wt + eps cos 2wt)",
-        "asymmetry eps",
+        "Bi-harmonic drive v_p = V (sin ωt + ε cos 2ωt)",
+        "asymmetry ε",
         "drift / V",
     )
-    .dashed(
-        "limit eps (Gamma -> infinity)",
-        vec![(-0.45, -0.45), (0.45, 0.45)],
-    );
+    .dashed("limit ε (Γₓ → ∞)", vec![(-0.45, -0.45), (0.45, 0.45)]);
     for gamma in [3.0, 10.0] {
         let pts: Vec<(f64, f64)> = par_map(&epss, "bi-harmonic eps sweep", |&e| {
             let p = biharmonic(vb, gamma, e, k);
@@ -115,17 +110,17 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
             .filter_map(|e| always_slipping_drift(gamma, e).map(|d| (e, d)))
             .collect();
         p2 = p2
-            .line(&format!("always slipping, Gamma = {gamma}"), theory)
-            .points(&format!("simulation, Gamma = {gamma}"), pts);
+            .line(&format!("always slipping, Γₓ = {gamma}"), theory)
+            .points(&format!("simulation, Γₓ = {gamma}"), pts);
     }
-    paths.extend(save_panels(&[p1, p2], 2, dir, "drift_vs_asymmetry")?);
+    paths.extend(save_panels(&[p1, p2], 2, dir, "drift-vs-asymmetry")?);
 
     // 3. Bi-harmonic drift against the drive number.
     let gammas = logspace(0.5, 100.0, if quick { 6 } else { 30 });
     let mut c3 = Chart::new(
         "Bi-harmonic drift against the drive number",
-        "Gamma = V omega / (mu g)",
-        "drift / (eps V)",
+        "drive number Γₓ = Vω / (μg)",
+        "drift / (εV)",
     )
     .log_x();
     for eps in [0.1, 0.3] {
@@ -145,15 +140,15 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
             .filter_map(|g| always_slipping_drift(g, eps).map(|d| (g, d / eps)))
             .collect();
         c3 = c3
-            .points(&format!("simulation, eps = {eps}"), pts)
-            .line(&format!("always slipping, eps = {eps}"), theory);
+            .points(&format!("simulation, ε = {eps}"), pts)
+            .line(&format!("always slipping, ε = {eps}"), theory);
         c3 = c3.vline(
             stick_forever_gamma(eps),
-            &format!("Gamma_stick, eps = {eps}"),
+            &format!("sticks for good below: ε = {eps}"),
         );
     }
-    c3 = c3.hline(1.0, "limit eps V");
-    paths.extend(save_chart(&c3, dir, "drift_vs_drive")?);
+    c3 = c3.hline(1.0, "limit εV");
+    paths.extend(save_chart(&c3, dir, "drift-vs-drive")?);
 
     // 4. Regime map of the sawtooth (closed form) with the boundary y = r (r + 1).
     let rs = linspace(1.05, 4.0, 60);
@@ -171,18 +166,19 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     let h = HeatMap::new(
         "Sawtooth regimes: drift / v_slow (closed form)",
         "speed ratio v_fast / v_slow",
-        "friction number mu g t_slow / v_slow",
+        "friction number μg T_slow / v_slow",
         rs,
         ys,
         values,
         "drift / v_slow",
     )
     .overlay(Series::line(
-        "stick in both strokes above: mu g t_fast = v_slow + v_fast",
+        "stick in both strokes above: μg T_fast = v_slow + v_fast",
         boundary,
     ))
-    .overlay(Series::points("this scene", here));
-    paths.extend(save_heatmap(&h, dir, "regime_map")?);
+    .overlay(Series::points("this scene", here))
+    .legend(Legend::UpperLeft); // over the uniform zero-drift region, off the boundary
+    paths.extend(save_heatmap(&h, dir, "regime-map")?);
 
     // 5. Work-precision (full mode: the rows come from the checks).
     if !tr.work.is_empty() {
@@ -209,16 +205,15 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
                 )
                 .log_x()
                 .log_y()
-                .line("DP5, located events (tol 1e-3 .. 1e-12)", pick("DP5"))
-                .points("DP5 points", pick("DP5"))
-                .line(
-                    "RK4 fixed step, no event location (T/15 .. T/1023)",
+                .line_points("DP5, located events (tol 1e-3 … 1e-12)", pick("DP5"))
+                .line_points(
+                    "RK4 fixed step, no event location (T/15 … T/1023)",
                     pick("RK4"),
                 )
                 .hline(1e-12, "claim tolerance"),
             );
         }
-        paths.extend(save_panels(&charts, 2, dir, "work_precision")?);
+        paths.extend(save_panels(&charts, 2, dir, "work-precision")?);
     }
     Ok(paths)
 }

@@ -157,34 +157,34 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
         let lock = mu.atan().to_degrees();
         let chart = Chart::new(
             "Sideways impulse of a vertical collision at C",
-            "lean angle theta from vertical (degrees)",
-            "J_l / J_v (1)",
+            "lean angle θ from the vertical (degrees)",
+            "J_ℓ / J_v (1)",
         )
         .band(
             0.0,
             lock,
-            &format!("self-locking: tan theta < mu = {}", fmt_num(mu)),
+            &format!("self-locking: tan θ < μ = {}", fmt_num(mu)),
         )
         .series(Series::line("point mass: q", pm).color(0))
-        .series(Series::line("uniform rod: 3q/(4+q^2)", rd).color(1))
-        .series(Series::points("45 degrees: 1 and 0.6", vec![(45.0, 1.0), (45.0, 0.6)]).color(6))
+        .series(Series::line("uniform rod: 3q/(4+q²)", rd).color(1))
+        .series(Series::points("45°: 1 and 0.6", vec![(45.0, 1.0), (45.0, 0.6)]).color(6))
         .series(
             Series::points(
-                "rod maximum: 0.75 at 63.43 degrees",
+                "rod maximum: 0.75 at 63.43°",
                 vec![(best.to_degrees(), 0.75)],
             )
             .color(2),
         )
         .series(
             Series::points(
-                "rod jams up to / beyond: 3q/(4+q^2) = mu",
+                "rod jams up to / beyond: 3q/(4+q²) = μ",
                 rod_lock_angles_closed_form(mu)
                     .map(|(a, b)| vec![(a.to_degrees(), mu), (b.to_degrees(), mu)])
                     .unwrap_or_default(),
             )
             .color(4),
         )
-        .hline(mu, &format!("mu = {}", fmt_num(mu)))
+        .hline(mu, &format!("μ = {}", fmt_num(mu)))
         .vline(lock, "")
         .x_range(0.0, 90.0)
         .y_range(0.0, 2.0)

@@ -49,7 +49,7 @@ impl Drawing for Sketch {
         let scale = 2.2 / (w as f64 - 100.0).max(10.0);
         let y1 = -0.15 + scale * (h as f64 - 130.0).max(10.0);
         let title = format!(
-            "Impulse at C: theta = {:.1} deg, mu = {}",
+            "Impulse at C: θ = {:.1}°, μ = {}",
             self.theta_rad.to_degrees(),
             crate::report::fmt_num(self.mu)
         );
@@ -80,7 +80,7 @@ impl Drawing for Sketch {
         let tri = vec![(0.0, 0.0), (-self.mu * top, top), (self.mu * top, top)];
         ch.draw_series(std::iter::once(Polygon::new(tri, cone.mix(0.25).filled())))
             .map_err(e)?
-            .label("friction cone |J_l| <= mu J_v (C holds inside)")
+            .label("friction cone |J_ℓ| ≤ μ J_v (C holds inside)")
             .legend(move |(x, y)| {
                 Rectangle::new([(x, y - 7), (x + 22, y + 7)], cone.mix(0.4).filled())
             });
@@ -112,8 +112,8 @@ impl Drawing for Sketch {
                 .map_err(e)?;
         }
         for (k, (ratio, name)) in [
-            (self.ratio_point_mass, "point mass: J_l/J_v = q"),
-            (self.ratio_rod, "uniform rod: J_l/J_v = 3q/(4+q^2)"),
+            (self.ratio_point_mass, "point mass: J_ℓ/J_v = q"),
+            (self.ratio_rod, "uniform rod: J_ℓ/J_v = 3q/(4+q²)"),
         ]
         .into_iter()
         .enumerate()

@@ -7,7 +7,7 @@ use crate::error::Result;
 use crate::numerics::hybrid::Segment;
 use crate::physics::block::{BlockMode, BlockOptions, Observer};
 use crate::physics::plate::PlateMotion;
-use crate::plot::{save_chart, save_panels, Chart, Legend};
+use crate::plot::{save_chart, save_panels, Chart};
 use crate::sweep::{linspace, par_map};
 use std::path::Path;
 
@@ -46,8 +46,8 @@ pub fn draw(
     let fit: Vec<(f64, f64)> = sweep.iter().map(|&(g, _, _)| (g, c / (g * g))).collect();
     let chart = Chart::new(
         &format!("Averaged law vs exact drift (bias {:.2})", err_scene.bias),
-        "Gamma_x = delta_x omega^2 / (mu g)",
-        "relative error of V sin(pi b/2)",
+        "Γₓ = δₓω² / (μg)",
+        "relative error of V sin(πb/2)",
     )
     .log_x()
     .log_y()
@@ -55,33 +55,36 @@ pub fn draw(
         "exact periodic drift (shooting)",
         sweep.iter().map(|&(g, e, _)| (g, e)).collect(),
     )
-    .dashed(&format!("{c:.2} / Gamma_x^2"), fit)
+    .dashed(&format!("{c:.2} / Γₓ²"), fit)
     .hline(0.01, "1 %")
-    .vline(g1, &format!("Gamma_x = {g1:.2}"));
+    .vline(g1, &format!("Γₓ = {g1:.2}"));
     paths.extend(save_chart(&chart, dir, "averaged-law-error")?);
 
     // Drift against bias at several Gamma_x, with the averaged and the linear laws.
     let biases = linspace(0.0, 0.95, if quick { 6 } else { 20 });
-    let mut chart = Chart::new("Drift speed against bias", "bias F / (mu m g)", "drift / V")
-        .legend(Legend::UpperLeft);
+    let mut chart = Chart::new(
+        "Drift speed against bias",
+        "bias b = F / (μmg)",
+        "drift / V",
+    );
     for gx in [1.5, 3.0, 10.0] {
         let s = scene.at_gamma_x(gx);
         let pts = par_map(&biases, "drift vs bias", |&b| {
             let sc = Scene { bias: b, ..s };
             (b, steady_drift(&sc).drift_mps / sc.velocity_amplitude_mps())
         });
-        chart = chart.points(&format!("exact, Gamma_x = {gx}"), pts);
+        chart = chart.points(&format!("exact, Γₓ = {gx}"), pts);
     }
     let fine = linspace(0.0, 0.95, 60);
     chart = chart
         .line(
-            "averaged law sin(pi b/2)",
+            "averaged law sin(πb/2)",
             fine.iter()
                 .map(|&b| (b, (std::f64::consts::PI * b / 2.0).sin()))
                 .collect(),
         )
         .dashed(
-            "linear (viscous) law pi b/2",
+            "linear (viscous) law πb/2",
             fine.iter()
                 .map(|&b| (b, std::f64::consts::PI * b / 2.0))
                 .filter(|p| p.1 <= 1.1)
@@ -136,13 +139,12 @@ pub fn draw(
         "tilt (deg)",
         "downhill drift speed (m/s)",
     )
-    .legend(Legend::UpperLeft)
     .points(
         "exact simulation",
         rows.iter().map(|r| (r.0, r.1)).collect(),
     )
     .line("averaged law", rows.iter().map(|r| (r.0, r.2)).collect())
-    .vline(atan, "arctan(mu): slides unshaken");
+    .vline(atan, "arctan μ: slides unshaken");
     paths.extend(save_chart(&chart, dir, "booktop")?);
 
     // Work against accuracy.

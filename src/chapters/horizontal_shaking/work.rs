@@ -146,15 +146,14 @@ pub fn charts(points: &[WorkPoint], title: &str) -> [Chart; 2] {
     )
     .log_x()
     .log_y()
-    .line(
+    .line_points(
         "DP5 + event location",
         pts("dopri5", &|p| p.rhs_evals as f64),
     )
-    .line(
+    .line_points(
         "RK4 fixed step, no location",
         pts("rk4-fixed", &|p| p.rhs_evals as f64),
-    )
-    .legend(Legend::UpperRight);
+    );
     let wall = Chart::new(
         &format!("{title}: error vs wall time"),
         "wall time (s)",

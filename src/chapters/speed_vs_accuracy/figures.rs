@@ -3,7 +3,7 @@
 use super::economy::SweepRow;
 use super::work_precision::WpPoint;
 use crate::error::Result;
-use crate::plot::{save_panels, Chart, Legend, Series};
+use crate::plot::{save_panels, Chart, Series};
 use std::path::Path;
 
 /// Method labels in drawing order with (palette colour, dashed).
@@ -30,8 +30,7 @@ fn wp_chart(
 ) -> Chart {
     let mut c = Chart::new(title, x_label, "relative error of the mean velocity")
         .log_x()
-        .log_y()
-        .legend(Legend::LowerLeft);
+        .log_y();
     for (label, col, dashed) in METHODS {
         let mut pts: Vec<(f64, f64)> = points
             .iter()
@@ -77,16 +76,11 @@ pub fn work_precision(
         "wall time (s, minimum of repeats)",
         |p| p.wall_s,
     );
-    save_panels(
-        &[a, b],
-        2,
-        dir,
-        &format!("work_precision_{}", problem.replace('-', "_")),
-    )
+    save_panels(&[a, b], 2, dir, &format!("work-precision-{problem}"))
 }
 
 /// The economy charts: relative error of the averaged laws against Gamma (vertical
-/// shaking) and against the dither acceleration ratio K (horizontal shaking).
+/// shaking) and against Γₓ = δₓω²/(μg) (horizontal shaking).
 pub fn economy(
     dir: &Path,
     sweep: &[SweepRow],
@@ -100,26 +94,24 @@ pub fn economy(
     let law: Vec<(f64, f64)> = sweep.iter().map(|r| (r.0, rel(r.3, r.1))).collect();
     let c = Chart::new(
         "Vertical shaking: averaged laws",
-        "Gamma = delta omega^2 / g",
+        "Γ = δ_z ω² / g",
         "relative error of the drift",
     )
     .log_y()
-    .series(Series::points("flight map b g t_f^2/(2 n T)", map).color(0))
-    .series(Series::points("mu_eff law b delta omega", law).color(1))
-    .hline(0.01, "1 %")
-    .legend(Legend::UpperRight);
+    .series(Series::points("flight map b g t_f² / (2nT)", map).color(0))
+    .series(Series::points("μ_eff law b δ_z ω", law).color(1))
+    .hline(0.01, "1 %");
     let arcsin: Vec<(f64, f64)> = horizontal.iter().map(|r| (r.0, rel(r.2, r.1))).collect();
     let viscous: Vec<(f64, f64)> = horizontal.iter().map(|r| (r.0, rel(r.3, r.1))).collect();
     let h = Chart::new(
         "Horizontal dither: averaged laws",
-        "K = delta omega^2 / (mu g)",
+        "Γₓ = δₓ ω² / (μg)",
         "relative error of the drift",
     )
     .log_x()
     .log_y()
-    .series(Series::line("arcsin law V sin(pi beta/2)", arcsin).color(0))
-    .series(Series::dashed("viscous law F/c, c = 2 mu g/(pi V)", viscous).color(1))
-    .hline(0.01, "1 %")
-    .legend(Legend::UpperRight);
+    .series(Series::line("arcsin law V sin(πb/2)", arcsin).color(0))
+    .series(Series::dashed("viscous law F/c, c = 2μg / (πV)", viscous).color(1))
+    .hline(0.01, "1 %");
     save_panels(&[c, h], 2, dir, "economy")
 }

@@ -2,15 +2,15 @@
 //! them). Sweeps run in parallel with `sweep::par_map` and are summed in order.
 
 use super::evidence::Evidence;
-use super::run_scene;
+use super::{gait, run_scene};
 use crate::chapters::Context;
 use crate::error::Result;
 use crate::numerics::hybrid::Options;
 use crate::physics::stick::run::{Recording, RunSummary, Sample, StickOutcome};
 use crate::physics::stick::{
-    Mode, StickModel, StickParams, D_DAMP, D_FRIC, D_IMPACT, TH, W_PLATE, XC, ZC,
+    StickModel, StickParams, D_DAMP, D_FRIC, D_IMPACT, TH, W_PLATE, XC, ZC,
 };
-use crate::plot::{save_chart, save_heatmap, save_panels, Chart, HeatMap, Legend, Series};
+use crate::plot::{save_drawing, save_panels, Chart, Drawing, Series};
 use crate::sweep::{linspace, par_map};
 use std::path::Path;
 
@@ -38,10 +38,11 @@ pub fn draw_all(
     );
     let window: Vec<&Sample> = traced.trace.iter().filter(|s| s.t_s >= 10.0 * t).collect();
     out.extend(time_series(dir, p, &window)?);
-    out.extend(snapshots(dir, p, &window)?);
+    out.extend(snapshots(dir, p, opts)?);
+    out.extend(gifs(dir, ev, opts, ctx)?);
     out.extend(energy(dir, p, opts)?);
     out.extend(speed_sweeps(dir, ev, opts, ctx)?);
-    out.extend(map(dir, ev, opts, ctx)?);
+    out.extend(super::maps::draw(dir, ev, opts, ctx)?);
     Ok(out)
 }
 
@@ -60,9 +61,13 @@ fn shade(mut c: Chart, samples: &[&Sample]) -> Chart {
         while c.bands.len() % 5 != m.index() {
             c = c.band(-1e9, -1e9, "");
         }
-        let label = if labelled[m.index()] { "" } else { m.name() };
+        let label = if labelled[m.index()] {
+            String::new()
+        } else {
+            m.name().replace('_', " ")
+        };
         labelled[m.index()] = true;
-        c = c.band(a, b, label);
+        c = c.band(a, b, &label);
         i = j + 1;
     }
     c
@@ -73,60 +78,79 @@ fn time_series(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>
     let pts = |f: &dyn Fn(&Sample) -> f64| w.iter().map(|s| (s.t_s, f(s))).collect::<Vec<_>>();
     let mm = 1e3;
     let c1 = shade(Chart::new("Foot C and plate", "t (s)", "height (mm)"), w)
-        .line("z_C", pts(&|s| s.y[ZC] * mm))
+        .line("z_c (foot)", pts(&|s| s.y[ZC] * mm))
         .dashed("z_s (plate)", pts(&|s| m.plate(s.t_s).0 * mm));
-    let c2 = shade(Chart::new("Tip P", "t (s)", "z_P (mm)"), w)
-        .line("z_P", pts(&|s| m.tip(&s.y)[1] * mm));
-    let c3 = shade(Chart::new("Angle", "t (s)", "theta (rad)"), w)
-        .line("theta", pts(&|s| s.y[TH]))
-        .hline(p.theta0_rad, "theta_0")
-        .hline(p.mu.atan(), "atan(mu)");
-    let c4 = shade(Chart::new("Foot position", "t (s)", "x_C (mm)"), w)
-        .line("x_C", pts(&|s| s.y[XC] * mm))
-        .legend(Legend::UpperLeft);
-    save_panels(&[c1, c2, c3, c4], 2, dir, "time_series")
+    let c2 = shade(Chart::new("Tip P", "t (s)", "z_p (mm)"), w)
+        .line("z_p", pts(&|s| m.tip(&s.y)[1] * mm));
+    let c3 = shade(Chart::new("Angle", "t (s)", "θ (rad)"), w)
+        .line("θ", pts(&|s| s.y[TH]))
+        .hline(p.theta0_rad, "θ₀")
+        .hline(p.mu.atan(), "arctan μ");
+    let c4 = shade(Chart::new("Foot position", "t (s)", "x_c (mm)"), w)
+        .line("x_c", pts(&|s| s.y[XC] * mm));
+    save_panels(&[c1, c2, c3, c4], 2, dir, "time-series")
 }
 
-fn snapshots(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>> {
-    let m = StickModel::new(*p);
-    let t = p.period_s();
-    let mut c = Chart::new(
-        "Stick snapshots every T/8 over two cycles (offset 40 mm per frame; colour = mode)",
-        "x_C - x_C(first) + 40 mm x frame (mm)",
-        "z (mm)",
-    )
-    .legend(Legend::LowerRight);
-    let mut named = [false; 4];
-    let x_first = w.first().map(|s| s.y[XC]).unwrap_or(0.0);
-    let t0 = w.first().map(|s| s.t_s).unwrap_or(0.0);
-    for k in 0..=16 {
-        let tk = t0 + k as f64 * t / 8.0;
-        let Some(s) = w
-            .iter()
-            .min_by(|a, b| (a.t_s - tk).abs().total_cmp(&(b.t_s - tk).abs()))
-        else {
-            continue;
-        };
-        let off = 40.0 * k as f64;
-        let [xp, zp, _, _] = m.tip(&s.y);
-        let xc = (s.y[XC] - x_first) * 1e3 + off;
-        let zs = m.plate(s.t_s).0 * 1e3;
-        let label = if named[s.mode.index()] {
-            ""
-        } else {
-            s.mode.name()
-        };
-        named[s.mode.index()] = true;
-        c = c.series(
-            Series::line(
-                label,
-                vec![(xc, s.y[ZC] * 1e3), ((xp - x_first) * 1e3 + off, zp * 1e3)],
-            )
-            .color(s.mode.index()),
-        );
-        c = c.series(Series::line("", vec![(xc - 12.0, zs), (xc + 12.0, zs)]).color(6));
+/// Eight frames of the gait a quarter period apart over two drive cycles (after ten
+/// cycles of start transient), each drawn to scale with the foot's close-up.
+fn snapshots(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
+    let fr = gait::frames(p, opts, 10.0, 2.0, 4);
+    let v = gait::view(&fr, p.length_m * 1e3, p.mass_kg * p.g_mps2);
+    let pics: Vec<gait::Picture> = fr
+        .iter()
+        .map(|frame| gait::Picture {
+            frame,
+            view: v,
+            scene: "",
+        })
+        .collect();
+    let grid = Grid {
+        cells: &pics,
+        cols: 2,
+    };
+    let rows = pics.len().div_ceil(2).max(1) as u32;
+    save_drawing(&grid, dir, "snapshots", (2 * 720, rows * 400))
+}
+
+/// Drawings in a grid, `cols` per row.
+struct Grid<'a, D> {
+    cells: &'a [D],
+    cols: usize,
+}
+
+impl<D: Drawing> Drawing for Grid<'_, D> {
+    fn draw<DB: plotters::prelude::DrawingBackend>(
+        &self,
+        area: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    ) -> std::result::Result<(), String> {
+        let rows = self.cells.len().div_ceil(self.cols).max(1);
+        for (c, a) in self.cells.iter().zip(area.split_evenly((rows, self.cols))) {
+            c.draw(&a)?;
+        }
+        Ok(())
     }
-    save_chart(&c, dir, "snapshots")
+}
+
+/// The animated gait of both scenes: `gait-self-locking.gif` and `gait-authors.gif`.
+fn gifs(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
+    let shape = if ctx.quick { (1.0, 6) } else { (3.0, 10) };
+    let mut out = gait::write_gif(
+        dir,
+        "gait-self-locking",
+        "self-locking scene",
+        &ev.params[1],
+        opts,
+        shape,
+    )?;
+    out.extend(gait::write_gif(
+        dir,
+        "gait-authors",
+        "authors' scene",
+        &ev.params[0],
+        opts,
+        shape,
+    )?);
+    Ok(out)
 }
 
 fn energy(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
@@ -153,11 +177,10 @@ fn energy(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
         .line("damper", pts(&|x| x.y[D_DAMP]))
         .line("impacts", pts(&|x| x.y[D_IMPACT]))
         .line(
-            "change of mechanical energy",
+            "change of mechanical energy ΔE",
             pts(&|x| m.mechanical_energy(&x.y) - e0),
-        )
-        .legend(Legend::UpperLeft);
-    let r = Chart::new("Budget residual W - dE - losses", "t (s)", "|residual| (J)")
+        );
+    let r = Chart::new("Budget residual W − ΔE − losses", "t (s)", "|residual| (J)")
         .line(
             "|residual|",
             pts(&|x| {
@@ -170,7 +193,7 @@ fn energy(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
             }),
         )
         .log_y();
-    save_panels(&[c, r], 2, dir, "energy_budget")
+    save_panels(&[c, r], 2, dir, "energy-budget")
 }
 
 fn mean_speed(s: &RunSummary) -> f64 {
@@ -184,7 +207,7 @@ fn mean_speed(s: &RunSummary) -> f64 {
 /// The stick of `base` on a plate of peak acceleration `gamma_accel` (over g) at
 /// `frequency_hz` (Hz), built by [`StickParams::new`] (its collision angle is `new`'s
 /// default, not `base`'s).
-fn with_drive(base: &StickParams, gamma_accel: f64, frequency_hz: f64) -> StickParams {
+pub(super) fn with_drive(base: &StickParams, gamma_accel: f64, frequency_hz: f64) -> StickParams {
     StickParams::new(
         base.length_m,
         base.mass_kg,
@@ -230,12 +253,12 @@ fn speed_sweeps(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Res
     };
     let names = ["authors' scene", "self-locking scene"];
     let mut cg = Chart::new(
-        "Mean speed of C against Gamma (f fixed)",
-        "Gamma = delta omega^2 / g",
+        "Mean speed of C against Γ (f fixed)",
+        "Γ = δω² / g",
         "mean velocity (m/s)",
     );
     let mut cf = Chart::new(
-        "Mean speed of C against frequency (Gamma fixed)",
+        "Mean speed of C against frequency (Γ fixed)",
         "f (Hz)",
         "mean velocity (m/s)",
     );
@@ -243,59 +266,5 @@ fn speed_sweeps(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Res
         cg = cg.series(Series::line(name, series(si, 0)).color(si));
         cf = cf.series(Series::line(name, series(si, 1)).color(si));
     }
-    save_panels(&[cg, cf], 2, dir, "speed_sweeps")
-}
-
-fn map(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
-    let n = if ctx.quick { 6 } else { 24 };
-    let dur = if ctx.quick { 1.0 } else { 3.0 };
-    let ths = linspace(0.05, 0.9, n);
-    let mus = linspace(0.1, 0.9, n);
-    let base = ev.params[1];
-    let items: Vec<(f64, f64)> = mus
-        .iter()
-        .flat_map(|&mu| ths.iter().map(move |&th| (th, mu)))
-        .collect();
-    let res = par_map(&items, "stick (theta_0, mu) map", |&(th, mu)| {
-        let mut p = base;
-        p.theta0_rad = th;
-        p.mu = mu;
-        let s = run_scene(&p, dur, opts, Recording::default());
-        (mean_speed(&s), s.outcome.label())
-    });
-    let values: Vec<Vec<f64>> = res
-        .chunks(n)
-        .map(|row| row.iter().map(|r| r.0).collect())
-        .collect();
-    let mark = |label: &str| -> Vec<(f64, f64)> {
-        items
-            .iter()
-            .zip(&res)
-            .filter(|(_, r)| r.1 == label)
-            .map(|(x, _)| *x)
-            .collect()
-    };
-    let boundary: Vec<(f64, f64)> = linspace(0.05, 0.9, 60)
-        .into_iter()
-        .map(|t| (t, t.tan()))
-        .filter(|(_, m)| *m <= 0.9)
-        .collect();
-    let mut h = HeatMap::new(
-        "Mean speed over (theta_0, mu), self-locking scene's plate (grey: not completed)",
-        "theta_0 (rad)",
-        "mu",
-        ths,
-        mus,
-        values,
-        "mean velocity (m/s)",
-    )
-    .overlay(Series::line("self-locking edge mu = tan(theta_0)", boundary).color(6));
-    for (i, label) in ["fell", "zeno", "invalid"].iter().enumerate() {
-        let pts = mark(label);
-        if !pts.is_empty() {
-            h = h.overlay(Series::points(label, pts).color(i + 1));
-        }
-    }
-    let _ = Mode::ALL;
-    save_heatmap(&h, dir, "speed_map")
+    save_panels(&[cg, cf], 2, dir, "speed-sweeps")
 }

@@ -13,6 +13,8 @@ mod mutations;
 mod printed_table;
 mod rule_claims;
 mod slide_rules;
+mod gait;
+mod maps;
 
 use super::Context;
 use crate::error::{check, non_negative, positive, Result};

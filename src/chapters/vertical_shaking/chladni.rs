@@ -21,7 +21,9 @@
 use super::scene::{run as run_scene, Model, Scene};
 use crate::error::Result;
 use crate::numerics::ode::{Integrator, Method, StepControl};
-use crate::plot::{save_chart, save_heatmap, Chart, HeatMap, Legend, Series};
+use crate::plot::{
+    save_drawing, save_heatmap, Chart, HeatMap, Legend, Series, WithInset, CHART_SIZE,
+};
 use crate::report::{ChapterReport, Check, Claim, Verdict};
 use serde_json::json;
 use std::f64::consts::PI;
@@ -302,36 +304,51 @@ pub fn draw(dir: &Path, c: &Chladni) -> Result<Vec<String>> {
         ),
     ] {
         let map = HeatMap::new(
-            &format!("Grains on a plate in a mode, bias {BIAS} mu m g: {when}"),
+            &format!("Grains on a plate in a mode, bias b = {BIAS}: {when}"),
             "x (cm)",
             "y (cm)",
             xs.clone(),
             xs.clone(),
             values.clone(),
-            "local peak acceleration Gamma (1)",
+            "local peak acceleration Γ (1)",
         )
         .overlay(Series::points("grains", cm(grains)).color(7))
         .legend(Legend::Hidden);
         paths.extend(save_heatmap(&map, dir, name)?);
     }
-    let chart = Chart::new(
-        &format!("Drift of the block with bias {BIAS} mu m g (block model)"),
-        "Gamma = delta_z omega^2 / g",
-        "mean velocity (m/s)",
+    let table: Vec<(f64, f64)> = c
+        .table
+        .gammas
+        .iter()
+        .copied()
+        .zip(c.table.speeds_mps.iter().copied())
+        .collect();
+    let mm = |v: &[(f64, f64)]| v.iter().map(|p| (p.0, p.1 * 1e3)).collect::<Vec<_>>();
+    let main = Chart::new(
+        &format!("Drift of the block with bias b = {BIAS} (block model)"),
+        "Γ = δ_z ω² / g",
+        "mean velocity (mm/s)",
     )
-    .line(
-        "V(Gamma)",
-        c.table
-            .gammas
-            .iter()
-            .copied()
-            .zip(c.table.speeds_mps.iter().copied())
-            .collect(),
-    )
-    .vline(c.threshold.1, "1 - b: rest below")
-    .vline(1.0, "Gamma = 1: flights")
-    .legend(Legend::UpperLeft);
-    paths.extend(save_chart(&chart, dir, "chladni-drift")?);
+    .line("", mm(&table))
+    .legend(Legend::Hidden);
+    // the inset: the table's points around the threshold, which joins the grid
+    let near: Vec<(f64, f64)> = table
+        .iter()
+        .copied()
+        .filter(|p| (0.8..=1.2).contains(&p.0))
+        .collect();
+    let inset = Chart::new("near the threshold", "Γ", "mm/s")
+        .line_points("", mm(&near))
+        .vline(c.threshold.1, "1 − b")
+        .vline(c.threshold.0, "located")
+        .vline(1.0, "Γ = 1: flights")
+        .legend(Legend::Hidden);
+    let fig = WithInset {
+        main,
+        inset,
+        frac: (0.11, 0.09, 0.37, 0.45),
+    };
+    paths.extend(save_drawing(&fig, dir, "chladni-drift", CHART_SIZE)?);
     Ok(paths)
 }
 

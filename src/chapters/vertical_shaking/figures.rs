@@ -28,23 +28,23 @@ pub fn draw(
     }
     let mut chart = Chart::new(
         "Completely inelastic block: flight times (last 32 flights)",
-        "Gamma = delta_z omega^2 / g",
+        "Γ = δ_z ω² / g",
         "flight time / drive period",
     )
     .points("flights", fl)
-    .legend(Legend::UpperLeft);
+    .legend(Legend::Hidden);
     for n in 1..=3 {
-        chart = chart.vline(gamma_n(n as f64), &format!("Gamma_{n}"));
+        chart = chart.vline(gamma_n(n as f64), &format!("Γ{}", ["₁", "₂", "₃"][n - 1]));
     }
     paths.extend(save_chart(&chart, dir, "bifurcation")?);
 
     // Regime boundaries over the contact fraction.
-    let mut chart = Chart::new(
+    let chart = Chart::new(
         "Contact fraction and located regime boundaries",
-        "Gamma",
+        "Γ = δ_z ω² / g",
         "fraction of time in contact",
-    )
-    .line(
+    );
+    let mut chart = regime_bands(chart, pts).line(
         "exact simulation",
         pts.iter().map(|p| (p.gamma, p.contact_fraction)).collect(),
     );
@@ -66,8 +66,8 @@ pub fn draw(
         .filter(|p| p.1 > 0.0)
         .collect();
     let chart = Chart::new(
-        "Bias law v_ave = (F / m g) delta omega vs exact drift",
-        "Gamma",
+        "Bias law v_ave = (F / mg) δω vs exact drift",
+        "Γ = δ_z ω² / g",
         "|law / exact - 1|",
     )
     .log_y()
@@ -78,4 +78,49 @@ pub fn draw(
     let [a, b] = work::charts(wp, "vertical shaking");
     paths.extend(save_panels(&[a, b], 2, dir, "work-precision")?);
     Ok(paths)
+}
+
+/// Shades the sweep's regimes on `c`, one colour per class of regime ([`regime_class`]; bands reach halfway to the neighbouring points). Band colours cycle
+/// with the band index, so empty bands pad each regime to its colour.
+fn regime_bands(mut c: Chart, pts: &[SweepPoint]) -> Chart {
+    let labels: Vec<String> = pts.iter().map(|p| regime_class(&p.regime).into()).collect();
+    let mut order: Vec<&str> = Vec::new();
+    let mut i = 0;
+    while i < pts.len() {
+        let mut j = i;
+        while j + 1 < pts.len() && labels[j + 1] == labels[i] {
+            j += 1;
+        }
+        let edge = |k: usize, up: bool| match (up, k) {
+            (false, 0) => pts[0].gamma,
+            (false, k) => 0.5 * (pts[k - 1].gamma + pts[k].gamma),
+            (true, k) if k + 1 == pts.len() => pts[k].gamma,
+            (true, k) => 0.5 * (pts[k].gamma + pts[k + 1].gamma),
+        };
+        let (new, idx) = match order.iter().position(|l| *l == labels[i]) {
+            Some(k) => (false, k),
+            None => {
+                order.push(&labels[i]);
+                (true, order.len() - 1)
+            }
+        };
+        while c.bands.len() % 5 != idx % 5 {
+            c = c.band(-1e9, -1e9, "");
+        }
+        let label = if new { labels[i].as_str() } else { "" };
+        c = c.band(edge(i, false), edge(j, true), label);
+        i = j + 1;
+    }
+    c
+}
+
+/// The class of a regime for the shading: five classes, one per band colour.
+fn regime_class(r: &super::regimes::Regime) -> &'static str {
+    match (r.flights_per_cycle, r.periods_per_cycle, r.rests) {
+        (0, 0, _) => "no flight",
+        (0, _, _) => "aperiodic (no period up to 16 flights)",
+        (1, _, true) => "rests, one flight per cycle",
+        (_, _, true) => "rests, two or more flights per cycle",
+        (_, _, false) => "never rests",
+    }
 }
