@@ -84,6 +84,7 @@ pub fn table_of(report: &ChapterReport, name: &str) -> Option<String> {
 pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
     let ctx = Context::headless(false);
     let mut stale = 0;
+    let mut seen = 0;
     for info in CHAPTERS.iter() {
         let path = dir.join(info.markdown_path().file_name().expect("file name"));
         let Ok(text) = std::fs::read_to_string(&path) else {
@@ -92,6 +93,7 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
         if block_names(&text).is_empty() {
             continue;
         }
+        seen += 1;
         let report = chapters::run_default(info.id, &ctx)?;
         let new = fill_blocks(&text, &|n| table_of(&report, n))
             .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
@@ -106,6 +108,14 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
         } else {
             writeln!(out, "up to date: {}", path.display())?;
         }
+    }
+    if seen == 0 {
+        // Nothing checked is not "up to date": a wrong --dir must not pass.
+        return Err(WorkbookError::bad_input(
+            "--dir",
+            dir.display(),
+            "a folder holding the course text chapters/NN-<id>.md with generated blocks (none found there)",
+        ));
     }
     Ok(i32::from(stale > 0))
 }

@@ -22,13 +22,13 @@ pub mod tables;
 pub mod work_precision;
 
 use super::Context;
-use crate::error::{check, open_interval, Result};
+use crate::error::{check, open_interval, range, Result};
 use crate::report::ChapterReport;
 
 /// Flags of the chapter: the block scene of the work-precision ladder (section 3.1.2).
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Drive frequency f of the vertically vibrating plate (Hz, 0 < f <= 100). Default
+    /// Drive frequency f of the vertically vibrating plate (Hz, 1 <= f <= 100). Default
     /// 30 Hz, the stick scene's frequency.
     #[arg(long, default_value_t = 30.0)]
     pub frequency_hz: f64,
@@ -36,10 +36,10 @@ pub struct Args {
     /// 1.5 < Gamma < 50). Default 2.5: period-one bouncing.
     #[arg(long, default_value_t = 2.5)]
     pub gamma: f64,
-    /// Coulomb friction coefficient mu between block and plate (dimensionless). Default 0.4.
+    /// Coulomb friction coefficient mu between block and plate (dimensionless, 0.01 <= mu < 2). Default 0.4.
     #[arg(long, default_value_t = 0.4)]
     pub mu: f64,
-    /// Bias force over weight, b = F/(m g) (dimensionless, 0 < b < mu). Default 0.02.
+    /// Bias force over weight, b = F/(m g) (dimensionless, 1e-6 <= b < mu). Default 0.02.
     #[arg(long, default_value_t = 0.02)]
     pub bias: f64,
     /// Restitution coefficient e of the Zeno scenes (dimensionless, 0 < e <= 0.8). Default 0.5.
@@ -58,11 +58,13 @@ fn validate(a: &Args) -> Result<()> {
     // Above about a hundred hertz the plate's amplitude (Gamma g / omega^2) falls below a
     // micrometre and the fixed absolute tolerance of the reference check (1e-12) no
     // longer resolves it.
-    check(
+    range(
         "--frequency-hz",
         a.frequency_hz,
-        |f| f > 0.0 && f <= 100.0,
-        "0 < value <= 100 (Hz)",
+        1.0,
+        100.0,
+        "Hz",
+        "above 100 Hz the plate amplitude Gamma g/omega^2 falls under the reference's resolution; below 1 Hz the fixed-step ladders (steps per period) no longer end within the chapter's budget",
     )?;
     // Flight needs Gamma > 1; below 1.5 the flights are shorter than the guard sampling
     // interval T/20 of the integrated runs, which then miss landings.
@@ -73,13 +75,12 @@ fn validate(a: &Args) -> Result<()> {
         50.0,
         "dimensionless; flights long enough to sample need Gamma > 1.5",
     )?;
-    open_interval("--mu", a.mu, 0.0, 2.0, "dimensionless")?;
-    open_interval(
+    crate::error::range_below("--mu", a.mu, 0.01, 2.0, "dimensionless", "dry friction")?;
+    check(
         "--bias",
         a.bias,
-        0.0,
-        a.mu,
-        "dimensionless, above 0 and below --mu",
+        |b| b >= 1e-6 && b < a.mu,
+        &format!("1e-6 <= value < mu = {} (dimensionless: a drift the ladder can resolve, and no sliding without the plate)", a.mu),
     )?;
     // Above 0.8 the bouncing block on the plate no longer chatters to rest every period
     // (its motion turns irregular) and the Zeno scene's comparison loses its meaning.
@@ -92,9 +93,26 @@ fn validate(a: &Args) -> Result<()> {
     Ok(())
 }
 
+/// Smallest `--g-mps2` this chapter accepts (m/s^2): below it the reference ladder
+/// and the stick cost comparison no longer hold (checked at g = 1 and 2, issue 13).
+pub const G_MIN_MPS2: f64 = 3.0;
+
+/// g of the stick scene (m/s^2): the flag, or the authors' 10.
+pub fn stick_g_mps2(ctx: &Context) -> f64 {
+    ctx.g_mps2.unwrap_or(10.0)
+}
+
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     validate(args)?;
+    crate::error::range(
+        "--g-mps2",
+        super::check_g(ctx.g())?,
+        G_MIN_MPS2,
+        super::G_MAX_MPS2,
+        "m/s^2",
+        "chapter 7's reference ladder and stick cost comparison are validated from 3 m/s^2 up",
+    )?;
     let mut r = super::info("speed-vs-accuracy")
         .expect("registered")
         .report();
@@ -104,6 +122,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     r.param("bias", args.bias);
     r.param("restitution", args.restitution);
     r.param("g_mps2", ctx.g());
+    r.param("stick_g_mps2", stick_g_mps2(ctx)); // the stick scene: authors' g = 10 unless --g-mps2
     report_parts::build(args, ctx, &mut r)?;
     Ok(r)
 }

@@ -370,8 +370,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport) -> Result<()> {
         ),
     });
     // ---- the stick (authors' scene; g = 10 m/s^2 unless --g-mps2 is given)
-    let stick_points =
-        super::stick_part::build(r, &mut fails, ctx.g_mps2.unwrap_or(10.0), ctx.quick);
+    let stick_points = super::stick_part::build(r, &mut fails, super::stick_g_mps2(ctx), ctx.quick);
     let mut all_points = points.clone();
     all_points.extend(stick_points.iter().cloned());
     r.result(
