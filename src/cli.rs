@@ -53,10 +53,12 @@ pub struct Cli {
 
     /// Gravitational acceleration g in m/s^2, 1 <= g <= 25 (table-top scenes on a
     /// planet's surface, from below the Moon's 1.62 to above Jupiter's 24.8; chapter 7
-    /// needs g >= 3) [default: 9.81; the stick chapter's `authors` scene and the stick
-    /// scene of chapter 7 use 10 unless this flag is given]. Refused by the chapters
-    /// whose results do not depend on g (locomotion-definition, effective-mass); `all`
-    /// applies it to the chapters that use it.
+    /// needs g >= 3) [default: 9.81; the stick chapter's `authors` scene uses 10 unless
+    /// this flag is given]. It sets the reader's own scene: the stick chapter's run (its
+    /// evidence scenes keep the document's g) and chapter 7's block scene (its stick
+    /// scene is the authors', g = 10). Refused by the chapters whose results do not
+    /// depend on g (locomotion-definition, effective-mass); `all` applies it to the
+    /// chapters that use it.
     #[arg(long = "g-mps2", global = true, value_name = "M_PER_S2")]
     pub g_mps2: Option<f64>,
 
@@ -260,7 +262,7 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
             chapters::speed_vs_accuracy::G_MIN_MPS2,
             chapters::G_MAX_MPS2,
             "m/s^2",
-            "`all` runs chapter 7, whose reference ladder and stick cost comparison are validated from 3 m/s^2 up",
+            "`all` runs chapter 7, whose reference check is validated from 3 m/s^2 up",
         )?;
     }
     let mut reports: Vec<ChapterReport> = Vec::new();

@@ -413,7 +413,7 @@ fn every_chapter_holds_at_the_corners_of_its_ranges() {
             "--mu",
             "1.999",
             "--bias",
-            "1.99",
+            "1.997",
             "--restitution",
             "0.8",
             "--g-mps2",

@@ -39,7 +39,7 @@ pub struct Args {
     /// Coulomb friction coefficient mu between block and plate (dimensionless, 0.01 <= mu < 2). Default 0.4.
     #[arg(long, default_value_t = 0.4)]
     pub mu: f64,
-    /// Bias force over weight, b = F/(m g) (dimensionless, 1e-6 <= b < mu). Default 0.02.
+    /// Bias force over weight, b = F/(m g) (dimensionless, 1e-6 <= b <= 0.999 mu). Default 0.02.
     #[arg(long, default_value_t = 0.02)]
     pub bias: f64,
     /// Restitution coefficient e of the Zeno scenes (dimensionless, 0 < e <= 0.8). Default 0.5.
@@ -79,8 +79,11 @@ fn validate(a: &Args) -> Result<()> {
     check(
         "--bias",
         a.bias,
-        |b| b >= 1e-6 && b < a.mu,
-        &format!("1e-6 <= value < mu = {} (dimensionless: a drift the ladder can resolve, and no sliding without the plate)", a.mu),
+        |b| b >= 1e-6 && b <= BIAS_MAX_OVER_MU * a.mu,
+        &format!(
+            "1e-6 <= value <= 0.999 mu = {} (dimensionless: a drift the ladder can resolve; closer to mu the block sticks only in a sliver of each period, where rounding decides stick or slip and the reference and integrated runs part: 3e-4 at 0.99975 mu)",
+            BIAS_MAX_OVER_MU * a.mu
+        ),
     )?;
     // Above 0.8 the bouncing block on the plate no longer chatters to rest every period
     // (its motion turns irregular) and the Zeno scene's comparison loses its meaning.
@@ -93,13 +96,18 @@ fn validate(a: &Args) -> Result<()> {
     Ok(())
 }
 
-/// Smallest `--g-mps2` this chapter accepts (m/s^2): below it the reference ladder
-/// and the stick cost comparison no longer hold (checked at g = 1 and 2, issue 13).
+/// Largest bias over mu accepted (dimensionless).
+pub const BIAS_MAX_OVER_MU: f64 = 0.999;
+
+/// Smallest `--g-mps2` this chapter accepts (m/s^2): the reference check (DP5 at 1e-12
+/// within 1e-8 of the closed-form drift) misses at g = 1 (1.25e-8); validated from 3 up.
 pub const G_MIN_MPS2: f64 = 3.0;
 
-/// g of the stick scene (m/s^2): the flag, or the authors' 10.
-pub fn stick_g_mps2(ctx: &Context) -> f64 {
-    ctx.g_mps2.unwrap_or(10.0)
+/// g of the stick scene (m/s^2): the authors' 10. The chapter's flags (g included) set
+/// the block scene of the work-precision ladder; the stick scene is the authors' own, as
+/// its cost comparison is a statement about that scene.
+pub fn stick_g_mps2(_ctx: &Context) -> f64 {
+    10.0
 }
 
 /// Runs the chapter.
@@ -111,7 +119,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
         G_MIN_MPS2,
         super::G_MAX_MPS2,
         "m/s^2",
-        "chapter 7's reference ladder and stick cost comparison are validated from 3 m/s^2 up",
+        "chapter 7's reference check (DP5 at 1e-12 within 1e-8 of the closed-form drift) is validated from 3 m/s^2 up; at 1 it misses (1.25e-8)",
     )?;
     let mut r = super::info("speed-vs-accuracy")
         .expect("registered")
