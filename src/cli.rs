@@ -36,6 +36,7 @@ pub struct Cli {
     pub command: Command,
 
     /// Short mode (fewer cycles, coarser sweeps; the same checks): what the tests run.
+    /// Chapters with nothing long to shorten (locomotion-definition) run as usual.
     #[arg(long, global = true)]
     pub quick: bool,
 
@@ -48,7 +49,7 @@ pub struct Cli {
     pub figures: PathBuf,
 
     /// Do not write figures.
-    #[arg(long, global = true)]
+    #[arg(long, global = true, conflicts_with = "figures")]
     pub no_figures: bool,
 
     /// Gravitational acceleration g in m/s^2, 1 <= g <= 25 (table-top scenes on a
@@ -62,8 +63,9 @@ pub struct Cli {
     #[arg(long = "g-mps2", global = true, value_name = "M_PER_S2")]
     pub g_mps2: Option<f64>,
 
-    /// Run even when the estimated work is beyond the budget of 10 minutes (for
-    /// example a long `--duration-s` of the stick chapter).
+    /// Run even when the estimated work is beyond the budget of 10 minutes: a long
+    /// `--duration-s` of stick-state-machine, the one chapter whose work grows with its
+    /// flags (refused by the others, whose work is fixed).
     #[arg(long, global = true)]
     pub allow_long_runs: bool,
 }
@@ -126,10 +128,10 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    let cli = match command()
+    let parsed = command()
         .try_get_matches_from(args)
-        .and_then(|m| Cli::from_arg_matches(&m))
-    {
+        .and_then(|m| Cli::from_arg_matches(&m).map(|c| (c, given_globals(&m))));
+    let (cli, given) = match parsed {
         Ok(c) => c,
         Err(e) => {
             use clap::error::ErrorKind;
@@ -157,13 +159,70 @@ where
             };
         }
     };
-    match dispatch(&cli, out).and_then(|code| out.flush().map(|()| code).map_err(Into::into)) {
+    match refuse_unused(&cli, &given)
+        .and_then(|()| dispatch(&cli, out))
+        .and_then(|code| out.flush().map(|()| code).map_err(Into::into))
+    {
         Ok(code) => code,
         Err(WorkbookError::BrokenPipe) => 0, // the reader closed stdout: end quietly
         Err(e) => {
             let _ = writeln!(err, "{e}");
             e.exit_code()
         }
+    }
+}
+
+/// The global flags (clap ids) the user typed.
+fn given_globals(m: &clap::ArgMatches) -> Vec<&'static str> {
+    use clap::parser::ValueSource;
+    const IDS: [&str; 6] = [
+        "quick",
+        "json",
+        "figures",
+        "no_figures",
+        "g_mps2",
+        "allow_long_runs",
+    ];
+    let sub = m.subcommand().map(|(_, s)| s);
+    IDS.into_iter()
+        .filter(|id| {
+            [Some(m), sub]
+                .into_iter()
+                .flatten()
+                .any(|mm| mm.value_source(id) == Some(ValueSource::CommandLine))
+        })
+        .collect()
+}
+
+/// Refuses a global flag where it would mean nothing (every flag means something
+/// wherever it is accepted): `list` takes only --json, `render` none, and
+/// --allow-long-runs only the chapter with a work budget (stick-state-machine; the
+/// others do a fixed amount of work). --g-mps2 is checked by the chapters.
+fn refuse_unused(cli: &Cli, given: &[&str]) -> error::Result<()> {
+    let (what, allowed): (&str, &[&str]) = match cli.command {
+        Command::List => ("list", &["json"]),
+        Command::Render { .. } => ("render", &[]),
+        Command::StickStateMachine(_) => return Ok(()),
+        Command::All => ("all", &["quick", "json", "figures", "no_figures", "g_mps2"]),
+        _ => (
+            "this chapter",
+            &["quick", "json", "figures", "no_figures", "g_mps2"],
+        ),
+    };
+    match given.iter().find(|id| !allowed.contains(id)) {
+        Some(id) => {
+            let why = if *id == "allow_long_runs" {
+                " (it applies to stick-state-machine, the one chapter with a work budget)"
+            } else {
+                ""
+            };
+            Err(WorkbookError::bad_input(
+                &format!("--{}", id.replace('_', "-")),
+                "(given)",
+                &format!("none: {what} does not use this flag{why}"),
+            ))
+        }
+        None => Ok(()),
     }
 }
 

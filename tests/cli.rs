@@ -519,10 +519,6 @@ fn out_of_range_inputs_name_the_flag_the_user_typed() {
             "--slow-duration-s",
         ),
         (&["asymmetric-shaking", "--mu", "1e-7"], "--mu"),
-        (
-            &["render", "--check", "--dir", "/nonexistent-folder"],
-            "--dir",
-        ),
     ];
     for (args, flag) in cases {
         let mut full = args.to_vec();
@@ -536,6 +532,10 @@ fn render_check_of_an_empty_folder_fails() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path().to_str().unwrap();
     assert_bad_input(&["render", "--check", "--dir", d], "--dir");
+    assert_bad_input(
+        &["render", "--check", "--dir", "/nonexistent-folder"],
+        "--dir",
+    );
 }
 
 #[test]
@@ -633,4 +633,21 @@ fn params_echo_what_was_used() {
     let v = common::quick_json("speed-vs-accuracy");
     assert_eq!(v["params"]["g_mps2"].as_f64(), Some(9.81));
     assert_eq!(v["params"]["stick_g_mps2"].as_f64(), Some(10.0));
+}
+
+#[test]
+fn global_flags_are_refused_where_they_mean_nothing() {
+    assert_bad_input(&["list", "--g-mps2", "9.81"], "--g-mps2");
+    assert_bad_input(&["list", "--quick"], "--quick");
+    assert_bad_input(&["render", "--check", "--json"], "--json");
+    assert_bad_input(
+        &["effective-mass", "--allow-long-runs", "--no-figures"],
+        "--allow-long-runs",
+    );
+    assert_bad_input(
+        &["effective-mass", "--figures", "x", "--no-figures"],
+        "--no-figures",
+    );
+    let (code, _, err) = run(&["list", "--json"]);
+    assert_eq!(code, 0, "{err}");
 }
