@@ -123,26 +123,19 @@ pub fn validate(args: &Args, ctx: &Context) -> Result<Scene> {
         bias,
     };
     let d: Args = super::default_args();
-    let who = blame(&[
+    let flags = [
         ("--amplitude-m", amp, d.amplitude_m),
         ("--frequency-hz", freq, d.frequency_hz),
         ("--mu", mu, d.mu),
         ("--g-mps2", g, Context::G_DEFAULT_MPS2),
-    ]);
-    let value = [
-        ("--amplitude-m", amp),
-        ("--frequency-hz", freq),
-        ("--mu", mu),
-        ("--g-mps2", g),
-    ]
-    .iter()
-    .find(|(f, _)| *f == who)
-    .map_or(amp, |p| p.1);
+    ];
+    let who = blame(&flags); // the condition couples four flags: name the one set
+    let value = flags.iter().find(|f| f.0 == who).map_or(amp, |f| f.1);
     let omega = 2.0 * std::f64::consts::PI * freq;
     let gx = scene.gamma_x(); // formula: Gamma_x = delta_x omega^2 / (mu g)
     check(who, value, |_| gx >= GAMMA_X_MIN && gx * omega <= GAMMA_X_OMEGA_MAX, &format!(
-        "values giving {} <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= {} 1/s (here Gamma_x = {} and Gamma_x omega = {} 1/s): the fast-shaking claim needs sliding at 900 Gamma_x, the located stick-slip switches need Gamma_x omega x 1e-15 s <= 1e-9",
-        num(GAMMA_X_MIN), num(GAMMA_X_OMEGA_MAX), num(gx), num(gx * omega)
+        "values giving {} <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= {} 1/s (here Gamma_x = {:.3e} and Gamma_x omega = {:.3e} 1/s): the fast-shaking claim needs sliding at 900 Gamma_x, the located stick-slip switches need Gamma_x omega x 1e-15 s <= 1e-9",
+        num(GAMMA_X_MIN), num(GAMMA_X_OMEGA_MAX), gx, gx * omega
     ))?;
     Ok(scene)
 }
