@@ -21,8 +21,8 @@ use std::path::{Path, PathBuf};
 ///
 /// Exit codes: 0 ran and no claim failed (also when the reader closes stdout early,
 /// as `workbook all | head`); 1 some claim failed (a regression of the workbook); 2 bad
-/// input: a flag outside its validated range, or a run beyond the work budget; 3 the
-/// --figures folder cannot be written.
+/// input: a flag outside its validated range, or a run beyond the work budget; 3 output
+/// cannot be written (the --figures folder is checked before any computation).
 ///
 /// Every physical flag accepts exactly the range over which the chapter's checks are
 /// validated (each chapter's --help gives the range and its reason; the tests run each

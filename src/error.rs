@@ -1,8 +1,11 @@
 //! Errors of the workbook and the validation of user input.
 //!
 //! Every flag a reader can set is checked before a chapter computes anything. A bad
-//! value gives one line naming the flag, the value and the valid range, and the
-//! command exits with code 2 (see [`WorkbookError::exit_code`]).
+//! value gives one line naming the flag, the value, the valid range and why, and the
+//! command exits with code 2; so does a run whose estimated work is beyond the budget.
+//! Output that cannot be written (a `--figures` folder, checked first) exits with code 3, a run that produced a
+//! non-finite number with 1 (a defect), a closed stdout quietly with 0 (see
+//! [`WorkbookError::exit_code`]).
 
 use std::fmt;
 
@@ -43,7 +46,7 @@ pub enum WorkbookError {
     Invalid(String),
     /// The reader closed standard output (`workbook all | head`): end quietly, exit 0.
     BrokenPipe,
-    /// Writing a figure or a file failed (exit code 1).
+    /// Writing a figure or a file failed (exit code 3, like [`WorkbookError::Output`]).
     Io(String),
 }
 
@@ -58,13 +61,14 @@ impl WorkbookError {
     }
 
     /// The process exit code for this error: 2 for bad input or a run over budget, 3
-    /// for an output path that cannot be written, 0 for a closed stdout pipe, 1 otherwise.
+    /// for output that cannot be written (the `--figures` folder, checked first, or a
+    /// write failing later), 0 for a closed stdout pipe, 1 for a run ended invalid.
     pub fn exit_code(&self) -> i32 {
         match self {
             WorkbookError::BadInput { .. } | WorkbookError::OverBudget { .. } => 2,
-            WorkbookError::Output { .. } => 3,
+            WorkbookError::Output { .. } | WorkbookError::Io(_) => 3,
             WorkbookError::BrokenPipe => 0,
-            WorkbookError::Invalid(_) | WorkbookError::Io(_) => 1,
+            WorkbookError::Invalid(_) => 1,
         }
     }
 }

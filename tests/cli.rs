@@ -398,7 +398,7 @@ fn every_chapter_holds_at_the_corners_of_its_ranges() {
             "--mu",
             "0.01",
             "--bias",
-            "1e-6",
+            "3e-3",
             "--restitution",
             "1e-6",
             "--g-mps2",
