@@ -399,3 +399,25 @@ fn global_flags_are_refused_where_they_mean_nothing() {
     let (code, _, err) = run(&["list", "--json"]);
     assert_eq!(code, 0, "{err}");
 }
+
+#[test]
+fn a_nan_inside_the_stick_run_ends_it_invalid_and_is_never_printed() {
+    // theta_0 = 1e-6 rad: the rod stands almost vertical, where the slide equations
+    // divide by sin(theta); the model's state turns NaN (a defect reported to the
+    // model's owners). The chapter ends the run `invalid` and prints no NaN.
+    let (code, out, err) = run(&[
+        "stick-state-machine",
+        "--theta0-rad=1e-6",
+        "--quick",
+        "--json",
+        "--no-figures",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(v["results"]["outcome"], "invalid");
+    assert!(v["results"]["outcome_reason"]
+        .as_str()
+        .unwrap()
+        .contains("non-finite"));
+    assert!(!out.contains("null") && !out.contains("non-finite number"));
+}

@@ -12,7 +12,9 @@ use super::Context;
 use crate::error::{check, range, Result};
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
-use crate::physics::stick::run::{initial_state, simulate_stick, Recording, RunSummary};
+use crate::physics::stick::run::{
+    initial_state, simulate_stick, Recording, RunSummary, StickOutcome,
+};
 use crate::physics::stick::{
     authors_scene, jamming_scene, CollisionAngle, Mode, StickModel, StickParams,
 };
@@ -318,31 +320,55 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
         ctx.allow_long_runs,
     )?;
     let bar = crate::sweep::spinner("stick-state-machine: main run", est);
-    let main = run_scene(&p, dur, &opts, rec);
+    let mut main = run_scene(&p, dur, &opts, rec);
     bar.finish_and_clear();
+    let b = main.budget;
+    let finite = [
+        main.mean_velocity_mps,
+        main.end_time_s,
+        b.plate_work_j,
+        b.delta_mechanical_j,
+        b.friction_j,
+        b.damper_j,
+        b.impact_j,
+    ]
+    .iter()
+    .all(|x| x.is_finite());
+    if !finite {
+        // A NaN escaped the model (seen with the rod leaning less than ~1e-3 rad, where
+        // the slide equations divide by sin(theta)): the run ends `invalid`, and its
+        // non-finite numbers are left out of the results, never printed.
+        main.outcome = StickOutcome::Invalid(format!(
+            "non-finite state by t = {} s: the integration produced NaN (rod near the vertical)",
+            round(main.end_time_s, 6)
+        ));
+    }
     let reason = match &main.outcome {
-        crate::physics::stick::run::StickOutcome::Invalid(why) => why.clone(),
+        StickOutcome::Invalid(why) => why.clone(),
         _ => String::new(),
     };
     r.result("outcome", main.outcome.label());
     r.result("outcome_reason", reason);
-    r.result("end_time_s", round(main.end_time_s, 9));
-    r.result("mean_velocity_mps", round(main.mean_velocity_mps, 6));
+    if finite {
+        r.result("end_time_s", round(main.end_time_s, 9));
+        r.result("mean_velocity_mps", round(main.mean_velocity_mps, 6));
+    }
     r.result("phase_fractions", phase_fractions(&main));
     r.result("event_counts", event_counts(&main));
     r.result("hops", main.hops as u64);
-    let b = &main.budget;
-    r.result(
-        "energy_budget_j",
-        json!({
-            "plate_work": round(b.plate_work_j, 6),
-            "delta_mechanical": round(b.delta_mechanical_j, 6),
-            "friction": round(b.friction_j, 6),
-            "damper": round(b.damper_j, 6),
-            "impact": round(b.impact_j, 6),
-            "relative_residual_below_1e-5": b.relative_residual() < 1e-5,
-        }),
-    );
+    if finite {
+        r.result(
+            "energy_budget_j",
+            json!({
+                "plate_work": round(b.plate_work_j, 6),
+                "delta_mechanical": round(b.delta_mechanical_j, 6),
+                "friction": round(b.friction_j, 6),
+                "damper": round(b.damper_j, 6),
+                "impact": round(b.impact_j, 6),
+                "relative_residual_below_1e-5": b.relative_residual() < 1e-5,
+            }),
+        );
+    }
 
     // The evidence runs are the document's two scenes with the document's values, g
     // included (10 and 9.81 m/s^2): like every other physical flag, --g-mps2 sets this
