@@ -8,7 +8,7 @@ use crate::report::ChapterReport;
 use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use std::ffi::OsString;
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Runnable, verified course material on vibration-driven locomotion: a leaning stick
 /// that walks on a vertically vibrating plate (dynamic jamming).
@@ -19,7 +19,15 @@ use std::path::PathBuf;
 /// correction is stated), approximation (true in a stated limit), failed (a regression
 /// of the workbook itself).
 ///
-/// Exit codes: 0 ran and no claim failed; 1 some claim failed; 2 bad input.
+/// Exit codes: 0 ran and no claim failed (also when the reader closes stdout early,
+/// as `workbook all | head`); 1 some claim failed (a regression of the workbook); 2 bad
+/// input: a flag outside its validated range, or a run beyond the work budget; 3 output
+/// cannot be written (the --figures folder is checked before any computation).
+///
+/// Every physical flag accepts exactly the range over which the chapter's checks are
+/// validated (each chapter's --help gives the range and its reason; the tests run each
+/// chapter at the corners). Runs estimated beyond 10 minutes are refused unless
+/// --allow-long-runs is given.
 #[derive(Parser, Debug)]
 #[command(name = "workbook", version, propagate_version = true)]
 pub struct Cli {
@@ -28,6 +36,7 @@ pub struct Cli {
     pub command: Command,
 
     /// Short mode (fewer cycles, coarser sweeps; the same checks): what the tests run.
+    /// Chapters with nothing long to shorten (locomotion-definition) run as usual.
     #[arg(long, global = true)]
     pub quick: bool,
 
@@ -40,13 +49,25 @@ pub struct Cli {
     pub figures: PathBuf,
 
     /// Do not write figures.
-    #[arg(long, global = true)]
+    #[arg(long, global = true, conflicts_with = "figures")]
     pub no_figures: bool,
 
-    /// Gravitational acceleration g in m/s^2 [default: 9.81; the stick chapter's
-    /// `authors` scene uses 10 unless this flag is given].
+    /// Gravitational acceleration g in m/s^2, 1 <= g <= 25 (table-top scenes on a
+    /// planet's surface, from below the Moon's 1.62 to above Jupiter's 24.8; chapter 7
+    /// needs g >= 3) [default: 9.81; the stick chapter's `authors` scene uses 10 unless
+    /// this flag is given]. It sets the reader's own scene: the stick chapter's run (its
+    /// evidence scenes keep the document's g) and chapter 7's block scene (its stick
+    /// scene is the authors', g = 10). Refused by the chapters whose results do not
+    /// depend on g (locomotion-definition, effective-mass); `all` applies it to the
+    /// chapters that use it.
     #[arg(long = "g-mps2", global = true, value_name = "M_PER_S2")]
     pub g_mps2: Option<f64>,
+
+    /// Run even when the estimated work is beyond the budget of 10 minutes: a long
+    /// `--duration-s` of stick-state-machine, the one chapter whose work grows with its
+    /// flags (refused by the others, whose work is fixed).
+    #[arg(long, global = true)]
+    pub allow_long_runs: bool,
 }
 
 /// The subcommands: `list`, `all`, `render`, and one per chapter.
@@ -85,7 +106,7 @@ impl Cli {
     /// The shared context of the global flags, validated.
     pub fn context(&self) -> error::Result<Context> {
         if let Some(g) = self.g_mps2 {
-            error::positive("--g-mps2", g, "m/s^2")?;
+            chapters::check_g(g)?;
         }
         Ok(Context {
             quick: self.quick,
@@ -95,6 +116,7 @@ impl Cli {
             } else {
                 Some(self.figures.clone())
             },
+            allow_long_runs: self.allow_long_runs,
         })
     }
 }
@@ -106,10 +128,10 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    let cli = match command()
+    let parsed = command()
         .try_get_matches_from(args)
-        .and_then(|m| Cli::from_arg_matches(&m))
-    {
+        .and_then(|m| Cli::from_arg_matches(&m).map(|c| (c, given_globals(&m))));
+    let (cli, given) = match parsed {
         Ok(c) => c,
         Err(e) => {
             use clap::error::ErrorKind;
@@ -137,12 +159,70 @@ where
             };
         }
     };
-    match dispatch(&cli, out) {
+    match refuse_unused(&cli, &given)
+        .and_then(|()| dispatch(&cli, out))
+        .and_then(|code| out.flush().map(|()| code).map_err(Into::into))
+    {
         Ok(code) => code,
+        Err(WorkbookError::BrokenPipe) => 0, // the reader closed stdout: end quietly
         Err(e) => {
             let _ = writeln!(err, "{e}");
             e.exit_code()
         }
+    }
+}
+
+/// The global flags (clap ids) the user typed.
+fn given_globals(m: &clap::ArgMatches) -> Vec<&'static str> {
+    use clap::parser::ValueSource;
+    const IDS: [&str; 6] = [
+        "quick",
+        "json",
+        "figures",
+        "no_figures",
+        "g_mps2",
+        "allow_long_runs",
+    ];
+    let sub = m.subcommand().map(|(_, s)| s);
+    IDS.into_iter()
+        .filter(|id| {
+            [Some(m), sub]
+                .into_iter()
+                .flatten()
+                .any(|mm| mm.value_source(id) == Some(ValueSource::CommandLine))
+        })
+        .collect()
+}
+
+/// Refuses a global flag where it would mean nothing (every flag means something
+/// wherever it is accepted): `list` takes only --json, `render` none, and
+/// --allow-long-runs only the chapter with a work budget (stick-state-machine; the
+/// others do a fixed amount of work). --g-mps2 is checked by the chapters.
+fn refuse_unused(cli: &Cli, given: &[&str]) -> error::Result<()> {
+    let (what, allowed): (&str, &[&str]) = match cli.command {
+        Command::List => ("list", &["json"]),
+        Command::Render { .. } => ("render", &[]),
+        Command::StickStateMachine(_) => return Ok(()),
+        Command::All => ("all", &["quick", "json", "figures", "no_figures", "g_mps2"]),
+        _ => (
+            "this chapter",
+            &["quick", "json", "figures", "no_figures", "g_mps2"],
+        ),
+    };
+    match given.iter().find(|id| !allowed.contains(id)) {
+        Some(id) => {
+            let why = if *id == "allow_long_runs" {
+                " (it applies to stick-state-machine, the one chapter with a work budget)"
+            } else {
+                ""
+            };
+            Err(WorkbookError::bad_input(
+                &format!("--{}", id.replace('_', "-")),
+                "(given)",
+                &format!("none: {what} does not use this flag{why}"),
+            ))
+        }
+        None => Ok(()),
     }
 }
 
@@ -162,8 +242,42 @@ pub fn command() -> clap::Command {
     allow_negative(Cli::command())
 }
 
+/// Checks before any computation that the figure root can be written: it is a folder
+/// (created if missing) in which a file can be created. Error: exit code 3.
+fn check_figures(root: &Path) -> error::Result<()> {
+    let fail = |why: String| WorkbookError::Output {
+        flag: "--figures".into(),
+        path: root.display().to_string(),
+        why,
+    };
+    if root.exists() && !root.is_dir() {
+        return Err(fail("it exists and is not a folder".into()));
+    }
+    std::fs::create_dir_all(root).map_err(|e| fail(format!("cannot create the folder ({e})")))?;
+    let probe = root.join(".workbook-write-check");
+    std::fs::write(&probe, b"")
+        .and_then(|()| std::fs::remove_file(&probe))
+        .map_err(|e| fail(format!("the folder is not writable ({e})")))
+}
+
+/// The report as JSON, refused if it carries a non-finite number (JSON has none; a
+/// NaN would turn into `null`): the run then ends `invalid`, naming the field.
+fn checked(report: &ChapterReport) -> error::Result<&ChapterReport> {
+    match report.first_non_finite() {
+        Some(path) => Err(WorkbookError::Invalid(format!(
+            "{}: non-finite number at {path}",
+            report.chapter
+        ))),
+        None => Ok(report),
+    }
+}
+
 fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
     let ctx = cli.context()?;
+    let computes = !matches!(cli.command, Command::List | Command::Render { .. });
+    if let (true, Some(root)) = (computes, &ctx.figures_root) {
+        check_figures(root)?;
+    }
     let report = match &cli.command {
         Command::List => {
             if cli.json {
@@ -189,6 +303,7 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
         Command::StickStateMachine(a) => chapters::stick_state_machine::run(a, &ctx)?,
         Command::SpeedVsAccuracy(a) => chapters::speed_vs_accuracy::run(a, &ctx)?,
     };
+    let report = checked(&report)?;
     if cli.json {
         writeln!(out, "{}", report.to_json())?;
     } else {
@@ -198,9 +313,25 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
 }
 
 fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> {
+    if let Some(g) = ctx.g_mps2 {
+        // checked before the first chapter runs: chapter 7 accepts the narrowest range
+        error::range(
+            "--g-mps2",
+            g,
+            chapters::speed_vs_accuracy::G_MIN_MPS2,
+            chapters::G_MAX_MPS2,
+            "m/s^2",
+            "`all` runs chapter 7, whose reference check is validated from 3 m/s^2 up",
+        )?;
+    }
     let mut reports: Vec<ChapterReport> = Vec::new();
     for c in CHAPTERS.iter() {
-        let r = chapters::run_default(c.id, ctx)?;
+        let mut c_ctx = ctx.clone();
+        if !chapters::uses_g(c.id) {
+            c_ctx.g_mps2 = None; // documented: `all` applies g where it is used
+        }
+        let r = chapters::run_default(c.id, &c_ctx)?;
+        checked(&r)?;
         if !cli.json {
             writeln!(out, "{}", r.human())?;
         }

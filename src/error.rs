@@ -1,8 +1,11 @@
 //! Errors of the workbook and the validation of user input.
 //!
 //! Every flag a reader can set is checked before a chapter computes anything. A bad
-//! value gives one line naming the flag, the value and the valid range, and the
-//! command exits with code 2 (see [`WorkbookError::exit_code`]).
+//! value gives one line naming the flag, the value, the valid range and why, and the
+//! command exits with code 2; so does a run whose estimated work is beyond the budget.
+//! Output that cannot be written (a `--figures` folder, checked first) exits with code 3, a run that produced a
+//! non-finite number with 1 (a defect), a closed stdout quietly with 0 (see
+//! [`WorkbookError::exit_code`]).
 
 use std::fmt;
 
@@ -18,7 +21,32 @@ pub enum WorkbookError {
         /// The valid range in words, for example `-90 < angle < 90 (degrees)`.
         valid: String,
     },
-    /// Writing a figure or a file failed (exit code 1).
+    /// A run whose estimated work is beyond the stated budget (exit code 2): the line
+    /// names the flag to lower and the override flag.
+    OverBudget {
+        /// The flag to lower, for example `--duration-s`.
+        flag: String,
+        /// The estimate in words, for example `3e7 drive cycles (about 50 min)`.
+        estimate: String,
+        /// The budget in words.
+        budget: String,
+    },
+    /// `--figures` (or another output path) cannot be written (exit code 3), found
+    /// before any computation starts.
+    Output {
+        /// The flag, for example `--figures`.
+        flag: String,
+        /// The path as given.
+        path: String,
+        /// Why it cannot be written.
+        why: String,
+    },
+    /// A run produced a non-finite number (outcome `invalid`; exit code 1: a defect of
+    /// the workbook, since every accepted input is validated not to).
+    Invalid(String),
+    /// The reader closed standard output (`workbook all | head`): end quietly, exit 0.
+    BrokenPipe,
+    /// Writing a figure or a file failed (exit code 3, like [`WorkbookError::Output`]).
     Io(String),
 }
 
@@ -32,11 +60,15 @@ impl WorkbookError {
         }
     }
 
-    /// The process exit code for this error: 2 for bad input, 1 otherwise.
+    /// The process exit code for this error: 2 for bad input or a run over budget, 3
+    /// for output that cannot be written (the `--figures` folder, checked first, or a
+    /// write failing later), 0 for a closed stdout pipe, 1 for a run ended invalid.
     pub fn exit_code(&self) -> i32 {
         match self {
-            WorkbookError::BadInput { .. } => 2,
-            WorkbookError::Io(_) => 1,
+            WorkbookError::BadInput { .. } | WorkbookError::OverBudget { .. } => 2,
+            WorkbookError::Output { .. } | WorkbookError::Io(_) => 3,
+            WorkbookError::BrokenPipe => 0,
+            WorkbookError::Invalid(_) => 1,
         }
     }
 }
@@ -50,6 +82,22 @@ impl fmt::Display for WorkbookError {
                     "error: invalid value {value} for {flag}: valid range is {valid}"
                 )
             }
+            WorkbookError::OverBudget {
+                flag,
+                estimate,
+                budget,
+            } => write!(
+                f,
+                "error: the run needs {estimate}, beyond the budget of {budget}: lower {flag} (or pass --allow-long-runs)"
+            ),
+            WorkbookError::Output { flag, path, why } => {
+                write!(f, "error: cannot write figures to {path} given by {flag}: {why}")
+            }
+            WorkbookError::Invalid(why) => write!(
+                f,
+                "error: the run ended invalid: {why} (a defect of the workbook: accepted inputs must not produce it)"
+            ),
+            WorkbookError::BrokenPipe => Ok(()),
             WorkbookError::Io(msg) => write!(f, "error: {msg}"),
         }
     }
@@ -59,7 +107,11 @@ impl std::error::Error for WorkbookError {}
 
 impl From<std::io::Error> for WorkbookError {
     fn from(e: std::io::Error) -> Self {
-        WorkbookError::Io(e.to_string())
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            WorkbookError::BrokenPipe
+        } else {
+            WorkbookError::Io(e.to_string())
+        }
     }
 }
 
@@ -78,7 +130,7 @@ pub fn check(flag: &str, value: f64, ok: impl Fn(f64) -> bool, valid: &str) -> R
     if value.is_finite() && ok(value) {
         Ok(value)
     } else {
-        Err(WorkbookError::bad_input(flag, value, valid))
+        Err(WorkbookError::bad_input(flag, num(value), valid))
     }
 }
 
@@ -122,6 +174,52 @@ pub fn half_open(flag: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result
     )
 }
 
+/// `lo <= value <= hi` and finite; the error line gives the range, the unit and why.
+///
+/// ```
+/// use locomotion_workbook::error::range;
+/// assert!(range("--mu", 0.4, 0.0, 2.0, "dimensionless", "dry friction").is_ok());
+/// assert!(range("--mu", 2.5, 0.0, 2.0, "dimensionless", "dry friction").is_err());
+/// ```
+pub fn range(flag: &str, value: f64, lo: f64, hi: f64, unit: &str, why: &str) -> Result<f64> {
+    check(
+        flag,
+        value,
+        |v| v >= lo && v <= hi,
+        &format!("{} <= value <= {} ({unit}; {why})", num(lo), num(hi)),
+    )
+}
+
+/// `lo <= value < hi` and finite; the error line gives the range, the unit and why.
+pub fn range_below(flag: &str, value: f64, lo: f64, hi: f64, unit: &str, why: &str) -> Result<f64> {
+    check(
+        flag,
+        value,
+        |v| v >= lo && v < hi,
+        &format!("{} <= value < {} ({unit}; {why})", num(lo), num(hi)),
+    )
+}
+
+/// A number as a reader types it: plain between 1e-3 and 1e4, else scientific.
+pub fn num(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-3..1e4).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// The flag to name in the error of a condition that combines several flags: the
+/// first one the user set (its value differs from the default), else the first.
+/// Each entry is `(flag, value, default)`.
+pub fn blame<'a>(flags: &[(&'a str, f64, f64)]) -> &'a str {
+    flags
+        .iter()
+        .find(|(_, v, d)| v != d)
+        .or(flags.first())
+        .map_or("<flags>", |f| f.0)
+}
+
 /// Parses a velocity pair `X,Y` (m/s) for clap; both parts must be finite numbers.
 pub fn parse_pair(s: &str) -> std::result::Result<[f64; 2], String> {
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
@@ -163,6 +261,32 @@ mod tests {
             "error: invalid value 95 for --angle-deg: valid range is -90 < value < 90 (degrees)"
         );
         assert_eq!(e.exit_code(), 2);
+    }
+
+    #[test]
+    fn new_errors_have_their_exit_codes_and_one_line() {
+        let e = range("--mu", 3.0, 0.0, 2.0, "dimensionless", "dry friction").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "error: invalid value 3 for --mu: valid range is 0 <= value <= 2 (dimensionless; dry friction)"
+        );
+        let o = WorkbookError::Output {
+            flag: "--figures".into(),
+            path: "/x".into(),
+            why: "read-only".into(),
+        };
+        assert_eq!(o.exit_code(), 3);
+        let b = WorkbookError::OverBudget {
+            flag: "--duration-s".into(),
+            estimate: "e".into(),
+            budget: "b".into(),
+        };
+        assert_eq!(b.exit_code(), 2);
+        assert!(b.to_string().contains("--duration-s") && !b.to_string().contains('\n'));
+        let pipe: WorkbookError = std::io::Error::from(std::io::ErrorKind::BrokenPipe).into();
+        assert_eq!((pipe.exit_code(), pipe.to_string()), (0, String::new()));
+        assert_eq!(blame(&[("--a", 1.0, 1.0), ("--b", 2.0, 3.0)]), "--b");
+        assert_eq!(blame(&[("--a", 1.0, 1.0), ("--b", 3.0, 3.0)]), "--a");
     }
 
     #[test]

@@ -87,11 +87,13 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
     let ctx = Context::headless(false);
     let mut stale = 0;
     let mut reports = Vec::new();
+    let mut seen = 0;
     for info in CHAPTERS.iter() {
         let report = chapters::run_default(info.id, &ctx)?;
         let path = dir.join(info.markdown_path().file_name().expect("file name"));
         if let Ok(text) = std::fs::read_to_string(&path) {
             if !block_names(&text).is_empty() {
+                seen += 1;
                 let new = fill_blocks(&text, &|n| table_of(&report, n))
                     .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
                 stale += refresh(&path, &text, &new, check, out)?;
@@ -110,6 +112,14 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
                 .map_err(|e| WorkbookError::Io(format!("{}: {e}", readme.display())))?;
             stale += refresh(&readme, &text, &new, check, out)?;
         }
+    }
+    if seen == 0 {
+        // Nothing checked is not "up to date": a wrong --dir must not pass.
+        return Err(WorkbookError::bad_input(
+            "--dir",
+            dir.display(),
+            "a folder holding the course text chapters/NN-<id>.md with generated blocks (none found there)",
+        ));
     }
     Ok(i32::from(stale > 0))
 }

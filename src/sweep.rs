@@ -25,6 +25,59 @@ where
     out
 }
 
+/// The work budget of one chapter run (seconds of wall time): beyond it a run is
+/// refused unless `--allow-long-runs` is given. Ten minutes: a reader waits for a
+/// chapter, not for a batch job.
+pub const BUDGET_S: f64 = 600.0;
+
+/// Runs estimated to take longer than this (s) show a progress indicator on a terminal.
+pub const PROGRESS_AFTER_S: f64 = 3.0;
+
+/// Checks an estimate of `units` units of work (for example drive cycles) at
+/// `seconds_per_unit` against [`BUDGET_S`]; the error names `flag`, the flag to lower.
+/// `allow` is `--allow-long-runs`.
+pub fn check_budget(
+    flag: &str,
+    units: f64,
+    unit_name: &str,
+    seconds_per_unit: f64,
+    allow: bool,
+) -> crate::error::Result<f64> {
+    let estimate_s = units * seconds_per_unit;
+    if estimate_s > BUDGET_S && !allow {
+        return Err(crate::error::WorkbookError::OverBudget {
+            flag: flag.to_string(),
+            estimate: format!(
+                "{} {unit_name} (about {:.0} min)",
+                crate::error::num(units.round()),
+                estimate_s / 60.0
+            ),
+            budget: format!(
+                "{} {unit_name} ({:.0} min)",
+                crate::error::num((BUDGET_S / seconds_per_unit).round()),
+                BUDGET_S / 60.0
+            ),
+        });
+    }
+    Ok(estimate_s)
+}
+
+/// A spinner with the elapsed time and the estimate, for a run estimated to take more
+/// than [`PROGRESS_AFTER_S`]; hidden when stderr is not a terminal. Finish it with
+/// `finish_and_clear`.
+pub fn spinner(label: &str, estimate_s: f64) -> ProgressBar {
+    if estimate_s <= PROGRESS_AFTER_S {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
+    if let Ok(style) = ProgressStyle::with_template("{spinner} {msg} {elapsed}") {
+        bar.set_style(style);
+    }
+    bar.set_message(format!("{label} (estimate {estimate_s:.0} s)"));
+    bar.enable_steady_tick(std::time::Duration::from_millis(200));
+    bar
+}
+
 /// `n` evenly spaced values from `a` to `b` inclusive (`n >= 2`; `n == 1` gives `[a]`).
 pub fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
     match n {
@@ -53,6 +106,15 @@ mod tests {
         let xs: Vec<u64> = (0..1000).collect();
         let ys = par_map(&xs, "squares", |x| x * x);
         assert!(ys.iter().enumerate().all(|(i, &y)| y == (i * i) as u64));
+    }
+
+    #[test]
+    fn budget_refuses_beyond_ten_minutes_unless_allowed() {
+        assert!(check_budget("--duration-s", 1e3, "cycles", 1e-3, false).is_ok());
+        let e = check_budget("--duration-s", 1e7, "cycles", 1e-3, false).unwrap_err();
+        assert_eq!(e.exit_code(), 2);
+        assert!(e.to_string().contains("--duration-s"), "{e}");
+        assert!(check_budget("--duration-s", 1e7, "cycles", 1e-3, true).is_ok());
     }
 
     #[test]

@@ -164,3 +164,305 @@ fn course_text_tables_are_up_to_date() {
     let (code, out, err) = run(&["render", "--check"]);
     assert_eq!(code, 0, "stale course text:\n{out}{err}");
 }
+
+/// Runs `workbook <args>` and asserts exit 0, no failed claim, no NaN/null on stdout.
+fn assert_runs_clean(args: &[&str]) {
+    let mut full = args.to_vec();
+    full.extend(["--quick", "--json", "--no-figures"]);
+    let (code, out, err) = run(&full);
+    assert_eq!(code, 0, "{full:?}: {err}");
+    assert!(err.is_empty(), "{full:?}: stderr {err}");
+    let v: Value = serde_json::from_str(out.trim()).expect("one JSON object");
+    assert!(
+        !out.contains("null") && !out.contains("non-finite"),
+        "{full:?}"
+    );
+    let failed: Vec<&Value> = v["claims"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|c| c["verdict"] == "failed")
+        .collect();
+    assert!(failed.is_empty(), "{full:?}: {failed:?}");
+}
+
+/// Each chapter at the corners of its validated ranges (low ends together, high ends
+/// together, and mixed ends where a derived quantity couples the flags): exit 0, no
+/// failed claim, no NaN. This is what makes the accepted ranges validated ranges.
+#[test]
+fn every_chapter_holds_at_the_corners_of_its_ranges() {
+    const CORNERS: &[&str] = &[
+        "locomotion-definition --object-velocity=1e-100,1e100 --medium-velocity=-1e100,0 --medium-velocity=1e-100,-1e-100",
+        "effective-mass --mu 0 --angle-deg -89.999999",
+        "effective-mass --mu 2 --angle-deg 89.999999",
+        "effective-mass --mu 1e-308 --angle-deg 1e-308",
+        "effective-mass --mu 0.75 --angle-deg 63.43494882",
+        // Gamma_x just above 2e-3, and Gamma_x omega just below 1e6 1/s
+        "horizontal-shaking --amplitude-m 7.6e-6",
+        "horizontal-shaking --amplitude-m 1.4e-5 --frequency-hz 1000",
+        "horizontal-shaking --amplitude-m 10 --frequency-hz 0.01 --mu 0.01 --g-mps2 1 --bias 0.999999",
+        "horizontal-shaking --amplitude-m 1e-6 --frequency-hz 1000 --mu 1.999 --g-mps2 25 --bias 0",
+        "vertical-shaking --gamma 1.000001 --frequency-hz 1000 --mu 1.999 --bias 0.999999 --g-mps2 25",
+        "vertical-shaking --gamma 100 --frequency-hz 0.1 --mu 0.01 --bias 0 --g-mps2 1",
+        "asymmetric-shaking --slow-velocity-mps 1e-4 --fast-velocity-mps 0.1 --slow-duration-s 10 --mu 10 --g-mps2 25",
+        "asymmetric-shaking --slow-velocity-mps 10 --fast-velocity-mps 20 --slow-duration-s 1e-4 --mu 10 --g-mps2 25 --viscous-c 1000",
+        "asymmetric-shaking --slow-velocity-mps 1e-4 --fast-velocity-mps 3e-4 --slow-duration-s 1e-4 --mu 1e-3 --g-mps2 1 --viscous-c 1000",
+        "stick-state-machine --length-m 0.015 --mass-kg 0.1 --stiffness 0 --damping 0 --mu 0 --theta0-rad -1.5707 --gamma 0 --frequency-hz 1 --g-mps2 1 --rtol 1e-14",
+        "stick-state-machine --length-m 1.5 --mass-kg 10 --stiffness 100 --damping 0.1 --mu 2 --theta0-rad 1.5707 --gamma 50 --frequency-hz 1000 --g-mps2 25 --rtol 1e-2 --duration-s 0.47",
+        "stick-state-machine --scene authors --length-m 0.015 --mass-kg 10 --stiffness 100 --mu 2 --theta0-rad 1e-308 --gamma 50 --frequency-hz 1 --g-mps2 25",
+        "stick-state-machine --scene authors --duration-s 79",
+        "stick-state-machine --duration-s 264",
+        "speed-vs-accuracy --frequency-hz 1 --gamma 1.5001 --mu 0.01 --bias 3e-3 --restitution 1e-6 --g-mps2 3",
+        "speed-vs-accuracy --frequency-hz 100 --gamma 49.999 --mu 1.999 --bias 1.979 --restitution 0.8 --g-mps2 25",
+    ];
+    for c in CORNERS {
+        assert_runs_clean(&c.split_whitespace().collect::<Vec<_>>());
+    }
+}
+
+/// The cases, each refused with one line naming the flag the user typed.
+#[test]
+fn out_of_range_inputs_name_the_flag_the_user_typed() {
+    const CASES: &[(&str, &str)] = &[
+        ("stick-state-machine --g-mps2 1e6", "--g-mps2"),
+        ("stick-state-machine --g-mps2 94", "--g-mps2"),
+        ("speed-vs-accuracy --g-mps2 1e-20", "--g-mps2"),
+        ("speed-vs-accuracy --g-mps2 2", "--g-mps2"),
+        ("horizontal-shaking --frequency-hz 1e-308", "--frequency-hz"),
+        ("vertical-shaking --frequency-hz 1e-308", "--frequency-hz"),
+        ("speed-vs-accuracy --frequency-hz 1e-308", "--frequency-hz"),
+        ("speed-vs-accuracy --bias 1e-4", "--bias"),
+        ("horizontal-shaking --amplitude-m 1e-308", "--amplitude-m"),
+        ("horizontal-shaking --amplitude-m 1e6", "--amplitude-m"),
+        ("horizontal-shaking --mu 1e-308", "--mu"),
+        // derived Gamma_x: blamed on the flag that was set
+        ("horizontal-shaking --amplitude-m 1e-6", "--amplitude-m"),
+        ("horizontal-shaking --frequency-hz 1000", "--frequency-hz"),
+        (
+            "horizontal-shaking --g-mps2 25 --amplitude-m 1e-5",
+            "--amplitude-m",
+        ),
+        ("vertical-shaking --gamma 1.0000000001", "--gamma"),
+        ("effective-mass --mu 1e6", "--mu"),
+        ("effective-mass --g-mps2 9.81", "--g-mps2"),
+        ("locomotion-definition --g-mps2 9.81", "--g-mps2"),
+        ("stick-state-machine --duration-s 1000", "--duration-s"),
+        (
+            "stick-state-machine --scene authors --duration-s 80",
+            "--duration-s",
+        ),
+        (
+            "stick-state-machine --frequency-hz 1e4 --duration-s 10000",
+            "--frequency-hz",
+        ),
+        ("all --g-mps2 1e-6", "--g-mps2"),
+        ("all --g-mps2 2", "--g-mps2"),
+        (
+            "asymmetric-shaking --slow-duration-s 1e-9",
+            "--slow-duration-s",
+        ),
+        // the lock condition (five flags) names the one that was set
+        (
+            "asymmetric-shaking --slow-duration-s 2e-4 --fast-velocity-mps 0.1001",
+            "--slow-duration-s",
+        ),
+        ("asymmetric-shaking --mu 1e-7", "--mu"),
+    ];
+    for (args, flag) in CASES {
+        let mut full: Vec<&str> = args.split_whitespace().collect();
+        full.extend(["--quick", "--no-figures"]);
+        assert_bad_input(&full, flag);
+    }
+}
+
+#[test]
+fn render_check_of_an_empty_folder_fails() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path().to_str().unwrap();
+    assert_bad_input(&["render", "--check", "--dir", d], "--dir");
+    assert_bad_input(
+        &["render", "--check", "--dir", "/nonexistent-folder"],
+        "--dir",
+    );
+}
+
+#[test]
+fn runs_beyond_the_budget_are_refused_unless_allowed() {
+    // Gamma = 0 lifts the rounding bound: 1e4 s at 1 kHz is 1e7 drive cycles (~20 min).
+    let args = [
+        "stick-state-machine",
+        "--gamma",
+        "0",
+        "--frequency-hz",
+        "1000",
+        "--duration-s",
+        "10000",
+        "--quick",
+        "--no-figures",
+    ];
+    let (code, out, err) = run(&args);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty());
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("--duration-s") && err.contains("--allow-long-runs"),
+        "{err}"
+    );
+}
+
+#[test]
+fn figures_that_cannot_be_written_exit_3_before_computing() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("a-file");
+    std::fs::write(&file, "x").unwrap();
+    let under_file = file.join("sub");
+    for target in [
+        file.to_str().unwrap(),
+        under_file.to_str().unwrap(),
+        "/proc/workbook-figures",
+    ] {
+        let t0 = std::time::Instant::now();
+        let (code, out, err) = run(&["vertical-shaking", "--quick", "--figures", target]);
+        assert_eq!(code, 3, "{target}: {err}");
+        assert!(out.is_empty());
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains("--figures") && err.contains(target), "{err}");
+        // refused before the chapter ran (it takes seconds)
+        assert!(t0.elapsed().as_secs_f64() < 1.0);
+    }
+}
+
+#[test]
+fn a_closed_stdout_pipe_ends_quietly() {
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_workbook"))
+        .args(["effective-mass", "--quick", "--no-figures"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take()); // the reader goes away before the table is written
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn the_report_layer_refuses_non_finite_numbers() {
+    use locomotion_workbook::report::{ChapterReport, Claim};
+    let mut r = ChapterReport::new("x", "t", "s");
+    r.param("ok_m", 1.0);
+    assert_eq!(r.first_non_finite(), None);
+    r.param("length_m", f64::NAN);
+    assert_eq!(r.first_non_finite().as_deref(), Some("params.length_m"));
+    let mut r = ChapterReport::new("x", "t", "s");
+    r.result("speed_mps", vec![1.0, f64::INFINITY]);
+    assert_eq!(r.first_non_finite().as_deref(), Some("results.speed_mps"));
+    let mut r = ChapterReport::new("x", "t", "s");
+    r.claim(Claim::close("c", "s", "st", 1.0, f64::NAN, 1e-3));
+    assert!(r.first_non_finite().unwrap().contains("claims[0]"));
+}
+
+#[test]
+fn params_echo_what_was_used() {
+    let (code, out, err) = run(&[
+        "stick-state-machine",
+        "--theta0-rad=1e-308",
+        "--quick",
+        "--json",
+        "--no-figures",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(v["params"]["theta0_rad"].as_f64(), Some(1e-308));
+    let v = common::quick_json("speed-vs-accuracy");
+    assert_eq!(v["params"]["g_mps2"].as_f64(), Some(9.81));
+    assert_eq!(v["params"]["stick_g_mps2"].as_f64(), Some(10.0));
+}
+
+#[test]
+fn global_flags_are_refused_where_they_mean_nothing() {
+    assert_bad_input(&["list", "--g-mps2", "9.81"], "--g-mps2");
+    assert_bad_input(&["list", "--quick"], "--quick");
+    assert_bad_input(&["render", "--check", "--json"], "--json");
+    assert_bad_input(
+        &["effective-mass", "--allow-long-runs", "--no-figures"],
+        "--allow-long-runs",
+    );
+    assert_bad_input(
+        &["effective-mass", "--figures", "x", "--no-figures"],
+        "--no-figures",
+    );
+    let (code, _, err) = run(&["list", "--json"]);
+    assert_eq!(code, 0, "{err}");
+}
+
+#[test]
+fn a_nan_inside_the_stick_run_ends_it_invalid_and_is_never_printed() {
+    // theta_0 = 1e-6 rad: the rod stands almost vertical, where the slide equations
+    // divide by sin(theta); the model's state turns NaN (a defect reported to the
+    // model's owners). The chapter ends the run `invalid` and prints no NaN.
+    let (code, out, err) = run(&[
+        "stick-state-machine",
+        "--theta0-rad=1e-6",
+        "--quick",
+        "--json",
+        "--no-figures",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(v["results"]["outcome"], "invalid");
+    assert!(v["results"]["outcome_reason"]
+        .as_str()
+        .unwrap()
+        .contains("non-finite"));
+    assert!(!out.contains("null") && !out.contains("non-finite number"));
+}
+
+#[test]
+fn events_csv_of_the_authors_scene_has_its_83_transitions() {
+    // The authors' scene over 1 s from the static start: 83 mode switches (the authors'
+    // own code, run with MATLAB's event semantics from the same state, has the same 83;
+    // benches/peers/README.md). The file has a header and one line per switch.
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("events.csv");
+    let p = path.to_str().expect("utf-8 path");
+    let (code, _, err) = run(&[
+        "stick-state-machine",
+        "--scene",
+        "authors",
+        "--duration-s",
+        "1",
+        "--events",
+        p,
+        "--quick",
+        "--json",
+        "--no-figures",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let csv = std::fs::read_to_string(&path).expect("events file");
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some("t_s,from,to,theta_rad,theta_dot_rad_s,x_c_m,f_x_n,f_z_n")
+    );
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 83);
+    assert!(rows.iter().all(|r| r.split(',').count() == 8));
+    // an unwritable path fails before the run, naming the flag, with exit code 3
+    let (code, _, err) = run(&[
+        "stick-state-machine",
+        "--events",
+        "/nonexistent-dir/x.csv",
+        "--quick",
+        "--no-figures",
+    ]);
+    assert_eq!(code, 3, "{err}");
+    assert!(
+        err.contains("--events") && err.lines().count() == 1,
+        "{err}"
+    );
+}

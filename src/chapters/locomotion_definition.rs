@@ -178,6 +178,7 @@ fn claim_of(doc: &Doc, id: &str) -> Claim {
 
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
+    super::refuse_g("locomotion-definition", ctx)?;
     let object = validate("--object-velocity", args.object_velocity)?;
     let media: Vec<V2> = args
         .medium_velocity

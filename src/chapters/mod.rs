@@ -17,6 +17,11 @@ pub mod speed_vs_accuracy;
 pub mod stick_state_machine;
 pub mod vertical_shaking;
 
+/// Sub-folder of a chapter's figure folder for the charts that plot wall time: they
+/// change from run to run and machine to machine, so they are kept out of the committed,
+/// byte-identical set (`.gitignore`: `figures/*/wall-time/`).
+pub const WALL_TIME_DIR: &str = "wall-time";
+
 /// Static description of a chapter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ChapterInfo {
@@ -102,7 +107,38 @@ pub fn info(id: &str) -> Option<&'static ChapterInfo> {
     CHAPTERS.iter().find(|c| c.id == id)
 }
 
-/// Checks the global `--g-mps2` (finite, > 0, m/s^2; its error line names the flag) and
+/// Smallest accepted `--g-mps2` (m/s^2).
+pub const G_MIN_MPS2: f64 = 1.0;
+/// Largest accepted `--g-mps2` (m/s^2).
+pub const G_MAX_MPS2: f64 = 25.0;
+/// Why `--g-mps2` has its range (the error line and `--help` quote it).
+pub const G_WHY: &str = "the scenes are table-top experiments on a planet's surface, from below the Moon's 1.62 to above Jupiter's 24.8 m/s^2; every chapter's checks are run at both ends (tests/cli.rs), and the stick's spring holds it up over this range";
+
+/// Checks `--g-mps2` against [`G_MIN_MPS2`, `G_MAX_MPS2`] (m/s^2).
+pub fn check_g(g_mps2: f64) -> Result<f64> {
+    crate::error::range("--g-mps2", g_mps2, G_MIN_MPS2, G_MAX_MPS2, "m/s^2", G_WHY)
+}
+
+/// Whether chapter `id` uses g (chapters 1 and 2 compute ratios independent of it).
+/// `all --g-mps2` applies g to these chapters only.
+pub fn uses_g(id: &str) -> bool {
+    !matches!(id, "locomotion-definition" | "effective-mass")
+}
+
+/// Refuses `--g-mps2` in a chapter whose results do not depend on g (a flag must mean
+/// something wherever it is accepted).
+pub fn refuse_g(id: &str, ctx: &Context) -> Result<()> {
+    match ctx.g_mps2 {
+        Some(g) => Err(crate::error::WorkbookError::bad_input(
+            "--g-mps2",
+            g,
+            &format!("none: {id} does not use g (its results are ratios independent of gravity); drop the flag"),
+        )),
+        None => Ok(()),
+    }
+}
+
+/// Checks the global `--g-mps2` (its range, m/s^2; its error line names the flag) and
 /// opens chapter `id`'s report with the already validated flags `params` recorded in
 /// order, then `g_mps2`. Returns the report and g (m/s^2).
 pub fn report_with_g(
@@ -110,7 +146,7 @@ pub fn report_with_g(
     ctx: &Context,
     params: &[(&str, f64)],
 ) -> Result<(ChapterReport, f64)> {
-    let g_mps2 = crate::error::positive("--g-mps2", ctx.g(), "m/s^2")?;
+    let g_mps2 = check_g(ctx.g())?;
     let mut r = info(id).expect("registered").report();
     for &(key, value) in params {
         r.param(key, value);
@@ -129,6 +165,8 @@ pub struct Context {
     pub g_mps2: Option<f64>,
     /// Root folder for figures (`figures/` by default); `None` with `--no-figures`.
     pub figures_root: Option<PathBuf>,
+    /// `--allow-long-runs`: run even when the estimated work is beyond the budget.
+    pub allow_long_runs: bool,
 }
 
 impl Context {
@@ -151,6 +189,7 @@ impl Context {
             quick,
             g_mps2: None,
             figures_root: None,
+            allow_long_runs: false,
         }
     }
 }

@@ -377,6 +377,32 @@ impl ChapterReport {
         )
     }
 
+    /// The first place (`params.x`, `results.y`, `claims[i].computed`) that holds a
+    /// non-finite number, or `None`. JSON has no NaN or inf: a non-finite f64 becomes
+    /// `null` (or the text `non-finite` in results) on its way in, so this finds it. The
+    /// CLI refuses to print such a report (the run ends `invalid`, naming the place).
+    pub fn first_non_finite(&self) -> Option<String> {
+        let bad = |v: &Value| contains_null(v) || non_finite_text(v);
+        let maps = [("params", &self.params), ("results", &self.results)];
+        for (name, map) in maps {
+            if let Some((k, _)) = map.iter().find(|(_, v)| bad(v)) {
+                return Some(format!("{name}.{k}"));
+            }
+        }
+        for (i, c) in self.claims.iter().enumerate() {
+            for (f, v) in [
+                ("expected", &c.expected),
+                ("computed", &c.computed),
+                ("tolerance", &c.tolerance),
+            ] {
+                if bad(v) {
+                    return Some(format!("claims[{i}] ({}).{f}", c.id));
+                }
+            }
+        }
+        None
+    }
+
     /// The JSON object of the contract (pretty-printed is not required; compact).
     pub fn to_json(&self) -> Value {
         serde_json::to_value(self).expect("report serialises")
@@ -410,6 +436,15 @@ impl ChapterReport {
             let _ = writeln!(s, "| `{k}` | {} |", fmt_value(v).replace('|', "\\|"));
         }
         s
+    }
+}
+
+fn non_finite_text(v: &Value) -> bool {
+    match v {
+        Value::String(t) => t == "non-finite",
+        Value::Array(a) => a.iter().any(non_finite_text),
+        Value::Object(o) => o.values().any(non_finite_text),
+        _ => false,
     }
 }
 

@@ -12,7 +12,7 @@ pub mod sims;
 pub mod work;
 
 use super::{info, Context};
-use crate::error::{check, positive, Result, WorkbookError};
+use crate::error::{blame, check, range, Result, WorkbookError};
 use crate::physics::plate::{PlateMotion, Sawtooth};
 use crate::physics::sawtooth::mu_min_for_lock;
 use crate::report::ChapterReport;
@@ -37,14 +37,15 @@ pub struct Args {
     /// large enough to reach the steady state within 1e4 periods; default 0.3).
     #[arg(long, default_value_t = 0.3)]
     pub mu: f64,
-    /// Plate speed of the slow stroke, towards +x (m/s, > 0; default 0.1).
+    /// Plate speed of the slow stroke, towards +x (m/s, 1e-4 to 10; default 0.1).
     #[arg(long, default_value_t = 0.1)]
     pub slow_velocity_mps: f64,
     /// Plate speed of the fast stroke back, towards -x (m/s, above the slow speed and at
     /// most 1000 times it; default 0.3).
     #[arg(long, default_value_t = 0.3)]
     pub fast_velocity_mps: f64,
-    /// Duration of the slow stroke (s, > 0; default 0.03). The fast stroke lasts
+    /// Duration of the slow stroke (s, 1e-4 to 10; default 0.03; the block must lock
+    /// within 1e4 periods, see --mu). The fast stroke lasts
     /// slow speed x slow duration / fast speed (zero net displacement).
     #[arg(long, default_value_t = 0.03)]
     pub slow_duration_s: f64,
@@ -80,14 +81,15 @@ impl Scene {
 
 /// Checks every flag (one line naming the flag, value and valid range on error).
 pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
-    if !(g_mps2.is_finite() && g_mps2 > 0.0) {
-        return Err(WorkbookError::bad_input(
-            "--g-mps2",
-            g_mps2,
-            "a finite number > 0 (m/s^2)",
-        ));
-    }
-    let vs = positive("--slow-velocity-mps", a.slow_velocity_mps, "m/s")?;
+    let g_mps2 = super::check_g(g_mps2)?;
+    let vs = range(
+        "--slow-velocity-mps",
+        a.slow_velocity_mps,
+        1e-4,
+        10.0,
+        "m/s",
+        "0.1 mm/s to 10 m/s; with --slow-duration-s it sets the stroke, bounded with --mu below",
+    )?;
     let vf = check(
         "--fast-velocity-mps",
         a.fast_velocity_mps,
@@ -97,7 +99,14 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
             MAX_SPEED_RATIO * vs
         ),
     )?;
-    let ts = positive("--slow-duration-s", a.slow_duration_s, "s")?;
+    let ts = range(
+        "--slow-duration-s",
+        a.slow_duration_s,
+        1e-4,
+        10.0,
+        "s",
+        "0.1 ms to 10 s; with the speeds and --mu it must let the block lock within 1e4 periods",
+    )?;
     let saw = Sawtooth {
         slow_velocity_mps: vs,
         fast_velocity_mps: vf,
@@ -114,7 +123,25 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
         )?;
     }
     let mu_min = mu_min_for_lock(&saw, g_mps2, MAX_LOCK_PERIODS);
-    let mu = check("--mu", a.mu, |m| m >= mu_min && m <= MU_MAX, &format!("{mu_min:.3e} <= mu <= {MU_MAX} (dimensionless; a smaller mu needs more than 1e4 periods to reach the steady state)"))?;
+    let mu = check("--mu", a.mu, |m| m <= MU_MAX && m > 0.0, &format!("0 < mu <= {MU_MAX} (dimensionless), and mu >= a/(g (T_s + 1e4 (T_s - T_f))) to lock within 1e4 periods"))?;
+    if mu < mu_min {
+        // The lock condition combines five flags: name the one the user set.
+        let d: Args = super::default_args();
+        let flags = [
+            ("--mu", mu, d.mu),
+            ("--slow-duration-s", ts, d.slow_duration_s),
+            ("--slow-velocity-mps", vs, d.slow_velocity_mps),
+            ("--fast-velocity-mps", vf, d.fast_velocity_mps),
+            ("--g-mps2", g_mps2, super::Context::G_DEFAULT_MPS2),
+        ];
+        let who = blame(&flags);
+        let value = flags.iter().find(|f| f.0 == who).map_or(mu, |f| f.1);
+        return Err(WorkbookError::bad_input(
+            who,
+            value,
+            &format!("values with mu >= a/(g (T_s + 1e4 (T_s - T_f))), here {mu_min:.3e} > mu = {mu} (dimensionless): the block must reach its steady state within 1e4 periods of the slow speed a, slow duration T_s, fast duration T_f"),
+        ));
+    }
     let period = saw.period_s();
     let (c_lo, c_hi) = (0.01 / period, 1e4 / period);
     let c = check(

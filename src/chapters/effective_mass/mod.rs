@@ -12,7 +12,7 @@ mod claims;
 mod sketch;
 
 use super::{info, Context};
-use crate::error::{non_negative, open_interval, Result};
+use crate::error::{open_interval, range, Result};
 use crate::physics::rigid::{
     effective_mass, in_stick_frame, jam_ratio, rod_contact_offset, tip_contact_offset, RigidBody,
 };
@@ -27,11 +27,15 @@ pub struct Args {
     /// positive leans towards +x). Default 45 (the document's example, q = tan(theta) = 1).
     #[arg(long, default_value_t = 45.0)]
     pub angle_deg: f64,
-    /// Coulomb friction coefficient mu at the contact point C (dimensionless, >= 0).
-    /// Default 0.4 (the authors' scene).
+    /// Coulomb friction coefficient mu at the contact point C (dimensionless, 0 <= mu <= 2:
+    /// dry contacts; the point-mass-limit check at I_G = 1e-6 m L^2 has a gap growing
+    /// like mu^3 that stays under its 1e-5 tolerance up to 2). Default 0.4 (the authors' scene).
     #[arg(long, default_value_t = 0.4)]
     pub mu: f64,
 }
+
+/// Largest accepted friction coefficient (dimensionless).
+pub const MU_MAX: f64 = 2.0;
 
 /// Stick mass (kg) and length (m) of the authors' scene. Every ratio in this chapter
 /// is independent of them (checked in the tests); they only set the units.
@@ -103,7 +107,9 @@ pub fn rod_lock_angles_closed_form(mu: f64) -> Option<(f64, f64)> {
     if mu <= 0.0 || disc <= 0.0 {
         return None;
     }
-    let q1 = (3.0 - disc.sqrt()) / (2.0 * mu); // formula: smaller root of mu q^2 - 3 q + 4 mu = 0
+    // formula: smaller root of mu q^2 - 3 q + 4 mu = 0, (3 - sqrt(D))/(2 mu), written
+    // as 8 mu/(3 + sqrt(D)) (the same number without the cancellation at small mu)
+    let q1 = 8.0 * mu / (3.0 + disc.sqrt());
     let q2 = 4.0 / q1; // formula: the product of the roots is 4
     Some((q1.atan(), q2.atan()))
 }
@@ -111,7 +117,15 @@ pub fn rod_lock_angles_closed_form(mu: f64) -> Option<(f64, f64)> {
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     let angle_deg = open_interval("--angle-deg", args.angle_deg, -90.0, 90.0, "degrees")?;
-    let mu = non_negative("--mu", args.mu, "dimensionless")?;
+    super::refuse_g("effective-mass", ctx)?;
+    let mu = range(
+        "--mu",
+        args.mu,
+        0.0,
+        MU_MAX,
+        "dimensionless",
+        "dry contacts; the point-mass-limit check at I_G = 1e-6 m L^2 (gap ~ mu^3) holds to its 1e-5 tolerance up to 2",
+    )?;
     let mut r = info("effective-mass").expect("registered").report();
     r.param("angle_deg", angle_deg);
     r.param("mu", mu);

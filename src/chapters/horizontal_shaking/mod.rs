@@ -9,7 +9,7 @@
 //! (relative error against Gamma_x) and locates the Gamma_x of 1 % error by bisection.
 
 use super::{report_with_g, Context};
-use crate::error::{half_open, open_interval, positive, Result};
+use crate::error::{blame, check, half_open, num, range, Result};
 use crate::physics::block::{simulate_block, BlockOptions};
 use crate::physics::plate::PlateMotion;
 use crate::report::ChapterReport;
@@ -24,14 +24,16 @@ pub mod work;
 /// Flags of the chapter: the document's scene (a coin on a hand-shaken book).
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Coulomb friction coefficient mu between block and plate (dimensionless, 0 < mu < 2);
+    /// Coulomb friction coefficient mu between block and plate (dimensionless,
+    /// 0.01 <= mu < 2; with amplitude, frequency and g it must give 2e-3 <= Gamma_x =
+    /// delta_x omega^2/(mu g) and Gamma_x omega <= 1e6 1/s, see the error line);
     /// default 0.36, so that arctan(mu) = 19.8 deg, the document's "about 20 deg".
     #[arg(long, default_value_t = 0.36)]
     pub mu: f64,
-    /// Plate displacement amplitude delta_x (m, > 0); default 0.02 m, a hand-shaken book.
+    /// Plate displacement amplitude delta_x (m, 1e-6 <= delta_x <= 10); default 0.02 m, a hand-shaken book.
     #[arg(long = "amplitude-m", default_value_t = 0.02)]
     pub amplitude_m: f64,
-    /// Plate frequency f = omega/(2 pi) (Hz, > 0); default 5 Hz, the document's "say 5 oscillations/s".
+    /// Plate frequency f = omega/(2 pi) (Hz, 0.01 <= f <= 1000); default 5 Hz, the document's "say 5 oscillations/s".
     #[arg(long = "frequency-hz", default_value_t = 5.0)]
     pub frequency_hz: f64,
     /// Bias force F as a fraction of mu m g (dimensionless, 0 <= bias < 1); default 0.5.
@@ -75,6 +77,69 @@ pub fn gamma_for_1pct(scene: &Scene, sweep: &[(f64, f64, f64)], iterations: usiz
     (b.exp(), b.exp() - a.exp())
 }
 
+/// Smallest accepted Gamma_x: the fast-shaking claim raises the frequency up to 30 x,
+/// i.e. Gamma_x up to 900 x, and needs the block sliding at the top (900 Gamma_x > 1);
+/// 2e-3 leaves a factor 1.8.
+pub const GAMMA_X_MIN: f64 = 2e-3;
+
+/// Largest accepted Gamma_x omega (1/s): stick-slip switches are located to ~1e-15 s, so
+/// the support acceleration at a located switch is off by Gamma_x omega x 1e-15 of mu g;
+/// the non-sliding check allows 1e-9.
+pub const GAMMA_X_OMEGA_MAX: f64 = 1e6;
+
+/// Checks every flag and the derived Gamma_x (the error names the flag the user set).
+pub fn validate(args: &Args, ctx: &Context) -> Result<Scene> {
+    let mu = crate::error::range_below(
+        "--mu",
+        args.mu,
+        0.01,
+        2.0,
+        "dimensionless",
+        "dry friction between block and plate",
+    )?;
+    let amp = range(
+        "--amplitude-m",
+        args.amplitude_m,
+        1e-6,
+        10.0,
+        "m",
+        "a micrometre to a 10 m stroke; Gamma_x is bounded too",
+    )?;
+    let freq = range(
+        "--frequency-hz",
+        args.frequency_hz,
+        0.01,
+        1000.0,
+        "Hz",
+        "a hand-shaken book to an ultrasonic-free shaker; Gamma_x is bounded too",
+    )?;
+    let bias = half_open("--bias", args.bias, 0.0, 1.0, "fraction of mu m g")?;
+    let g = super::check_g(ctx.g())?;
+    let scene = Scene {
+        mu,
+        g_mps2: g,
+        amplitude_m: amp,
+        frequency_hz: freq,
+        bias,
+    };
+    let d: Args = super::default_args();
+    let flags = [
+        ("--amplitude-m", amp, d.amplitude_m),
+        ("--frequency-hz", freq, d.frequency_hz),
+        ("--mu", mu, d.mu),
+        ("--g-mps2", g, Context::G_DEFAULT_MPS2),
+    ];
+    let who = blame(&flags); // the condition couples four flags: name the one set
+    let value = flags.iter().find(|f| f.0 == who).map_or(amp, |f| f.1);
+    let omega = 2.0 * std::f64::consts::PI * freq;
+    let gx = scene.gamma_x(); // formula: Gamma_x = delta_x omega^2 / (mu g)
+    check(who, value, |_| gx >= GAMMA_X_MIN && gx * omega <= GAMMA_X_OMEGA_MAX, &format!(
+        "values giving {} <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= {} 1/s (here Gamma_x = {:.3e} and Gamma_x omega = {:.3e} 1/s): the fast-shaking claim needs sliding at 900 Gamma_x, the located stick-slip switches need Gamma_x omega x 1e-15 s <= 1e-9",
+        num(GAMMA_X_MIN), num(GAMMA_X_OMEGA_MAX), gx, gx * omega
+    ))?;
+    Ok(scene)
+}
+
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     run_with(args, ctx, &claims::Doc::PRINTED)
@@ -83,11 +148,9 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
 /// Runs the chapter with the document's statements `doc` (a wrong variant in the
 /// falsification tests).
 pub fn run_with(args: &Args, ctx: &Context, doc: &claims::Doc) -> Result<ChapterReport> {
-    let mu = open_interval("--mu", args.mu, 0.0, 2.0, "dimensionless")?;
-    let amp = positive("--amplitude-m", args.amplitude_m, "m")?;
-    let freq = positive("--frequency-hz", args.frequency_hz, "Hz")?;
-    let bias = half_open("--bias", args.bias, 0.0, 1.0, "fraction of mu m g")?;
-    let (mut r, g) = report_with_g(
+    let scene = validate(args, ctx)?;
+    let (mu, amp, freq, bias) = (scene.mu, scene.amplitude_m, scene.frequency_hz, scene.bias);
+    let (mut r, _) = report_with_g(
         "horizontal-shaking",
         ctx,
         &[
@@ -97,13 +160,6 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &claims::Doc) -> Result<Chapter
             ("bias", bias),
         ],
     )?;
-    let scene = Scene {
-        mu,
-        g_mps2: g,
-        amplitude_m: amp,
-        frequency_hz: freq,
-        bias,
-    };
     let vamp = scene.velocity_amplitude_mps();
     let gamma_x = scene.gamma_x();
 

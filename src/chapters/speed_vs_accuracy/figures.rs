@@ -3,7 +3,7 @@
 use super::economy::SweepRow;
 use super::work_precision::WpPoint;
 use crate::error::Result;
-use crate::plot::{save_panels, Chart, Series};
+use crate::plot::{save_chart, save_panels, Chart, Series};
 use std::path::Path;
 
 /// Method labels in drawing order with (palette colour, dashed).
@@ -55,7 +55,8 @@ fn wp_chart(
     c
 }
 
-/// Work-precision panels of `problem`: error against rhs evaluations and against wall time.
+/// Work-precision charts of `problem`: error against rhs evaluations (committed,
+/// deterministic) and against wall time (under `wall-time/`, not committed).
 pub fn work_precision(
     dir: &Path,
     points: &[WpPoint],
@@ -76,7 +77,15 @@ pub fn work_precision(
         "wall time (s, minimum of repeats)",
         |p| p.wall_s,
     );
-    save_panels(&[a, b], 2, dir, &format!("work-precision-{problem}"))
+    let name = format!("work-precision-{problem}");
+    let mut paths = save_chart(&a, dir, &name)?;
+    // wall time: machine-dependent, written outside the committed set
+    paths.extend(save_chart(
+        &b,
+        dir.join(crate::chapters::WALL_TIME_DIR),
+        &name,
+    )?);
+    Ok(paths)
 }
 
 /// The economy charts: relative error of the averaged laws against Gamma (vertical

@@ -397,7 +397,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     });
     // ---- the stick (authors' scene; g = 10 m/s^2 unless --g-mps2 is given)
     let stick_points =
-        super::stick_part::build(r, &mut fails, ctx.g_mps2.unwrap_or(10.0), ctx.quick, doc);
+        super::stick_part::build(r, &mut fails, super::stick_g_mps2(ctx), ctx.quick, doc);
     // ---- the missed event (a short lift-off inside one step; certified search)
     super::missed_event::build(r, &mut fails);
     let mut all_points = points.clone();

@@ -8,16 +8,16 @@ mod claims;
 mod doc;
 mod evidence;
 mod figures;
+mod gait;
 mod impulse;
+mod maps;
 mod mutations;
 mod printed_table;
 mod rule_claims;
 mod slide_rules;
-mod gait;
-mod maps;
 
 use super::Context;
-use crate::error::{check, non_negative, positive, Result};
+use crate::error::{check, range, Result};
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
 use crate::physics::stick::printed::{simulate_printed, Printed};
@@ -89,45 +89,51 @@ pub enum Rules {
     Printed,
 }
 
-/// Flags of the chapter. Unset physical flags take the chosen scene's value.
+/// Flags of the chapter. Unset physical flags take the chosen scene's value. Ranges: a
+/// box within a factor 10 of the authors' stick (wider where a limit is physical: a free
+/// hinge, a still plate), over which the chapter's checks are run at the corners
+/// (tests/cli.rs); the duration is bounded by the rounding of the plate phase.
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Scene whose values the other flags override [default: jamming].
     #[arg(long, value_enum, default_value_t = Scene::Jamming)]
     pub scene: Scene,
-    /// Rod length L (m) [scene: 0.15].
+    /// Rod length L (m, 0.015 to 1.5) [scene: 0.15].
     #[arg(long = "length-m")]
     pub length_m: Option<f64>,
-    /// Tip mass m (kg) [scene: 1].
+    /// Tip mass m (kg, 0.1 to 10) [scene: 1].
     #[arg(long = "mass-kg")]
     pub mass_kg: Option<f64>,
-    /// Torsion-spring stiffness k (N m/rad) [scene: 10].
+    /// Torsion-spring stiffness k (N m/rad, 0 to 100) [scene: 10].
     #[arg(long)]
     pub stiffness: Option<f64>,
-    /// Torsion damper gamma (N m s/rad) [scene: 0.01].
+    /// Torsion damper gamma (N m s/rad, 0 to 0.1) [scene: 0.01].
     #[arg(long)]
     pub damping: Option<f64>,
-    /// Coulomb friction coefficient mu at the foot C (1) [scene: 0.4].
+    /// Coulomb friction coefficient mu at the foot C (1, 0 to 2) [scene: 0.4].
     #[arg(long)]
     pub mu: Option<f64>,
     /// Spring rest angle theta_0 from the vertical (rad), in (-pi/2, pi/2)
     /// [jamming: 0.3; authors: 0.4281, from k (0.5 - theta_0) = m g L sin(0.5)].
     #[arg(long = "theta0-rad")]
     pub theta0_rad: Option<f64>,
-    /// Peak plate acceleration over g, Gamma = delta omega^2 / g (1) [jamming: 3; authors: 10].
+    /// Peak plate acceleration over g, Gamma = delta omega^2 / g (1, 0 to 50) [jamming: 3; authors: 10].
     #[arg(long)]
     pub gamma: Option<f64>,
-    /// Plate frequency f (Hz) [scene: 30].
+    /// Plate frequency f (Hz, 1 to 1000) [scene: 30].
     #[arg(long = "frequency-hz")]
     pub frequency_hz: Option<f64>,
-    /// Simulated time (s) [10; 2 with --quick].
+    /// Simulated time (s) [10; 2 with --quick]: at most 1e4 s and omega t Gamma <= 1.5e5
+    /// (the rounding of the plate phase must stay under the cone check's 1e-10 m g);
+    /// runs beyond 10 minutes (f t > 5e6 cycles) need --allow-long-runs.
     #[arg(long = "duration-s")]
     pub duration_s: Option<f64>,
     /// Lever arm of the collision map: `actual` (the angle at landing, what the physics
     /// supports) or `reset` (the document's theta_0) [default: actual].
     #[arg(long = "collision-angle", value_enum, default_value_t = CollisionAngle::Actual)]
     pub collision_angle: CollisionAngle,
-    /// Relative (and absolute) tolerance of Dormand-Prince in the contact modes (1) [1e-10].
+    /// Relative (and absolute) tolerance of Dormand-Prince in the contact modes (1, 1e-14
+    /// to 1e-2) [1e-10].
     #[arg(long, default_value_t = 1e-10)]
     pub rtol: f64,
     /// Integrator of the contact modes; both locate events on their dense output
@@ -141,7 +147,7 @@ pub struct Args {
     /// Write every mode switch of the main run as CSV to this file (time s, from-mode,
     /// to-mode, theta rad, theta' rad/s, x_C m, F_x N, F_z N of the mode left), for
     /// diffing against another simulator.
-    #[arg(long = "events", value_name = "FILE")]
+    #[arg(long = "events", value_name = "FILE", value_hint = clap::ValueHint::FilePath)]
     pub events: Option<std::path::PathBuf>,
     /// Transition rules: `physical` (the contact conditions) or `printed` (the document's
     /// Table 1 and Algorithms 1 to 4, run as printed) [default: physical].
@@ -158,41 +164,108 @@ pub fn scene_params(scene: Scene, g_flag: Option<f64>) -> StickParams {
     }
 }
 
+/// Largest `omega t Gamma` accepted: the plate phase `omega t` is rounded to `eps omega
+/// t`, which moves the plate acceleration, and the contact forces with it, by about
+/// `3 eps omega t Gamma m g` (the factor 3 measured: 2.3e-10 m g at omega t Gamma =
+/// 5.7e5); the cone check allows 1e-10 m g, so `omega t Gamma <= 1e-10 / (3 eps)`.
+pub const PHASE_ROUNDING_MAX: f64 = 1.5e5;
+
+/// Longest accepted duration (s) at frequency `f_hz` and `gamma`: `omega t Gamma <=`
+/// [`PHASE_ROUNDING_MAX`] and at most 1e4 s.
+pub fn max_duration_s(f_hz: f64, gamma: f64) -> f64 {
+    let omega = 2.0 * std::f64::consts::PI * f_hz;
+    if gamma > 0.0 {
+        let t = (PHASE_ROUNDING_MAX / (omega * gamma)).min(1e4); // formula: omega t Gamma <= 1e-10/(3 eps)
+                                                                 // three significant digits, rounded down, so that the range the error line
+                                                                 // prints is the range checked
+        format!("{:.2e}", 0.995 * t).parse().unwrap_or(t)
+    } else {
+        1e4
+    }
+}
+
+/// Measured cost of one drive cycle of the main run (s): 3.3 s for 3e4 cycles of the
+/// jamming scene (dev build, 2 cores), rounded up.
+pub const SECONDS_PER_CYCLE: f64 = 1.2e-4;
+
 /// Validated parameters, duration (s) and options from the flags.
 pub fn setup(args: &Args, ctx: &Context) -> Result<(StickParams, f64, Options)> {
     let base = scene_params(args.scene, ctx.g_mps2);
     let half_pi = std::f64::consts::FRAC_PI_2;
-    let l = positive("--length-m", args.length_m.unwrap_or(base.length_m), "m")?;
-    let m = positive("--mass-kg", args.mass_kg.unwrap_or(base.mass_kg), "kg")?;
-    let k = non_negative(
+    let box10 = "within a factor 10 of the authors' stick, the box over which the chapter's checks are run at the corners (tests/cli.rs)";
+    let l = range(
+        "--length-m",
+        args.length_m.unwrap_or(base.length_m),
+        0.015,
+        1.5,
+        "m",
+        box10,
+    )?;
+    let m = range(
+        "--mass-kg",
+        args.mass_kg.unwrap_or(base.mass_kg),
+        0.1,
+        10.0,
+        "kg",
+        box10,
+    )?;
+    let k = range(
         "--stiffness",
         args.stiffness.unwrap_or(base.stiffness_nm_per_rad),
+        0.0,
+        100.0,
         "N m/rad",
+        "0 (a free hinge) to 10 x the authors' spring; a spring too weak to hold the stick lets it fall, which the run reports",
     )?;
-    let c = non_negative(
+    let c = range(
         "--damping",
         args.damping.unwrap_or(base.damping_nms_per_rad),
+        0.0,
+        0.1,
         "N m s/rad",
+        "0 to 10 x the authors' damper",
     )?;
-    let mu = non_negative("--mu", args.mu.unwrap_or(base.mu), "1")?;
+    let mu = range(
+        "--mu",
+        args.mu.unwrap_or(base.mu),
+        0.0,
+        2.0,
+        "1",
+        "dry friction at the foot",
+    )?;
     let th0 = check(
         "--theta0-rad",
         args.theta0_rad.unwrap_or(base.theta0_rad),
         |v| v.abs() < half_pi,
         "-pi/2 < value < pi/2 (rad), i.e. strictly between -90 and 90 degrees",
     )?;
-    let gam = non_negative("--gamma", args.gamma.unwrap_or(base.gamma_accel()), "1")?;
-    let f = positive(
+    let gam = range(
+        "--gamma",
+        args.gamma.unwrap_or(base.gamma_accel()),
+        0.0,
+        50.0,
+        "1",
+        "a still plate to 5 x the authors' Gamma = 10",
+    )?;
+    let f = range(
         "--frequency-hz",
         args.frequency_hz.unwrap_or(base.frequency_hz()),
+        1.0,
+        1000.0,
         "Hz",
+        "1 Hz to 1 kHz; the duration is bounded by omega t Gamma, see --duration-s",
     )?;
     let default_duration = if ctx.quick { 2.0 } else { 10.0 };
+    let t_max = max_duration_s(f, gam);
     let dur = check(
         "--duration-s",
         args.duration_s.unwrap_or(default_duration),
-        |v| v > 0.0 && v <= 1e4,
-        "0 < value <= 10000 (s)",
+        |v| v > 0.0 && v <= t_max,
+        &format!(
+            "0 < value <= {} (s): omega t Gamma <= {} and t <= 1e4 s; the plate phase omega t carries a rounding of eps omega t, a force error of ~3 eps omega t Gamma m g that the cone check's 1e-10 m g must cover",
+            crate::error::num(t_max),
+            crate::error::num(PHASE_ROUNDING_MAX)
+        ),
     )?;
     let rtol = check(
         "--rtol",
@@ -241,6 +314,18 @@ fn start_state(model: &StickModel, start: Start) -> crate::physics::stick::State
     match start {
         Start::Static => initial_state(model, 0.0, p.static_angle().unwrap_or(p.theta0_rad)),
         Start::AuthorsCode => authors_code_state(model),
+    }
+}
+
+/// The output error of `--events` (exit code 3).
+fn events_error(args: &Args, e: std::io::Error) -> crate::error::WorkbookError {
+    crate::error::WorkbookError::Output {
+        flag: "--events".into(),
+        path: args
+            .events
+            .as_ref()
+            .map_or(String::new(), |p| p.display().to_string()),
+        why: e.to_string(),
     }
 }
 
@@ -329,6 +414,9 @@ pub fn round(x: f64, d: i32) -> f64 {
         return if x.is_finite() { 0.0 } else { f64::NAN };
     }
     let e = d - 1 - x.abs().log10().floor() as i32;
+    if e > 300 {
+        return x; // 10^e would overflow: x is tiny and already short enough
+    }
     let s = 10f64.powi(e);
     (x * s).round() / s
 }
@@ -369,19 +457,52 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
             "authors-code"
         },
     );
+    // The events file is created before the run: an unwritable path fails at once.
+    let mut events_file = match &args.events {
+        Some(path) => Some(std::fs::File::create(path).map_err(|e| events_error(args, e))?),
+        None => None,
+    };
+    let cycles = dur * p.frequency_hz(); // formula: work = drive cycles f t
+    let est = crate::sweep::check_budget(
+        "--duration-s",
+        cycles,
+        "drive cycles",
+        SECONDS_PER_CYCLE,
+        ctx.allow_long_runs,
+    )?;
+    let bar = crate::sweep::spinner("stick-state-machine: main run", est);
     let physical = run_scene_from(&p, args.start, dur, &opts, rec);
     // the claims are judged on the physical run; --rules printed reports the printed one
-    let (main, fired) = match args.rules {
+    let (mut main, fired) = match args.rules {
         Rules::Physical => (physical.clone(), Default::default()),
         Rules::Printed => run_printed_from(&p, Printed::AS_PRINTED, args.start, dur, &opts, rec),
     };
-    if let Some(path) = &args.events {
-        std::fs::write(path, events_csv(&main)).map_err(|e| {
-            crate::error::WorkbookError::Io(format!(
-                "--events {}: cannot write the file: {e}",
-                path.display()
-            ))
-        })?;
+    bar.finish_and_clear();
+    if let Some(file) = events_file.as_mut() {
+        use std::io::Write as _;
+        file.write_all(events_csv(&main).as_bytes())
+            .map_err(|e| events_error(args, e))?;
+    }
+    let b = main.budget;
+    let finite = [
+        main.mean_velocity_mps,
+        main.end_time_s,
+        b.plate_work_j,
+        b.delta_mechanical_j,
+        b.friction_j,
+        b.damper_j,
+        b.impact_j,
+    ]
+    .iter()
+    .all(|x| x.is_finite());
+    if !finite {
+        // A NaN escaped the model (seen with the rod leaning less than ~1e-3 rad, where
+        // the slide equations divide by sin(theta)): the run ends `invalid`, and its
+        // non-finite numbers are left out of the results, never printed.
+        main.outcome = StickOutcome::Invalid(format!(
+            "non-finite state by t = {} s: the integration produced NaN (rod near the vertical)",
+            round(main.end_time_s, 6)
+        ));
     }
     let reason = match &main.outcome {
         StickOutcome::Invalid(why) | StickOutcome::Aborted(why) => why.clone(),
@@ -389,32 +510,46 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     };
     r.result("outcome", main.outcome.label());
     r.result("outcome_reason", reason);
-    r.result("end_time_s", round(main.end_time_s, 9));
-    // a run stopped within its first drive cycle has no mean speed: 0 (see outcome)
-    let v = if main.end_time_s - main.start_time_s >= p.period_s() {
-        main.mean_velocity_mps
-    } else {
-        0.0
-    };
-    r.result("mean_velocity_mps", round(v, 6));
+    if finite {
+        r.result("end_time_s", round(main.end_time_s, 9));
+        // a run stopped within its first drive cycle has no mean speed: 0 (see outcome)
+        let v = if main.end_time_s - main.start_time_s >= p.period_s() {
+            main.mean_velocity_mps
+        } else {
+            0.0
+        };
+        r.result("mean_velocity_mps", round(v, 6));
+    }
     r.result("phase_fractions", phase_fractions(&main));
     r.result("event_counts", event_counts(&main));
     r.result("hops", main.hops as u64);
     r.result("printed_rules_fired", json!(fired));
-    let b = &main.budget;
-    r.result(
-        "energy_budget_j",
-        json!({
-            "plate_work": round(b.plate_work_j, 6),
-            "delta_mechanical": round(b.delta_mechanical_j, 6),
-            "friction": round(b.friction_j, 6),
-            "damper": round(b.damper_j, 6),
-            "impact": round(b.impact_j, 6),
-            "relative_residual_below_1e-5": b.relative_residual() < 1e-5,
-        }),
-    );
+    if finite {
+        r.result(
+            "energy_budget_j",
+            json!({
+                "plate_work": round(b.plate_work_j, 6),
+                "delta_mechanical": round(b.delta_mechanical_j, 6),
+                "friction": round(b.friction_j, 6),
+                "damper": round(b.damper_j, 6),
+                "impact": round(b.impact_j, 6),
+                "relative_residual_below_1e-5": b.relative_residual() < 1e-5,
+            }),
+        );
+    }
 
-    let ev = evidence::collect(ctx, &opts);
+    // The evidence runs are the document's two scenes with the document's values, g
+    // included (10 and 9.81 m/s^2): like every other physical flag, --g-mps2 sets this
+    // run (`params`), not the scenes the document's claims are checked on.
+    let scenes = Context {
+        g_mps2: None,
+        ..ctx.clone()
+    };
+    let ev = evidence::collect(&scenes, &opts);
+    r.param(
+        "evidence_g_mps2",
+        json!({"authors": ev.params[0].g_mps2, "jamming": ev.params[1].g_mps2}),
+    );
     claims::add_all(&mut r, &ev, &physical, &p);
     r.table("stick-scenes", evidence::scenes_table(&ev));
     r.table(

@@ -9,7 +9,7 @@
 //! located by bisection on a regime classifier.
 
 use super::{report_with_g, Context};
-use crate::error::{check, half_open, open_interval, positive, Result};
+use crate::error::{half_open, range, Result};
 use crate::physics::plate::PlateMotion;
 use crate::report::ChapterReport;
 use scene::{run as run_scene, Model, Scene};
@@ -25,13 +25,13 @@ pub mod scene;
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Peak plate acceleration in units of g, Gamma = delta_z omega^2 / g (dimensionless,
-    /// 1 < Gamma <= 100); default 2.
+    /// 1 + 1e-6 <= Gamma <= 100: flights last ~ (Gamma - 1) T and must stay resolvable); default 2.
     #[arg(long, default_value_t = 2.0)]
     pub gamma: f64,
-    /// Plate frequency f = omega / (2 pi) (Hz, > 0); default 30 Hz.
+    /// Plate frequency f = omega / (2 pi) (Hz, 0.1 <= f <= 1000); default 30 Hz.
     #[arg(long = "frequency-hz", default_value_t = 30.0)]
     pub frequency_hz: f64,
-    /// Coulomb friction coefficient mu (dimensionless, 0 < mu < 2); default 0.4.
+    /// Coulomb friction coefficient mu (dimensionless, 0.01 <= mu < 2); default 0.4.
     #[arg(long, default_value_t = 0.4)]
     pub mu: f64,
     /// Bias force F as a fraction of mu m g (dimensionless, 0 <= bias < 1: the law is
@@ -50,16 +50,35 @@ pub fn budget(quick: bool) -> (usize, usize) {
     }
 }
 
+/// Smallest accepted Gamma (dimensionless): 1 + 1e-6.
+pub const GAMMA_MIN: f64 = 1.000001;
+
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
-    let gamma = check(
+    let gamma = range(
         "--gamma",
         args.gamma,
-        |v| v > 1.0 && v <= 100.0,
-        "1 < Gamma <= 100 (dimensionless; at Gamma <= 1 the plate never throws the block, so there are no flights and the bias law has nothing to describe)",
+        GAMMA_MIN,
+        100.0,
+        "dimensionless",
+        "at Gamma <= 1 the plate never throws the block; flights last ~ (Gamma - 1) T, and below 1 + 1e-6 they shrink under the resolution of the take-off phase and the flight-time table",
     )?;
-    let freq = positive("--frequency-hz", args.frequency_hz, "Hz")?;
-    let mu = open_interval("--mu", args.mu, 0.0, 2.0, "dimensionless")?;
+    let freq = range(
+        "--frequency-hz",
+        args.frequency_hz,
+        0.1,
+        1000.0,
+        "Hz",
+        "the plate amplitude Gamma g/omega^2 stays between a nanometre and kilometres, where the block model's absolute tolerances resolve a period",
+    )?;
+    let mu = crate::error::range_below(
+        "--mu",
+        args.mu,
+        0.01,
+        2.0,
+        "dimensionless",
+        "dry friction between block and plate",
+    )?;
     let bias = half_open(
         "--bias",
         args.bias,

@@ -32,7 +32,13 @@ impl Budget {
     /// Residual relative to the largest term, with a floor of 1e-9 J so that a stick at
     /// rest (every term zero to rounding) does not divide rounding by rounding (1).
     pub fn relative_residual(&self) -> f64 {
-        let scale = [
+        self.residual_j.abs() / self.scale_j()
+    }
+
+    /// The largest term of the budget (J), at least 1e-9 J: the scale of
+    /// [`Budget::relative_residual`].
+    pub fn scale_j(&self) -> f64 {
+        [
             self.plate_work_j,
             self.delta_mechanical_j,
             self.friction_j,
@@ -40,8 +46,7 @@ impl Budget {
             self.impact_j,
         ]
         .iter()
-        .fold(1e-9f64, |a, b| a.max(b.abs()));
-        self.residual_j.abs() / scale
+        .fold(1e-9f64, |a, b| a.max(b.abs()))
     }
 }
 
