@@ -1,6 +1,6 @@
 //! The document's statements of section 3.1.2 (and the workbook's derived values the
 //! checks compare with), as data: the falsification tests feed the checks of
-//! [`super::claims`] wrong variants of them, on the default scene in quick mode.
+//! `super::claims` wrong variants of them, on the default scene in quick mode.
 
 use super::claims;
 use super::scene::{run as run_scene, Model, Scene};
