@@ -18,7 +18,7 @@ What is changed in the temporary copy (never in the checkout, never committed):
   * unless --stock: `'InitialStep', 1e-12` is added to the four odeset calls. Octave's
     ode45 ignores a terminal event found in an integration's first step (its
     ode_event_handler.m, the "Matlab compatibility" comment); a 1e-12 s first step makes
-    the event that is due at once fall in the second step, as MATLAB would find it;
+    the event that is due at once fall in the second step, where it stops the run;
   * with --start static: setup.IC is set to the workbook's static start (theta = the
     static angle theta_f_exp = 0.5 rad, C on the plate at rest, P at rest: the plate's
     velocity at t = 0 is zero), instead of main_rod.m's theta = theta_0 and
@@ -277,7 +277,7 @@ def main():
     ap.add_argument("--max-step-s", type=float, default=None,
                     help="an experiment: ode45's MaxStep (s) in all four phases. Octave "
                          "locates an event by one secant across the step that brackets it "
-                         "(ode_event_handler.m), an error that shrinks as the step squared")
+                         "(ode_event_handler.m), an error that shrinks with the step")
     args = ap.parse_args()
     if not 1.0 <= args.timeout_s <= 86400.0:
         print(f"--timeout-s {args.timeout_s}: must be in [1, 86400] s", file=sys.stderr)
