@@ -425,8 +425,9 @@ fn a_nan_inside_the_stick_run_ends_it_invalid_and_is_never_printed() {
 #[test]
 fn events_csv_of_the_authors_scene_has_its_83_transitions() {
     // The authors' scene over 1 s from the static start: 83 mode switches (the authors'
-    // own code, run with MATLAB's event semantics from the same state, has the same 83;
-    // benches/peers/README.md). The file has a header and one line per switch.
+    // own code under Octave, with the first-step event fix and from the same state, makes
+    // the same 83 in the same order: benches/peers/authors_octave.py). The file has a
+    // header and one line per switch.
     let dir = tempfile::tempdir().expect("temp dir");
     let path = dir.path().join("events.csv");
     let p = path.to_str().expect("utf-8 path");
