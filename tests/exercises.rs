@@ -490,6 +490,14 @@ fn math_reads_on_github() {
         for bad in ["\\,", "\\!", "\\{", "\\}"] {
             assert!(!text.contains(bad), "{}: contains {bad}", path.display());
         }
+        // A tab is a TeX command that lost its backslash-t (`\tan` written in a Rust
+        // string literal), and a space before a closing `$` stops it closing.
+        assert!(!text.contains('\t'), "{}: contains a tab", path.display());
+        assert!(
+            !text.contains("\\rvert $"),
+            "{}: a space before a closing $",
+            path.display()
+        );
         // An inline formula must not run on into a quoted line: the `>` would become
         // part of the formula.
         let mut open = false;

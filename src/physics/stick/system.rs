@@ -146,7 +146,12 @@ impl StickModel {
         match mode {
             Mode::Flight => {
                 let h = self.h_c(t, y);
-                f(&[h, -h - self.penetration_tol_m])
+                // A flight that starts on the plate starts its height guard at zero, and
+                // a guard never fires from zero: count that start as "above" (as the
+                // block's flight does), so a grazing lift-off whose foot comes straight
+                // back lands at once instead of sinking through the plate.
+                let landing = if h == 0.0 { f64::MIN_POSITIVE } else { h };
+                f(&[landing, -h - self.penetration_tol_m])
             }
             Mode::Pivot => {
                 let e = self.pivot_eval_carried(self.plate(t).2, y); // the flow's own force
