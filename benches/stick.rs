@@ -1,8 +1,9 @@
 //! Speed of the stick simulator: drive cycles simulated per second on one core, for the
 //! default (self-locking) scene and the authors' scene, at rtol = atol = 1e-10, with the
 //! chapter's default contact integrator (Dormand-Prince 8(5,3)) and with Dormand-Prince
-//! 5(4); flight in closed form. Criterion's throughput is in cycles ("elements") per
-//! second.
+//! 5(4); flight in closed form; certified event detection (and, for its cost, the default
+//! scene once more with the end-point sign test only). Criterion's throughput is in
+//! cycles ("elements") per second.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use locomotion_workbook::numerics::hybrid::Options;
@@ -11,12 +12,13 @@ use locomotion_workbook::physics::stick::run::{initial_state, simulate_stick, Re
 use locomotion_workbook::physics::stick::{authors_scene, jamming_scene, StickModel, StickParams};
 use std::hint::black_box;
 
-fn bench_scene(c: &mut Criterion, name: &str, p: StickParams, method: Method) {
+fn bench_scene(c: &mut Criterion, name: &str, p: StickParams, method: Method, certify: bool) {
     let model = StickModel::new(p);
     let y0 = initial_state(&model, 0.0, p.static_angle().unwrap_or(p.theta0_rad));
     let opts = Options {
         method,
         control: StepControl::tol(1e-10, 1e-10),
+        certify,
         ..Options::default()
     };
     let cycles = 30u64;
@@ -47,14 +49,25 @@ fn stick(c: &mut Criterion) {
             &format!("jamming_30_cycles_rtol1e-10_{m}"),
             jamming_scene(9.81),
             method,
+            true,
         );
         bench_scene(
             c,
             &format!("authors_30_cycles_rtol1e-10_{m}"),
             authors_scene(10.0),
             method,
+            true,
         );
     }
+    // The cost of certified event detection, measured side by side: the default scene
+    // with the search that compares guard signs at step ends only.
+    bench_scene(
+        c,
+        "jamming_30_cycles_rtol1e-10_dop853_uncertified",
+        jamming_scene(9.81),
+        Method::Dop853,
+        false,
+    );
 }
 
 criterion_group!(benches, stick);
