@@ -249,13 +249,22 @@ fn collision_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
 fn table1(d: &Doc, c: &Ctx) -> Vec<Claim> {
     let ev = c.ev;
     let mut v = Vec::new();
-    let both = [&ev.authors, &ev.jamming, c.main];
+    // Table 1's rules are judged on runs that ended valid: a main run stopped because
+    // no contact mode is consistent (--damping 0 --length-m 1.39 reaches a state where
+    // neither pivot nor slide satisfies Table 1; the outcome says so) has its last step
+    // outside Table 1 by construction, which says nothing about the document.
+    use crate::physics::stick::run::StickOutcome;
+    let main_valid = !matches!(
+        c.main.outcome,
+        StickOutcome::Invalid(_) | StickOutcome::Aborted(_)
+    );
+    let mut both = vec![&ev.authors, &ev.jamming];
+    let mut weighted = vec![(&ev.authors, &ev.params[0]), (&ev.jamming, &ev.params[1])];
+    if main_valid {
+        both.push(c.main);
+        weighted.push((c.main, c.p));
+    }
     let vmax = |f: &dyn Fn(&RunSummary) -> f64| both.iter().map(|s| f(s)).fold(0.0, f64::max);
-    let weighted = [
-        (&ev.authors, &ev.params[0]),
-        (&ev.jamming, &ev.params[1]),
-        (c.main, c.p),
-    ];
     let fmax = |f: &dyn Fn(&RunSummary) -> f64| {
         weighted
             .iter()

@@ -317,6 +317,11 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         if fresh_mode {
             sys.guards(mode, t, &y, &mut guards0);
             fresh_mode = false;
+            // A state or guard the model made NaN/inf (at the start, or by a transition):
+            // end here, so the outcome says where it arose.
+            if !all_finite(&y) || !all_finite(&guards0) {
+                break Outcome::Failed(OdeError::NonFinite { t_s: t });
+            }
         }
         let bp = sys.breakpoint_after(t).filter(|&b| b < t_end);
         let horizon = bp.unwrap_or(t_end);
@@ -352,6 +357,10 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         let (t1, y1, step);
         let flow = ModeFlow { sys, mode };
         if let Some(y_lim) = sys.exact(mode, t, &y, t_lim) {
+            // The integrator checks its own states; a closed form is checked here.
+            if !all_finite(&y_lim) {
+                break Outcome::Failed(OdeError::NonFinite { t_s: t_lim });
+            }
             t1 = t_lim;
             y1 = y_lim;
             step = None;
@@ -375,6 +384,9 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         // Find the earliest crossing among the guards.
         let mut best: Option<(usize, f64)> = None;
         sys.guards(mode, t1, &y1, &mut guards1);
+        if !all_finite(&guards1) {
+            break Outcome::Failed(OdeError::NonFinite { t_s: t1 });
+        }
         if let Some(st) = &step {
             rates.update(sys, mode, st, &guards0, &guards1);
         }
@@ -553,3 +565,8 @@ fn add_time<M: PartialEq + Copy>(acc: &mut Vec<(M, f64)>, mode: M, dt: f64) {
 mod certify;
 #[cfg(test)]
 mod tests;
+
+/// Are all values finite (no NaN, no infinity)?
+fn all_finite(v: &[f64]) -> bool {
+    v.iter().all(|x| x.is_finite())
+}

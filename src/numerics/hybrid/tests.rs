@@ -430,3 +430,83 @@ fn a_short_excursion_inside_one_step_is_found_only_by_the_certified_search() {
         }
     }
 }
+
+/// x' = -1 from x = 1 (x = 0 at t = 1), sampled every 0.1 s. Guard 0 is sqrt(x) + 1
+/// (never crosses zero; NaN once x < 0). Closed form: the state itself is
+/// sqrt(1 - t) (NaN after t = 1) and the guard is x + 1.
+struct Root {
+    closed_form: bool,
+}
+
+impl HybridSystem<1> for Root {
+    type Mode = ();
+    type Stop = ();
+    fn flow(&self, _m: (), _t: f64, _y: &[f64; 1]) -> [f64; 1] {
+        [-1.0]
+    }
+    fn exact(&self, _m: (), _t0: f64, _y0: &[f64; 1], t: f64) -> Option<[f64; 1]> {
+        self.closed_form.then(|| [(1.0 - t).sqrt()])
+    }
+    fn max_step(&self, _m: (), _t: f64, _y: &[f64; 1]) -> f64 {
+        0.1
+    }
+    fn guard_count(&self, _m: ()) -> usize {
+        1
+    }
+    fn guard(&self, _m: (), _i: usize, _t: f64, y: &[f64; 1]) -> f64 {
+        if self.closed_form {
+            y[0] + 1.0
+        } else {
+            y[0].sqrt() + 1.0
+        }
+    }
+    fn direction(&self, _m: (), _i: usize) -> Direction {
+        Direction::Falling
+    }
+    fn on_event(&self, _m: (), _i: usize, _t: f64, y: &[f64; 1]) -> Transition<(), (), 1> {
+        Transition::To {
+            mode: (),
+            state: *y,
+        }
+    }
+}
+
+#[test]
+fn a_non_finite_guard_or_closed_form_ends_the_run_where_it_arose() {
+    // Both variants go NaN at the first sample past t = 1 (the steps end on multiples
+    // of 0.1 s up to rounding): the outcome names that time, inside (1, 1.1 + 1e-9].
+    for closed_form in [false, true] {
+        let run = simulate(
+            &Root { closed_form },
+            (),
+            0.0,
+            [1.0],
+            3.0,
+            &Options::default(),
+            &mut (),
+        );
+        match run.outcome {
+            Outcome::Failed(OdeError::NonFinite { t_s }) => {
+                assert!(
+                    t_s > 1.0 && t_s <= 1.1 + 1e-9,
+                    "closed {closed_form}: {t_s}"
+                )
+            }
+            ref o => panic!("closed {closed_form}: {o:?}"),
+        }
+    }
+    // Started at a NaN state: ends at once, at the start time.
+    let run = simulate(
+        &Root { closed_form: false },
+        (),
+        0.5,
+        [f64::NAN],
+        3.0,
+        &Options::default(),
+        &mut (),
+    );
+    assert_eq!(
+        run.outcome,
+        Outcome::Failed(OdeError::NonFinite { t_s: 0.5 })
+    );
+}
