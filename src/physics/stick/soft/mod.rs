@@ -127,8 +127,14 @@ impl SoftStick {
     #[inline]
     fn forces_at(&self, y: &[f64; 5], vs: f64, (s, c): (f64, f64), w: f64) -> (f64, f64) {
         let (l, sp) = (self.model.p.length_m, &self.soft);
+        if y[SD] >= 0.0 {
+            // Above the plate no force: neither the spring nor the damper acts in flight
+            // (a damper there would hand the approaching foot an impulse c_n |d'| eps tau_0
+            // = m |d'| that does not vanish with eps).
+            return (0.0, 0.0);
+        }
         let d_dot = y[SVZ] + l * s * w - vs; // formula: d' = z_p' + L s theta' - z_s'
-        let ramp = (-y[SD] / sp.damping_ramp_m).min(1.0); // formula: min(1, -d / delta_r)
+        let ramp = (-y[SD] / sp.damping_ramp_m).clamp(0.0, 1.0); // formula: r = clamp(-d / delta_r, 0, 1)
         let fz = (-sp.stiffness_n_per_m * y[SD] - ramp * sp.damping_ns_per_m * d_dot).max(0.0); // formula: F_z = max(0, -k_n d - r c_n d')
         let vxc = y[SVX] - l * c * w; // formula: x_c' = x_p' - L c theta'
         let fx = -self.model.p.mu * fz * (vxc / sp.slip_scale_mps).tanh(); // formula: F_x = -mu F_z tanh(x_c'/v_eps)
@@ -145,7 +151,7 @@ impl SoftStick {
         let q = p.stiffness_nm_per_rad * (y[STH] - p.theta0_rad) + p.damping_nms_per_rad * w;
         let g = q + l * (fx * c - fz * s); // formula: C.8
         let dfz = if fz > 0.0 {
-            -(-y[SD] / sp.damping_ramp_m).min(1.0) * sp.damping_ns_per_m * l * s
+            -(-y[SD] / sp.damping_ramp_m).clamp(0.0, 1.0) * sp.damping_ns_per_m * l * s
         } else {
             0.0
         };

@@ -21,6 +21,23 @@ fn the_balance_root_satisfies_the_rods_moment_balance() {
 }
 
 #[test]
+fn above_the_plate_the_contact_pushes_nothing() {
+    // C above the plate (d > 0), rising or falling: the contact law gives no force and
+    // the rod turns at its free rate (C.3). The damper's ramp r = -d / delta_r is
+    // negative there; unclamped, a rising foot got F_z = (d / delta_r) c_n d' - k_n d
+    // > 0 (a runaway to d = 256 m at t = 0.042 s on the self-locking scene), and a
+    // falling one without the ramp got c_n |d'| - k_n d > 0 before touching.
+    let sys = SoftStick::new(still(), 0.1);
+    for y in [[0.05, 1e-6, 0.0, 0.5, 0.3], [0.05, 1e-6, 0.0, -0.5, 0.3]] {
+        let f = sys.forces(0.0, &y);
+        assert_eq!((f.fx, f.fz), (0.0, 0.0), "{y:?} {f:?}");
+        let free = -sys.model.p.stiffness_nm_per_rad * (y[STH] - sys.model.p.theta0_rad)
+            / sys.model.p.damping_nms_per_rad;
+        assert_eq!(f.theta_dot, free);
+    }
+}
+
+#[test]
 fn standing_still_the_contact_carries_the_weight_at_penetration_m_g_over_k_n() {
     // On a still plate the stick settles at its static angle with F_z = m g, so the
     // penetration is m g / k_n (closed form); the damper's ramp is fully in there.
