@@ -514,6 +514,6 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
             .extend(super::figures::economy(&dir, &sweep, &horizontal)?);
     }
     let dir = ctx.figure_dir("speed-vs-accuracy");
-    super::stick_methods_report::build(r, g, ctx.quick, dir.as_deref())?;
+    super::stick_methods_report::build(r, ctx.quick, dir.as_deref())?;
     Ok(())
 }
