@@ -220,6 +220,22 @@ pub fn run_default(id: &str, ctx: &Context) -> Result<ChapterReport> {
     }
 }
 
+/// The claim `id` of a chapter run in quick mode, headless, with default flags and the
+/// statements `doc` (`run_with` is the chapter's runner that takes them): how a mutation
+/// judges a claim whose check needs the whole chapter.
+pub fn quick_claim<A: ClapArgs + FromArgMatches, D>(
+    id: &str,
+    doc: &D,
+    run_with: fn(&A, &Context, &D) -> Result<ChapterReport>,
+) -> crate::report::Claim {
+    let r =
+        run_with(&default_args(), &Context::headless(true), doc).expect("default flags are valid");
+    r.claims
+        .into_iter()
+        .find(|c| c.id == id)
+        .expect("claim id of this chapter")
+}
+
 /// The falsification mutations of chapter `id`'s claims (empty for an unknown id).
 pub fn mutations(id: &str) -> Vec<crate::report::Mutation> {
     match id {

@@ -239,13 +239,5 @@ pub fn mutations() -> Vec<Mutation> {
         ("self-locking-bound", "theta < atan(mu) -> theta > atan(mu)", |d| d.lock_below = false),
         ("self-locking-bound", "theta < atan(mu) -> theta < atan(1.5 mu) (10 % stays inside the rod's slack: 3q/(4+q^2) <= mu up to q = 1.44 mu at mu = 0.4)", |d| d.lock_factor = 1.5),
     ];
-    list.into_iter()
-        .map(|(id, what, edit)| {
-            Mutation::new(id, what, move || {
-                let mut d = Doc::PRINTED;
-                edit(&mut d);
-                claim_of(&d, id)
-            })
-        })
-        .collect()
+    Mutation::from_edits(Doc::PRINTED, list, |id, d| claim_of(d, id))
 }

@@ -158,21 +158,9 @@ pub fn mutations() -> Vec<Mutation> {
             |d| d.tilt_factor = 0.9,
         ),
     ];
-    list.into_iter()
-        .map(|(id, what, edit)| {
-            Mutation::new(id, what, move || {
-                let mut d = Doc::PRINTED;
-                edit(&mut d);
-                let ctx = crate::chapters::Context::headless(true);
-                let r = super::run_with(&crate::chapters::default_args(), &ctx, &d)
-                    .expect("default flags are valid");
-                r.claims
-                    .into_iter()
-                    .find(|c| c.id == id)
-                    .expect("claim id of this chapter")
-            })
-        })
-        .collect()
+    Mutation::from_edits(Doc::PRINTED, list, |id, d| {
+        crate::chapters::quick_claim(id, d, super::run_with)
+    })
 }
 
 /// Adds the chapter's claims under the document's statements `doc`.

@@ -169,13 +169,5 @@ pub fn mutations() -> Vec<Mutation> {
             |d| d.bias_sign = 0.0,
         ),
     ];
-    list.into_iter()
-        .map(|(id, what, edit)| {
-            Mutation::new(id, what, move || {
-                let mut d = Doc::PRINTED;
-                edit(&mut d);
-                claim(id, &d)
-            })
-        })
-        .collect()
+    Mutation::from_edits(Doc::PRINTED, list, claim)
 }
