@@ -188,6 +188,36 @@ fn equal_aspect<'b, DB: DrawingBackend>(
         .map_err(|e| e.to_string())
 }
 
+/// An [`equal_aspect`] view in millimetres with its grid, `labels` ticks on (x, z), the x
+/// axis named `x_desc`, and the plate drawn up to `z_s` (mm).
+fn mm_view<'b, DB: DrawingBackend>(
+    area: &'b DrawingArea<DB, Shift>,
+    bx: (f64, f64, f64, f64),
+    labels: (usize, usize),
+    x_desc: &str,
+    z_s: f64,
+) -> std::result::Result<Ctx<'b, DB>, String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let mut ch = equal_aspect(area, bx, (36, 62))?;
+    let (xr, zr) = (ch.x_range(), ch.y_range());
+    ch.configure_mesh()
+        .bold_line_style(GRID.stroke_width(1))
+        .light_line_style(TRANSPARENT)
+        .x_labels(labels.0)
+        .y_labels(labels.1)
+        .x_label_formatter(&|v| format!("{v:.0}"))
+        .y_label_formatter(&|v| format!("{v:.0}"))
+        .label_style(font(TICK_PX))
+        .x_desc(x_desc)
+        .y_desc("z (mm)")
+        .axis_desc_style(font(TICK_PX))
+        .draw()
+        .map_err(e)?;
+    let plate = Rectangle::new([(xr.start, zr.start), (xr.end, z_s)], PLATE.filled());
+    ch.draw_series([plate]).map_err(e)?;
+    Ok(ch)
+}
+
 impl Picture<'_> {
     fn whole<DB: DrawingBackend>(
         &self,
@@ -195,23 +225,8 @@ impl Picture<'_> {
     ) -> std::result::Result<(), String> {
         let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
         let (f, v) = (self.frame, self.view);
-        let mut ch = equal_aspect(area, v.whole, (36, 62))?;
+        let mut ch = mm_view(area, v.whole, (5, 6), "x (mm)", f.z_s)?;
         let (xr, zr) = (ch.x_range(), ch.y_range());
-        ch.configure_mesh()
-            .bold_line_style(GRID.stroke_width(1))
-            .light_line_style(TRANSPARENT)
-            .x_labels(5)
-            .y_labels(6)
-            .x_label_formatter(&|v| format!("{v:.0}"))
-            .y_label_formatter(&|v| format!("{v:.0}"))
-            .label_style(font(TICK_PX))
-            .x_desc("x (mm)")
-            .y_desc("z (mm)")
-            .axis_desc_style(font(TICK_PX))
-            .draw()
-            .map_err(e)?;
-        let plate = Rectangle::new([(xr.start, zr.start), (xr.end, f.z_s)], PLATE.filled());
-        ch.draw_series([plate]).map_err(e)?;
         // the ground mark: where C stood at the first frame, fixed in the laboratory
         let mark = Polygon::new(
             vec![(0.0, f.z_s), (-3.0, zr.start), (3.0, zr.start)],
@@ -243,23 +258,8 @@ impl Picture<'_> {
         let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
         let (f, v) = (self.frame, self.view);
         let bx = (f.c.0 - v.half.0, f.c.0 + v.half.0, -v.half.1, v.half.1);
-        let mut ch = equal_aspect(area, bx, (36, 62))?;
+        let mut ch = mm_view(area, bx, (4, 5), "foot close-up, x (mm)", f.z_s)?;
         let (xr, zr) = (ch.x_range(), ch.y_range());
-        ch.configure_mesh()
-            .bold_line_style(GRID.stroke_width(1))
-            .light_line_style(TRANSPARENT)
-            .x_labels(4)
-            .y_labels(5)
-            .x_label_formatter(&|v| format!("{v:.0}"))
-            .y_label_formatter(&|v| format!("{v:.0}"))
-            .label_style(font(TICK_PX))
-            .x_desc("foot close-up, x (mm)")
-            .y_desc("z (mm)")
-            .axis_desc_style(font(TICK_PX))
-            .draw()
-            .map_err(e)?;
-        let plate = Rectangle::new([(xr.start, zr.start), (xr.end, f.z_s)], PLATE.filled());
-        ch.draw_series([plate]).map_err(e)?;
         // lab-fixed ticks on the plate every millimetre: the foot walks past them
         let ticks = (xr.start.ceil() as i64..=xr.end.floor() as i64).map(|k| {
             let x = k as f64;

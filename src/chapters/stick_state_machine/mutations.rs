@@ -10,7 +10,7 @@ use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
 use crate::physics::stick::run::RunSummary;
 use crate::physics::stick::StickParams;
-use crate::report::{Claim, Mutation};
+use crate::report::{Claim, DocEdit, Mutation};
 use std::sync::OnceLock;
 
 /// The quick evidence, computed once per process (the chapter's default options).
@@ -37,12 +37,8 @@ pub fn judge(id: &str, d: &Doc) -> Claim {
         .expect("the mutated claim exists")
 }
 
-fn m(id: &'static str, what: &'static str, f: fn(&mut Doc)) -> Mutation {
-    Mutation::new(id, what, move || {
-        let mut d = Doc::PRINTED;
-        f(&mut d);
-        judge(id, &d)
-    })
+fn m(id: &'static str, what: &'static str, f: fn(&mut Doc)) -> DocEdit<Doc> {
+    (id, what, f)
 }
 
 const LESS_PLUS: Test = Test {
@@ -56,7 +52,7 @@ const LESS_MINUS: Test = Test {
 
 /// Every mutation of the chapter.
 pub fn all() -> Vec<Mutation> {
-    vec![
+    let edits = vec![
         m(
             "c3-c5-flight-closed-form",
             "C.3 rate k/gamma -> 1.1 k/gamma",
@@ -246,5 +242,6 @@ pub fn all() -> Vec<Mutation> {
             "events taken at step ends (no location)",
             |d| d.sequence_located = false,
         ),
-    ]
+    ];
+    Mutation::from_edits(Doc::PRINTED, edits, judge)
 }
