@@ -14,11 +14,20 @@ pub struct Test {
 impl Test {
     /// Whether the test fires for the forces `(fx, fz)` (N) at friction `mu` (1).
     pub fn fires(&self, mu: f64, fx: f64, fz: f64) -> bool {
+        self.fires_at(mu, fx, fz, 0.0)
+    }
+
+    /// [`Test::fires`] at a switch, read to the event accuracy `tol_n` (N): the state
+    /// the simulator switched at lies past the edge `v = 0` by at most that much, and
+    /// evaluating `v` again (exact trigonometry instead of the carried one) moves it
+    /// by rounding, so `v < tol_n` counts as past the edge (`< 0`) and `v > tol_n` as
+    /// inside it (`> 0`).
+    pub fn fires_at(&self, mu: f64, fx: f64, fz: f64, tol_n: f64) -> bool {
         let v = mu * fz + self.fx_sign * fx;
         if self.greater {
-            v > 0.0
+            v > tol_n
         } else {
-            v < 0.0
+            v < tol_n
         }
     }
 }

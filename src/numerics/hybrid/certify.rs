@@ -10,7 +10,8 @@
 
 use super::HybridSystem;
 use crate::numerics::events::{
-    clearly_one_sided, hidden_crossing, time_tolerance, CertifyStats, Direction, GuardPoint,
+    clearly_one_sided, hermite_root, hidden_crossing, time_tolerance, CertifyStats, Direction,
+    GuardPoint,
 };
 use crate::numerics::ode::Step;
 
@@ -116,6 +117,31 @@ impl Rates {
         self.on && self.suspects & (1u64 << i.min(63)) != 0
     }
 
+    /// A start for locating a crossing of guard `i` bracketed by the whole step
+    /// `[ta, tb]` (values `ga`, `gb`): the root of its Hermite model and the model's rate
+    /// there ([`hermite_root`]); `None` without rates.
+    pub(super) fn start(
+        &self,
+        i: usize,
+        (ta, ga): (f64, f64),
+        (tb, gb): (f64, f64),
+    ) -> Option<(f64, f64)> {
+        if !self.on || !self.have_r0 || i >= self.r1.len() {
+            return None;
+        }
+        let a = GuardPoint {
+            t: ta,
+            g: ga,
+            rate: self.r0[i],
+        };
+        let b = GuardPoint {
+            t: tb,
+            g: gb,
+            rate: self.r1[i],
+        };
+        hermite_root(&a, &b)
+    }
+
     /// The step was kept whole: its end is the next step's start.
     pub(super) fn advance(&mut self) {
         std::mem::swap(&mut self.r0, &mut self.r1);
@@ -172,6 +198,7 @@ impl Rates {
     }
 }
 
+/// The model's own guard rates ([`HybridSystem::guard_rates`]), or else
 /// `out[i] = (g_i(t + d, y + d f) - g[i]) / d'` with `d'` the representable time step.
 #[allow(clippy::too_many_arguments)]
 fn directional<S: HybridSystem<N>, const N: usize>(
@@ -185,6 +212,9 @@ fn directional<S: HybridSystem<N>, const N: usize>(
     out: &mut Vec<f64>,
     scratch: &mut Vec<f64>,
 ) {
+    if sys.guard_rates(mode, t, y, f, out) {
+        return;
+    }
     let t2 = t + d;
     let dt = t2 - t;
     let mut y2 = *y;

@@ -17,7 +17,7 @@
 //!   `zeno.window_s`, the run ends with [`Outcome::Zeno`] instead of hanging.
 //! - Guards that start a mode at exactly zero do not fire (see [`Direction::fires`]).
 
-use super::events::{illinois, time_tolerance, CertifyStats, Direction};
+use super::events::{illinois, illinois_from, time_tolerance, CertifyStats, Direction};
 use super::ode::{Integrator, Method, OdeError, OdeSystem, Stats, StepControl};
 use std::collections::VecDeque;
 use std::fmt::Debug;
@@ -47,6 +47,11 @@ pub trait HybridSystem<const N: usize> {
     /// [`OdeSystem::ARGS`]. The rest are outputs only (accumulated work, say).
     const FLOW_ARGS: usize = N;
 
+    /// How many leading state components the guards of the integrated modes (those
+    /// without a closed form) read (default: all). Event location interpolates only
+    /// these; the state handed to the model at an event is always whole.
+    const GUARD_ARGS: usize = N;
+
     /// The flow `y' = f(mode, t, y)` (used when [`HybridSystem::exact`] gives `None`).
     fn flow(&self, mode: Self::Mode, t: f64, y: &[f64; N]) -> [f64; N];
 
@@ -70,6 +75,22 @@ pub trait HybridSystem<const N: usize> {
     fn guards(&self, mode: Self::Mode, t: f64, y: &[f64; N], out: &mut Vec<f64>) {
         out.clear();
         out.extend((0..self.guard_count(mode)).map(|i| self.guard(mode, i, t, y)));
+    }
+
+    /// The time derivatives of all guards of `mode` along the flow at `(t, y)`, where
+    /// `f` is the flow there, into `out` (cleared first), for the certified search;
+    /// `false` (the default) when the model gives none: the driver then takes a
+    /// directional difference of [`HybridSystem::guards`], one more evaluation of
+    /// them per step.
+    fn guard_rates(
+        &self,
+        _mode: Self::Mode,
+        _t: f64,
+        _y: &[f64; N],
+        _f: &[f64; N],
+        _out: &mut Vec<f64>,
+    ) -> bool {
+        false
     }
 
     /// The direction in which guard `i` of `mode` fires.
@@ -381,6 +402,13 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                 None => sys.exact(mode, ts, &ys, s).expect("closed form"),
             }
         };
+        // The same for the guards, which read only the first GUARD_ARGS components.
+        let geval = |s: f64| -> [f64; N] {
+            match &step {
+                Some(st) => st.eval_first(&flow, s, S::GUARD_ARGS),
+                None => sys.exact(mode, ts, &ys, s).expect("closed form"),
+            }
+        };
         // Find the earliest crossing among the guards.
         let mut best: Option<(usize, f64)> = None;
         sys.guards(mode, t1, &y1, &mut guards1);
@@ -410,7 +438,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                 let gb = if tb == t1 {
                     guards1[i]
                 } else {
-                    sys.guard(mode, i, tb, &eval(tb))
+                    sys.guard(mode, i, tb, &geval(tb))
                 };
                 if dir.fires(ga, gb) {
                     bracket = Some((ta, tb, ga, gb));
@@ -426,7 +454,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                         mode,
                         i,
                         dir,
-                        &eval,
+                        &geval,
                         (ts, guards0[i]),
                         (t1, guards1[i]),
                         &mut run.certify,
@@ -436,7 +464,13 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
             if let Some((a, b, ga, gb)) = bracket {
                 let te = if opts.locate_events {
                     let tol = opts.event_tol_s.unwrap_or_else(|| time_tolerance(b));
-                    let (te, n) = illinois(|s| sys.guard(mode, i, s, &eval(s)), a, b, ga, gb, tol);
+                    let g = |s: f64| sys.guard(mode, i, s, &geval(s));
+                    // A crossing bracketed by the whole step starts from its Hermite model.
+                    let whole = step.is_some() && a == ts && b == t1;
+                    let (te, n) = match rates.start(i, (a, ga), (b, gb)).filter(|_| whole) {
+                        Some(start) => illinois_from(g, a, b, ga, gb, tol, start),
+                        None => illinois(g, a, b, ga, gb, tol),
+                    };
                     run.locate_evals += u64::from(n);
                     te
                 } else {

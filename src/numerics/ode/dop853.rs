@@ -277,15 +277,19 @@ pub(super) fn attempt<S: OdeSystem<N> + ?Sized, const N: usize>(
     stage!(1 2 3 4 5 6 7 8 9 10 11);
     let y1 = row(y, h, k, A[12], N); // formula: y1 = y + h sum_j b_j k_j
                                      // formula: Hairer's DOP853 norm: err = |h| E5 / sqrt(N (E5 + 0.01 E3)), E_p = sum_i (sum_j e_pj k_ji / sc_i)^2
+                                     // The differences summed stage by stage over all components at once (the inner loop
+                                     // runs along a stage vector, so it vectorises), each component's sum in the same order.
+    let (mut d5, mut d3) = ([0.0; N], [0.0; N]);
+    for (&(j5, w5), &(j3, w3)) in E5.iter().zip(E3.iter()) {
+        for i in 0..N {
+            d5[i] += w5 * k[j5][i]; // formula: sum_j e5_j k_ji
+            d3[i] += w3 * k[j3][i]; // formula: sum_j e3_j k_ji
+        }
+    }
     let (mut e5, mut e3) = (0.0, 0.0);
     for i in 0..N {
         let inv_sc = 1.0 / tol.scale(y[i], y1[i]); // one division, two uses
-        let (mut d5, mut d3) = (0.0, 0.0);
-        for (&(j5, w5), &(j3, w3)) in E5.iter().zip(E3.iter()) {
-            d5 += w5 * k[j5][i];
-            d3 += w3 * k[j3][i];
-        }
-        let (r5, r3) = (d5 * inv_sc, d3 * inv_sc);
+        let (r5, r3) = (d5[i] * inv_sc, d3[i] * inv_sc);
         e5 += r5 * r5;
         e3 += r3 * r3;
     }
@@ -329,12 +333,16 @@ impl<const N: usize> Lazy<N> {
     }
 
     /// The state at fraction `s = (t - t0)/h` of `step`, whose stages these are.
+    /// Only the first `args` components are interpolated; the rest are `y0`'s.
+    #[inline(always)]
     pub(super) fn eval<S: OdeSystem<N> + ?Sized>(
         &self,
         sys: &S,
         step: &Step<N>,
         s: f64,
+        args: usize,
     ) -> [f64; N] {
+        let args = args.min(N);
         let r = self.dense.get_or_init(|| self.build(sys, step));
         let y0 = &step.y0;
         let s1 = 1.0 - s;
@@ -343,12 +351,12 @@ impl<const N: usize> Lazy<N> {
         // seven dependent operations per component in one loop did not).
         let mut v = r[6];
         for (d, w) in [(5, s), (4, s1), (3, s), (2, s1), (1, s), (0, s1)] {
-            for i in 0..N {
+            for i in 0..args {
                 v[i] = r[d][i] + w * v[i];
             }
         }
         let mut out = *y0;
-        for i in 0..N {
+        for i in 0..args {
             out[i] += s * v[i];
         }
         out

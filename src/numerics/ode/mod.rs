@@ -170,19 +170,6 @@ impl std::fmt::Display for OdeError {
     }
 }
 
-/// A trial step of a Dormand-Prince pair, before acceptance. DOP853's stages are
-/// written straight into the integrator's step (two kilobytes that are not moved).
-enum Trial<const N: usize> {
-    Dopri5 {
-        y1: [f64; N],
-        k7: [f64; N],
-        r: [[f64; N]; 4],
-    },
-    Dop853 {
-        y1: [f64; N],
-    },
-}
-
 /// A stepping integrator with memory (step-size suggestion, first-same-as-last value).
 #[derive(Debug, Clone)]
 pub struct Integrator<const N: usize> {
@@ -194,6 +181,10 @@ pub struct Integrator<const N: usize> {
     pub stats: Stats,
     h_next: Option<f64>,
     fsal: Option<(f64, [f64; N], [f64; N])>,
+    /// DP5's last trial step, before acceptance: its seventh stage and its continuous
+    /// extension's coefficients (DOP853's stages are written straight into `last`, and a
+    /// trial returns only its end state, so nothing large is moved per trial).
+    dopri_trial: ([f64; N], [[f64; N]; 4]),
     /// The last accepted step, lent to the caller by [`Integrator::step`].
     last: Step<N>,
 }
@@ -208,6 +199,7 @@ impl<const N: usize> Integrator<N> {
             stats: Stats::default(),
             h_next: None,
             fsal: None,
+            dopri_trial: ([0.0; N], [[0.0; N]; 4]),
             last: Step {
                 t0: 0.0,
                 t1: 0.0,
@@ -349,16 +341,16 @@ impl<const N: usize> Integrator<N> {
         f0: &[f64; N],
         h: f64,
         tol: Tol,
-    ) -> (Trial<N>, f64) {
+    ) -> ([f64; N], f64) {
         if self.method == Method::Dop853 {
             let (y1, e) = dop853::attempt(sys, t, y, f0, h, tol, self.dop853_stages());
             self.stats.rhs_evals += 11;
-            (Trial::Dop853 { y1 }, e)
+            (y1, e)
         } else {
             let (y1, k7, r, err) = dopri5::stages(sys, t, y, f0, h);
             self.stats.rhs_evals += 6;
-            let e = dopri5::error_norm(y, &y1, &err, tol);
-            (Trial::Dopri5 { y1, k7, r }, e)
+            self.dopri_trial = (k7, r);
+            (y1, dopri5::error_norm(y, &y1, &err, tol))
         }
     }
 
@@ -382,15 +374,18 @@ impl<const N: usize> Integrator<N> {
         t: f64,
         y: &[f64; N],
         t1: f64,
-        trial: Trial<N>,
+        y1: [f64; N],
     ) {
-        match trial {
-            Trial::Dopri5 { y1, k7, r } => self.finish(t, y, t1, y1, k7, Some(Interp::Dopri { r })),
-            Trial::Dop853 { y1 } => {
+        match self.method {
+            Method::Dop853 => {
                 let f1 = sys.rhs(t1, &y1); // formula: f(t + h, y1), first stage of the next step
                 self.stats.rhs_evals += 1;
                 self.dop853_stages()[12] = f1;
                 self.finish(t, y, t1, y1, f1, None)
+            }
+            _ => {
+                let (k7, r) = self.dopri_trial;
+                self.finish(t, y, t1, y1, k7, Some(Interp::Dopri { r }))
             }
         }
     }
@@ -459,7 +454,7 @@ impl<const N: usize> Integrator<N> {
             if !last && h <= 16.0 * f64::EPSILON * t.abs().max(1e-300) {
                 return Err(OdeError::StepTooSmall { t_s: t });
             }
-            let (trial, e) = self.trial(sys, t, y, &f0, h, tol);
+            let (y1, e) = self.trial(sys, t, y, &f0, h, tol);
             if e.is_finite() && e <= 1.0 {
                 // formula: h_new = h min(fac_max, max(fac_min, 0.9 e^(-1/(q+1))))
                 let fac = if e == 0.0 {
@@ -473,7 +468,7 @@ impl<const N: usize> Integrator<N> {
                     self.h_next = Some(h);
                 }
                 self.stats.accepted += 1;
-                self.accept(sys, t, y, t1, trial);
+                self.accept(sys, t, y, t1, y1);
                 return Ok(());
             }
             self.stats.rejected += 1;

@@ -42,6 +42,14 @@ impl<const N: usize> Step<N> {
     /// system the step was taken on: DOP853 evaluates it three more times, once per
     /// step, the first time the step's interior is asked for.
     pub fn eval<S: OdeSystem<N> + ?Sized>(&self, sys: &S, t: f64) -> [f64; N] {
+        self.eval_first(sys, t, N)
+    }
+
+    /// [`Step::eval`] for a reader of the first `args` components only (a model's
+    /// guards, say): DOP853's interpolant skips the others, which keep `y0`'s values
+    /// inside the step; the other interpolants, cheap already, give all.
+    #[inline(always)]
+    pub fn eval_first<S: OdeSystem<N> + ?Sized>(&self, sys: &S, t: f64, args: usize) -> [f64; N] {
         let h = self.t1 - self.t0;
         if h == 0.0 || t == self.t0 {
             return self.y0;
@@ -77,7 +85,7 @@ impl<const N: usize> Step<N> {
                         self.y0[i] + s * (r[0][i] + s1 * (r[1][i] + s * (r[2][i] + s1 * r[3][i])));
                 }
             }
-            Interp::Dop853(lazy) => return lazy.eval(sys, self, s),
+            Interp::Dop853(lazy) => return lazy.eval(sys, self, s, args),
         }
         out
     }

@@ -44,6 +44,7 @@ pub mod collision;
 pub mod contact;
 pub mod energy;
 pub mod flight;
+mod guard_rates;
 pub mod params;
 pub mod printed;
 pub mod rules;

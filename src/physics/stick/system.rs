@@ -29,6 +29,9 @@ impl HybridSystem<NSTATE> for StickModel {
     type Mode = Mode;
     type Stop = StickStop;
     const FLOW_ARGS: usize = FLOW_ARGS;
+    // The contact modes' guards read theta, theta', xdot_c and the rod's direction only
+    // (the flight's height guard reads z_c, but flight has its closed form).
+    const GUARD_ARGS: usize = FLOW_ARGS;
 
     fn flow(&self, mode: Mode, t: f64, y: &State) -> State {
         let p = &self.p;
@@ -78,6 +81,10 @@ impl HybridSystem<NSTATE> for StickModel {
     fn guards(&self, mode: Mode, t: f64, y: &State, out: &mut Vec<f64>) {
         out.clear();
         self.with_guards(mode, t, y, |g| out.extend_from_slice(g));
+    }
+
+    fn guard_rates(&self, mode: Mode, t: f64, y: &State, f: &State, out: &mut Vec<f64>) -> bool {
+        self.contact_guard_rates(mode, t, y, f, out)
     }
 
     fn direction(&self, mode: Mode, i: usize) -> Direction {
