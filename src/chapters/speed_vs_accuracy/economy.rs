@@ -166,7 +166,7 @@ pub fn horizontal_section(
     r.claim(Claim::judged(
         "viscous-law-economy",
         "3.1.1",
-        "Approximation: under horizontal dither the effective viscous law F = c v, c = 2 mu m g/(pi V), reproduces the exact drift within 1 % in the limit delta omega^2 >> mu g and small bias; at delta omega^2 = 100 mu g, F = 0.05 mu m g (relative error)",
+        "Approximation: under horizontal dither the effective viscous law F = c v, c = 2 μ m g/(π V), reproduces the exact drift within 1 % in the limit Γₓ = δₓ ω²/(μ g) >> 1 and small bias; at Γₓ = 100, b = 0.05 (relative error)",
         0.0,
         err,
         0.01,

@@ -171,7 +171,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     r.claim(Claim::exact(
         "reference-convergence-study",
         "numerics",
-        "Integrated Dormand-Prince approaches the reference as the tolerance tightens: err(1e-12) <= err(1e-10) + F, with F the rounding floor of the drift (256 ulps of t per event times the relative-velocity jump 2 Gamma g / omega, over the window)",
+        "Integrated Dormand-Prince approaches the reference as the tolerance tightens: err(1e-12) <= err(1e-10) + F, with F the rounding floor of the drift (256 ulps of t per event times the relative-velocity jump 2 Γ g / ω, over the window)",
         true,
         if doc.tightening_helps {
             rel(d12) <= rel(d10) + floor
@@ -250,7 +250,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
         r.claim(Claim::judged(
             &format!("{label}-order"),
             "numerics",
-            &format!("{name} converges on the block drift of the default scene (Gamma = 2.5, b = 0.05, mu = 0.4) at least at first order: every error of the ladder is below 2 e(h0) (h/h0)^1, h0 = T/20 (computed: the largest ratio e(h) / (e(h0) (h/h0))). A lower bound only: the signed error changes sign and course with h on this observable (chapter 7's text), so no order is fitted here; the orders are fitted on the stick."),
+            &format!("{name} converges on the block drift of the default scene (Γ = 2.5, b = 0.05, μ = 0.4) at least at first order: every error of the ladder is below 2 e(h0) (h/h0)^1, h0 = T/20 (computed: the largest ratio e(h) / (e(h0) (h/h0))). A lower bound only: the signed error changes sign and course with h on this observable (chapter 7's text), so no order is fitted here; the orders are fitted on the stick."),
             format!("<= 2 ({n} step sizes)"),
             worst,
             "factor 2 on a first-order envelope",
@@ -286,7 +286,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
             fails.push(Failure {
                 method: format!("{}-fixed", m.name()),
                 scene: format!(
-                    "stick flight relaxation, tau = gamma/k = 1 ms, h = T/10 = {:.1} tau",
+                    "stick flight relaxation, τ = γ/k = 1 ms, h = T/10 = {:.1} τ",
                     st.h_over_tau
                 ),
                 symptom: match e {
@@ -308,7 +308,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     r.claim(Claim::exact(
         "stiff-relaxation-explicit-blowup",
         "4 (C.3)",
-        "On the flight relaxation theta' = -(k/gamma)(theta - theta_0) (k/gamma = 1000/s), fixed steps of T/10 blow up for Euler and RK4 (h/tau beyond 2 and 2.785) while adaptive Dormand-Prince stays within 1e-6 rad of the closed form",
+        "On the flight relaxation θ' = -(k/γ)(θ - θ₀) (k/γ = 1000/s), fixed steps of T/10 blow up for Euler and RK4 (h/τ beyond 2 and 2.785) while adaptive Dormand-Prince stays within 1e-6 rad of the closed form",
         true,
         stiff_ok,
     ).with_check(Check::ClosedForm));
@@ -358,7 +358,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     if z.events_chattering > 2 * z.events_sticking {
         fails.push(Failure {
             method: "event-driven without a rest threshold".into(),
-            scene: format!("block on the plate, e = {e}, Gamma = {gamma_zeno}"),
+            scene: format!("block on the plate, e = {e}, Γ = {gamma_zeno}"),
             symptom: format!(
                 "chattering: {} events in {} periods where the sticking transition needs {}; each cascade ends only by round-off",
                 z.events_chattering,
@@ -396,7 +396,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     r.claim(Claim::close(
         "zeno-plate-resolved-two-ways",
         "3.1.2",
-        "On the chattering plate (Gamma = 1.2), the sticking transition (event-driven) and Moreau-Jean give the same drift (relative difference)",
+        "On the chattering plate (Γ = 1.2), the sticking transition (event-driven) and Moreau-Jean give the same drift (relative difference)",
         0.0,
         ((z.drift_mj_mps - doc.zeno_plate_factor * z.drift_sticking_mps)
             / z.drift_sticking_mps)
@@ -479,7 +479,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     r.claim(Claim::judged(
         "flight-map-economy",
         "3.1.2",
-        "Approximation: the flight-map law v_ave = b mu g t_f^2/(2 n T) (sticking landings, no slip before takeoff) reproduces the exact drift within 1 % in the limit b << 1 of period-n sticking orbits; at Gamma = 2.5, b = 1/80 (relative error)",
+        "Approximation: the flight-map law v_ave = b μ g t_f²/(2 n T) (sticking landings, no slip before takeoff) reproduces the exact drift within 1 % in the limit b << 1 of period-n sticking orbits; at Γ = 2.5, b = 1/80 (relative error)",
         0.0,
         lim_err,
         0.01,
