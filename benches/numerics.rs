@@ -1,7 +1,8 @@
 //! Criterion benchmarks of the simulators: work per second of each method on the stick
 //! (authors' scene, 10 drive cycles per iteration) and on the block benchmark scene
 //! (section 3.1.2: block on a vertically vibrating plate, Gamma = 2.5, f = 30 Hz,
-//! mu = 0.4, bias 0.02), 20 drive periods per iteration.
+//! mu = 0.4, bias b = F/(mu m g) = 0.05, i.e. F = 0.02 m g), 20 drive periods per
+//! iteration.
 //!
 //! `cargo bench --bench numerics` (add `-- --quick` for a short run).
 
@@ -13,7 +14,7 @@ use locomotion_workbook::numerics::ode::{Method, StepControl};
 use std::hint::black_box;
 
 fn scene() -> BlockScene {
-    BlockScene::new(30.0, 2.5, 0.4, 0.02, 9.81)
+    BlockScene::new(30.0, 2.5, 0.4, 0.05, 9.81)
 }
 
 /// Driver options: `method` at the fixed step `h_s` (s), events located.

@@ -162,7 +162,8 @@ fn main() {
     );
 
     // 2. the block
-    let s = BlockScene::new(30.0, 2.5, 0.4, 0.02, 9.81);
+    // b = F/(mu m g) = 0.05: the peer script's default --bias 0.02 is F/(m g), the same force.
+    let s = BlockScene::new(30.0, 2.5, 0.4, 0.05, 9.81);
     let (ours, wall) = timed(repeats, || drift_block_model(&s, &opts, false, 20, 10, 40));
     let exact = drift_block_model(&s, &Options::default(), true, 64, 10, 40).value;
     println!("block: workbook (DP5, events located): drift {:.12e} m/s in {wall:.3e} s ({} rhs evaluations)", ours.value, ours.rhs_evals);

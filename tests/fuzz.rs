@@ -129,7 +129,7 @@ fn table() -> Vec<(&'static str, Vec<Flag>)> {
                 fl("--frequency-hz", 1.0, 100.0, false, false),
                 fl("--gamma", 1.5, 50.0, true, true),
                 fl("--mu", 0.01, 2.0, false, true),
-                rel("--bias", 3e-3, 0.396, false, false),
+                rel("--bias", 7.5e-3, 0.99, false, false), // 3e-3/mu at mu = 0.4
                 fl("--restitution", 0.0, 0.8, true, false),
                 fl("--g-mps2", 3.0, 25.0, false, false),
             ],

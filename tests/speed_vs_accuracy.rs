@@ -31,7 +31,7 @@ fn run(args: &[&str]) -> (i32, String, String) {
 }
 
 fn scene() -> BlockScene {
-    BlockScene::new(30.0, 2.5, 0.4, 0.02, 9.81)
+    BlockScene::new(30.0, 2.5, 0.4, 0.05, 9.81) // b = F/(mu m g) = 0.05: F = 0.02 m g
 }
 
 /// The chapter's event-driven drift of `s` (closed forms, guards sampled at T/20, as in
@@ -80,13 +80,14 @@ fn drift_unchanged_by_the_move_to_the_block_model() {
     // 1e-10 for that cross-check, the bound here. Moreau-Jean (T/40 and T/4000): the same
     // scheme on the same data, differing only in the rounding of h b g, so also 1e-10.
     // Scenes: the default, two biases, another frequency/Gamma/mu, and the chattering
-    // scene with e = 0.5 and the 0.1 mm/s rest velocity.
+    // scene with e = 0.5 and the 0.1 mm/s rest velocity. The biases b = F/(mu m g) are
+    // the former implementation's F/(m g) over mu (0.02, 0.04, 0.005, 0.05 and 0.02).
     for (f, gamma, mu, b, e, rest, expected) in [
         (
             30.0,
             2.5,
             0.4,
-            0.02,
+            0.05,
             0.0,
             0.0,
             [2.413104131411e-03, 2.364778210152e-03, 2.413076230943e-03],
@@ -95,7 +96,7 @@ fn drift_unchanged_by_the_move_to_the_block_model() {
             30.0,
             2.5,
             0.4,
-            0.04,
+            0.1,
             0.0,
             0.0,
             [4.845581384650e-03, 4.854065710152e-03, 4.845517491688e-03],
@@ -104,7 +105,7 @@ fn drift_unchanged_by_the_move_to_the_block_model() {
             30.0,
             2.5,
             0.4,
-            0.005,
+            0.0125,
             0.0,
             0.0,
             [6.014545059466e-04, 5.871693750000e-04, 6.014357401374e-04],
@@ -113,7 +114,7 @@ fn drift_unchanged_by_the_move_to_the_block_model() {
             20.0,
             4.0,
             0.3,
-            0.05,
+            0.05 / 0.3,
             0.0,
             0.0,
             [1.218137621274e-02, 1.193731467897e-02, 1.218131788096e-02],
@@ -122,7 +123,7 @@ fn drift_unchanged_by_the_move_to_the_block_model() {
             30.0,
             1.2,
             0.4,
-            0.02,
+            0.05,
             0.5,
             1e-4,
             [5.092467185956e-04, 5.080762500000e-04, 5.092678831459e-04],
@@ -197,14 +198,15 @@ fn impacts_follow_newton_and_coulomb_for_impulses() {
 #[test]
 fn flight_map_law_becomes_exact_as_the_bias_vanishes() {
     // The flight map neglects the slip before takeoff (while mu N < F), whose share of
-    // the drift grows with b/mu: its error must shrink at least twofold from b = 0.04 to
-    // b = 0.005, and at b = 0.005 lie below 0.5 %.
+    // the drift grows with b = F/(mu m g): its error must shrink at least twofold from
+    // b = 0.1 to b = 0.0125 (F = 0.04 and 0.005 m g at mu = 0.4), and at b = 0.0125 lie
+    // below 0.5 %.
     let err = |b: f64| {
         let s = BlockScene::new(30.0, 2.5, 0.4, b, 9.81);
         let ex = exact_drift(&s, 10, 20).value;
         ((flight_map_drift(&s).unwrap() - ex) / ex).abs()
     };
-    let (big, small) = (err(0.04), err(0.005));
+    let (big, small) = (err(0.1), err(0.0125));
     assert!(small < big / 2.0 && small < 5e-3, "{big} -> {small}");
 }
 
@@ -309,7 +311,8 @@ fn bad_input_names_the_flag() {
         ("--gamma", "1.2"),
         ("--gamma", "inf"),
         ("--mu", "-0.1"),
-        ("--bias", "0.5"),
+        ("--bias", "0.995"),
+        ("--bias", "0.005"), // below 3e-3/mu = 7.5e-3 at the default mu = 0.4
         ("--bias", "-0.01"),
         ("--bias", "0"),
         ("--restitution", "1"),

@@ -63,7 +63,7 @@ pub const CHAPTERS: [ChapterInfo; 7] = [
         number: 2,
         title: "Effective mass and dynamic jamming",
         section: "2",
-        question: "Why does a vertical impulse on a leaning stick push it sideways? (m along, m/4 across; J_l/J_v)",
+        question: "Why does a vertical impulse on a leaning stick push it sideways? (m along, m/4 across; J_ℓ/J_v)",
     },
     ChapterInfo {
         id: "horizontal-shaking",
@@ -75,9 +75,9 @@ pub const CHAPTERS: [ChapterInfo; 7] = [
     ChapterInfo {
         id: "vertical-shaking",
         number: 4,
-        title: "Vertical shaking and the law mu_eff = v_ave/v_z",
+        title: "Vertical shaking and the law μ_eff = v_ave/v_z",
         section: "3.1.2",
-        question: "How does vertical vibration make a small bias force move a block? (mu_eff = v_ave/v_z)",
+        question: "How does vertical vibration make a small bias force move a block? (μ_eff = v_ave/v_z)",
     },
     ChapterInfo {
         id: "asymmetric-shaking",

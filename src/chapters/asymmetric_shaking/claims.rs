@@ -193,7 +193,7 @@ pub fn check_all(
         ("sawtooth", Box::new(saw)),
         ("mirrored sawtooth", Box::new(Mirrored(saw))),
         (
-            "bi-harmonic eps = 0",
+            "bi-harmonic ε = 0",
             Box::new(Biharmonic {
                 velocity_amplitude_mps: vb,
                 omega_rad_s: om,
@@ -201,7 +201,7 @@ pub fn check_all(
             }),
         ),
         (
-            "bi-harmonic eps = 0.3",
+            "bi-harmonic ε = 0.3",
             Box::new(Biharmonic {
                 velocity_amplitude_mps: vb,
                 omega_rad_s: om,
@@ -246,7 +246,7 @@ pub fn check_all(
     r.claim(Claim::close(
         "linear-no-drift",
         "3.2.1",
-        &format!("With linear friction F = -c v_rel the mean velocity of the block equals the plate's (zero) whatever the asymmetry of the shaking. Largest |mean velocity| over {} drives (sawtooth, its mirror, bi-harmonic eps = 0 and 0.3, sine), DP5 after the transient.", lin.len()),
+        &format!("With linear friction F = -c v_rel the mean velocity of the block equals the plate's (zero) whatever the asymmetry of the shaking. Largest |mean velocity| over {} drives (sawtooth, its mirror, bi-harmonic ε = 0 and 0.3, sine), DP5 after the transient.", lin.len()),
         doc.linear_drift_fraction * 0.5 * (a + b),
         lin_worst,
         tol_lin,
@@ -290,16 +290,16 @@ pub fn check_all(
     r.claim(Claim::close(
         "drift-closed-form",
         "3.2.2",
-        &format!("Steady drift of the Coulomb block: v_d = v_slow - mu g t_fast^2 / T if mu g t_fast < v_slow + v_fast, else 0 (workbook's closed form; regime {}), against the event-driven simulation over {measured} periods after the first stick.", regime.label()),
+        &format!("Steady drift of the Coulomb block: v_d = v_slow - μ g t_fast² / T if μ g t_fast < v_slow + v_fast, else 0 (workbook's closed form; regime {}), against the event-driven simulation over {measured} periods after the first stick.", regime.label()),
         drift_doc,
         v_sim,
         tol_v,
     ).with_check(sim));
-    r.claim(Claim::exact("drift-regime", "3.2.2", "Steady regime from the closed form (mu g t_fast >= v_slow + v_fast: stick in both strokes) equals the simulated one (does the block stick while the plate moves back?).", regime_doc.label(), regime_sim.label()).with_check(sim));
+    r.claim(Claim::exact("drift-regime", "3.2.2", "Steady regime from the closed form (μ g t_fast >= v_slow + v_fast: stick in both strokes) equals the simulated one (does the block stick while the plate moves back?).", regime_doc.label(), regime_sim.label()).with_check(sim));
     r.claim(Claim::close(
         "lock-time",
         "3.2.2",
-        "A block started at rest slips until it first reaches the slow speed: t* = n T + (v_slow - v_n)/(mu g), v_n = n mu g (t_slow - t_fast) (workbook's closed form), against the first stick of the simulation.",
+        "A block started at rest slips until it first reaches the slow speed: t* = n T + (v_slow - v_n)/(μ g), v_n = n μ g (t_slow - t_fast) (workbook's closed form), against the first stick of the simulation.",
         doc.lock_factor * lock_time_s(&saw, k, 0.0),
         main.first_stick_s.unwrap_or(f64::NAN),
         tol_t,
@@ -331,7 +331,7 @@ pub fn check_all(
     r.claim(Claim::judged(
         "stroke-inequalities",
         "3.2.2",
-        "As printed: the plate moves at v_r to the right and at a 'smaller velocity v_l > v_r to the left, acting for a longer period', with t_r > t_l and v_r t_r = v_l t_l; then the impulse mu m g (t_l - t_r) is negative and the block drifts right, not left. Correct: v_l < v_r and t_l > t_r (the slow stroke is the long one). Check: the printed reading (fast stroke left) drifts right, the corrected one (slow stroke left) drifts left.",
+        "As printed: the plate moves at v_r to the right and at a 'smaller velocity v_l > v_r to the left, acting for a longer period', with t_r > t_l and v_r t_r = v_l t_l; then the impulse μ m g (t_l - t_r) is negative and the block drifts right, not left. Correct: v_l < v_r and t_l > t_r (the slow stroke is the long one). Check: the printed reading (fast stroke left) drifts right, the corrected one (slow stroke left) drifts left.",
         "printed: right; corrected: left",
         format!("printed: {}; corrected: {}", if printed_goes_right { "right" } else { "left" }, if corrected_goes_left { "left" } else { "right" }),
         "sign",
@@ -368,7 +368,7 @@ pub fn check_all(
         r.claim(Claim::judged(
             "slip-impulse",
             "3.2.2",
-            "So long as the block is slower than the slow stroke it slips against the plate's motion at every instant, and the net friction impulse per period is J = mu m g (t_l - t_r) along the slow stroke (t_l, t_r: slow and fast durations with the corrected labels). Check: J/m = change of the block's velocity over one period started at v = (v_slow - mu g t_slow - v_fast)/2 (m/s), and the friction direction in every segment.",
+            "So long as the block is slower than the slow stroke it slips against the plate's motion at every instant, and the net friction impulse per period is J = μ m g (t_l - t_r) along the slow stroke (t_l, t_r: slow and fast durations with the corrected labels). Check: J/m = change of the block's velocity over one period started at v = (v_slow - μ g t_slow - v_fast)/2 (m/s), and the friction direction in every segment.",
             j,
             dv,
             tol_v,
@@ -391,7 +391,7 @@ pub fn check_all(
     r.claim(Claim::judged(
         "locomotion-needs-slip",
         "3.2.2",
-        "'Asymmetries in the shaking lead to locomotion' (and 'generically' in 3.2.1) holds only while mu g t_fast < v_slow + v_fast. Beyond it the block sticks in both strokes and the two slips cancel: no drift. Check at mu g t_fast = 0.5 and 2 (v_slow + v_fast), same speeds.",
+        "'Asymmetries in the shaking lead to locomotion' (and 'generically' in 3.2.1) holds only while μ g t_fast < v_slow + v_fast. Beyond it the block sticks in both strokes and the two slips cancel: no drift. Check at μ g t_fast = 0.5 and 2 (v_slow + v_fast), same speeds.",
         format!("{} and 0", fmt_num(drift_velocity_mps(&weak, k))),
         format!("{} and {}", fmt_num(v_weak), fmt_num(v_strong)),
         tol_v,
@@ -415,7 +415,7 @@ pub fn check_all(
     r.claim(Claim::close(
         "biharmonic-always-slipping",
         "3.2.2",
-        &format!("Smooth drive v_p = V (sin wt + eps cos 2wt), always slipping: v_d = eps V (1 - pi^2/(2 Gamma^2)), Gamma = V w/(mu g) (workbook's closed form; -> eps V as Gamma -> infinity). eps = {EPS_CHECK}, Gamma = {GAMMA_CHECK}, V = {} m/s.", fmt_num(vb)),
+        &format!("Smooth drive v_p = V (sin ω t + ε cos 2 ω t), always slipping: v_d = ε V (1 - π²/(2 Γₓ²)), Γₓ = V ω/(μ g) (workbook's closed form; -> ε V as Γₓ -> infinity). ε = {EPS_CHECK}, Γₓ = {GAMMA_CHECK}, V = {} m/s.", fmt_num(vb)),
         v_bh_doc,
         v_bh,
         tol_v, // closed forms, located crossings, transient decayed below 1e-13 m/s
@@ -438,7 +438,7 @@ pub fn check_all(
     r.claim(Claim::close(
         "biharmonic-stuck",
         "3.2.2",
-        &format!("Below Gamma_stick = 1/max|cos wt - 2 eps sin 2wt| = {} the plate never needs more than mu g: once the block moves with it, it stays: zero drift (Gamma = 0.9 Gamma_stick, eps = {EPS_CHECK}).", fmt_num(g_stick)),
+        &format!("Below Γₓ,stick = 1/max|cos ω t - 2 ε sin 2 ω t| = {} the plate never needs more than μ g: once the block moves with it, it stays: zero drift (Γₓ = 0.9 Γₓ,stick, ε = {EPS_CHECK}).", fmt_num(g_stick)),
         0.0,
         v_stuck,
         tol_v,

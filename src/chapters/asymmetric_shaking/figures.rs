@@ -94,7 +94,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     )
     .dashed("limit ε (Γₓ → ∞)", vec![(-0.45, -0.45), (0.45, 0.45)]);
     for gamma in [3.0, 10.0] {
-        let pts: Vec<(f64, f64)> = par_map(&epss, "bi-harmonic eps sweep", |&e| {
+        let pts: Vec<(f64, f64)> = par_map(&epss, "bi-harmonic ε sweep", |&e| {
             let p = biharmonic(vb, gamma, e, k);
             let w = Window {
                 transient: slip_transient(gamma),
@@ -124,7 +124,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     )
     .log_x();
     for eps in [0.1, 0.3] {
-        let pts: Vec<(f64, f64)> = par_map(&gammas, "bi-harmonic Gamma sweep", |&g| {
+        let pts: Vec<(f64, f64)> = par_map(&gammas, "bi-harmonic Γₓ sweep", |&g| {
             let p = biharmonic(vb, g, eps, k);
             let w = Window {
                 transient: slip_transient(g),

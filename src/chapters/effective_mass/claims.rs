@@ -101,10 +101,24 @@ fn mass_matrix(theta: f64, doc: &Doc) -> Vec<Claim> {
     let a_cg = (a_c - a_g).dot(&stick_normal(theta));
     // The workbook's contact_acceleration evaluates the same three formulas: these
     // three steps are consistency checks of the code, not evidence about the document.
-    out.push(Claim::close("derivation-a-g", sec, "a_G = F/m (m/s^2 for F = 1 N across the stick); the workbook evaluates the same formula (consistency).", f / MASS_KG, a_g.norm(), rel(f / MASS_KG)));
-    out.push(Claim::close("derivation-omega-dot", sec, "omega_dot = (F L/2)/I (rad/s^2 for F = 1 N); the workbook evaluates r x F / I_G (consistency).", wd, omega_dot.abs(), rel(wd)));
-    out.push(Claim::close("derivation-a-c-g", sec, "a_C/G = omega_dot L/2 (m/s^2 for F = 1 N); the workbook evaluates omega_dot k x r (consistency).", wd * LENGTH_M / 2.0, a_cg, rel(wd)));
-    out.push(Claim::close("derivation-a-c", sec, "a_C = F/(m/4): effective mass m/4 across the stick (m/s^2 for F = 1 N): the sum of the two contributions, computed as vectors, against the printed factor 4.", doc.a_c_factor * f / MASS_KG, a_c.dot(&stick_normal(theta)), rel(4.0)).with_check(Check::SecondMethod));
+    out.push(Claim::close("derivation-a-g", sec, "a_G = F/m (m/s² for F = 1 N across the stick); the workbook evaluates the same formula (consistency).", f / MASS_KG, a_g.norm(), rel(f / MASS_KG)));
+    out.push(Claim::close(
+        "derivation-omega-dot",
+        sec,
+        "dω/dt = (F L/2)/I (rad/s² for F = 1 N); the workbook evaluates r x F / I_G (consistency).",
+        wd,
+        omega_dot.abs(),
+        rel(wd),
+    ));
+    out.push(Claim::close(
+        "derivation-a-c-g",
+        sec,
+        "a_C/G = dω/dt L/2 (m/s² for F = 1 N); the workbook evaluates dω/dt k x r (consistency).",
+        wd * LENGTH_M / 2.0,
+        a_cg,
+        rel(wd),
+    ));
+    out.push(Claim::close("derivation-a-c", sec, "a_C = F/(m/4): effective mass m/4 across the stick (m/s² for F = 1 N): the sum of the two contributions, computed as vectors, against the printed factor 4.", doc.a_c_factor * f / MASS_KG, a_c.dot(&stick_normal(theta)), rel(4.0)).with_check(Check::SecondMethod));
     out
 }
 
@@ -113,7 +127,7 @@ fn ratios(theta: f64, doc: &Doc) -> Vec<Claim> {
     let q = theta.tan(); // formula: slope 1/q, q = tan(theta)
     let rel = |x: f64| TOL_LINALG * x.abs().max(1.0);
     let (m_rod, m_pm) = matrices(theta);
-    let sec = "2, J_l formula";
+    let sec = "2, J_ℓ formula";
     let pm_doc = doc.point_mass_factor * q; // formula: J_l/J_v = q
     let rod_doc = doc.rod_numerator * q / (doc.rod_denominator + q * q); // formula: 3q/(4+q^2)
     let up = Vector2::new(0.0, 1.0);
@@ -131,11 +145,11 @@ fn ratios(theta: f64, doc: &Doc) -> Vec<Claim> {
     let sm = Check::SecondMethod;
     let sec45 = "2, 45 degree example";
     vec![
-        Claim::close("ratio-point-mass", sec, "Point-mass model: J_l = q J_v (ratio at the given angle; computed from the inverted mass matrix).", pm_doc, jam_ratio(&m_pm), rel(q)).with_check(sm),
-        Claim::close("ratio-uniform-rod", sec, "Uniform rod: J_l = (3q/(4+q^2)) J_v (ratio at the given angle; computed from the inverted mass matrix).", rod_doc, jam_ratio(&m_rod), rel(rod_doc)).with_check(sm),
-        Claim::close("ratio-rod-newton-euler", sec, "Second method (Newton-Euler impulse equations, a 5x5 linear solve) gives the rod's ratio 3q/(4+q^2).", rod_doc, ne_rod, rel(rod_doc)).with_check(sm),
+        Claim::close("ratio-point-mass", sec, "Point-mass model: J_ℓ = q J_v (ratio at the given angle; computed from the inverted mass matrix).", pm_doc, jam_ratio(&m_pm), rel(q)).with_check(sm),
+        Claim::close("ratio-uniform-rod", sec, "Uniform rod: J_ℓ = (3q/(4+q²)) J_v (ratio at the given angle; computed from the inverted mass matrix).", rod_doc, jam_ratio(&m_rod), rel(rod_doc)).with_check(sm),
+        Claim::close("ratio-rod-newton-euler", sec, "Second method (Newton-Euler impulse equations, a 5x5 linear solve) gives the rod's ratio 3q/(4+q²).", rod_doc, ne_rod, rel(rod_doc)).with_check(sm),
         Claim::close("ratio-point-mass-newton-euler", sec, "Second method (Newton-Euler, I_G = 0) gives the point-mass ratio q.", pm_doc, ne_pm, rel(q)).with_check(sm),
-        Claim::close("example-45-point-mass", sec45, "At 45 degrees (q = 1) the point-mass model gives a horizontal impulse equal to the vertical one (J_l/J_v).", doc.example_point_mass, jam_ratio(&m45_pm), TOL_LINALG).with_check(sm),
+        Claim::close("example-45-point-mass", sec45, "At 45 degrees (q = 1) the point-mass model gives a horizontal impulse equal to the vertical one (J_ℓ/J_v).", doc.example_point_mass, jam_ratio(&m45_pm), TOL_LINALG).with_check(sm),
         Claim::close("example-45-rod-60-percent", sec45, "At 45 degrees the uniform rod gives 60 % of the point mass's sideways impulse.", doc.example_rod_fraction, jam_ratio(&m45_rod) / jam_ratio(&m45_pm), TOL_LINALG).with_check(sm),
     ]
 }
@@ -148,8 +162,8 @@ fn best_angle(doc: &Doc) -> Vec<Claim> {
                                      // Near a smooth maximum the ratio is flat to second order, so rounding in the ratio
                                      // (~1e-16) moves the argmax by ~sqrt(1e-16) ~ 1e-8 rad: tolerance 1e-6 degrees.
     vec![
-        Claim::close("rod-best-angle", "2 (workbook)", "The uniform rod's sideways impulse is largest at q = 2, theta = atan 2 (degrees; golden-section search on the mass-matrix ratio; tolerance 1e-6 deg: rounding of ~1e-16 in a ratio flat to second order moves the argmax by ~1e-8 rad).", best_cf.to_degrees(), best.to_degrees(), 1e-6).with_check(Check::SecondMethod),
-        Claim::close("rod-best-ratio", "2 (workbook)", "The largest ratio of the uniform rod is 3/4 (J_l/J_v at the located argmax; 1e-12: rounding of the inversion).", doc.best_ratio, rod_ratio(best), 1e-12).with_check(Check::SecondMethod),
+        Claim::close("rod-best-angle", "2 (workbook)", "The uniform rod's sideways impulse is largest at q = 2, θ = atan 2 (degrees; golden-section search on the mass-matrix ratio; tolerance 1e-6 deg: rounding of ~1e-16 in a ratio flat to second order moves the argmax by ~1e-8 rad).", best_cf.to_degrees(), best.to_degrees(), 1e-6).with_check(Check::SecondMethod),
+        Claim::close("rod-best-ratio", "2 (workbook)", "The largest ratio of the uniform rod is 3/4 (J_ℓ/J_v at the located argmax; 1e-12: rounding of the inversion).", doc.best_ratio, rod_ratio(best), 1e-12).with_check(Check::SecondMethod),
     ]
 }
 
@@ -184,25 +198,25 @@ fn self_locking(mu: f64, doc: &Doc) -> Claim {
     let also = match rod_lock_angles_closed_form(mu) {
         Some((a1, a2)) => {
             let b1 = bisect(|x| rod_ratio(x) - mu, 0.0, 2f64.atan(), 1e-13);
-            format!("the rod also jams for {} < theta <= {} degrees (closed form; bisection on the mass-matrix ratio: {}) and for theta >= {} degrees", deg(t), deg(a1), deg(b1), deg(a2))
+            format!("the rod also jams for {} < θ <= {} degrees (closed form; bisection on the mass-matrix ratio: {}) and for θ >= {} degrees", deg(t), deg(a1), deg(b1), deg(a2))
         }
-        None if mu > 0.0 => "for mu >= 3/4 the rod jams at every angle".to_string(),
-        None => "with mu = 0 only the upright stick jams".to_string(),
+        None if mu > 0.0 => "for μ >= 3/4 the rod jams at every angle".to_string(),
+        None => "with μ = 0 only the upright stick jams".to_string(),
     };
     let statement = format!(
-        "Fig. 1: the tip angle theta < atan(mu) puts the uniform stick in the self-locking regime (C does not slip under a vertical impulse or acceleration). Reading: a sufficient condition, which is all the caption claims. Checked on 2001 angles of that range: the rod's |J_l|/J_v from its mass matrix stays <= mu, and the bound is tight for the point-mass model (just beyond it the point mass slips). Not necessary for the rod, whose ratio 3q/(4+q^2) is below q: {also}. Both criteria are results: self_locking (tan theta < mu) and rod_jams_under_vertical_impulse (3q/(4+q^2) <= mu)."
+        "Fig. 1: the tip angle θ < atan(μ) puts the uniform stick in the self-locking regime (C does not slip under a vertical impulse or acceleration). Reading: a sufficient condition, which is all the caption claims. Checked on 2001 angles of that range: the rod's |J_ℓ|/J_v from its mass matrix stays <= μ, and the bound is tight for the point-mass model (just beyond it the point mass slips). Not necessary for the rod, whose ratio 3q/(4+q²) is below q: {also}. Both criteria are results: self_locking (tan θ < μ) and rod_jams_under_vertical_impulse (3q/(4+q²) <= μ)."
     );
     let range = if doc.lock_below {
-        format!("theta < {} deg", deg(bound))
+        format!("θ < {} deg", deg(bound))
     } else {
-        format!("theta > {} deg", deg(bound))
+        format!("θ > {} deg", deg(bound))
     };
     Claim::judged(
         "self-locking-bound",
         "2, Fig. 1 caption",
         &statement,
-        format!("|J_l|/J_v <= mu = {} for {range}", fmt_num(mu)),
-        format!("largest |J_l|/J_v there: {}", fmt_num(worst)),
+        format!("|J_ℓ|/J_v <= μ = {} for {range}", fmt_num(mu)),
+        format!("largest |J_ℓ|/J_v there: {}", fmt_num(worst)),
         "exact inequality",
         worst <= mu && tight,
         Verdict::Confirmed,

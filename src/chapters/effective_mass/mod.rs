@@ -227,7 +227,7 @@ fn jamming_table(mu: f64, angle_deg: f64) -> String {
         angles.sort_by(|a, b| a.total_cmp(b));
     }
     let mut t = format!(
-        "| theta (deg) | q = tan theta | J_l/J_v point mass | J_l/J_v uniform rod | point mass jams (q <= {mu}) | rod jams (3q/(4+q^2) <= {mu}) |\n|---|---|---|---|---|---|\n",
+        "| θ (deg) | q = tan θ | J_ℓ/J_v point mass | J_ℓ/J_v uniform rod | point mass jams (q <= {mu}) | rod jams (3q/(4+q²) <= {mu}) |\n|---|---|---|---|---|---|\n",
         mu = fmt_num(mu)
     );
     for a in angles {

@@ -205,7 +205,7 @@ pub fn add(
     r.claim(Claim::judged(
         "non-sliding-needs-mu-g",
         "3.1.1",
-        "Non-sliding (v_rel = 0) can only occur while mu g >= |delta_x omega^2 sin(omega t)| (no bias force): largest |a_support|/(mu g) over every sticking instant of exact runs at Gamma_x = 0.5, 0.9, 1.5 and the chapter's.",
+        "Non-sliding (v_rel = 0) can only occur while μ g >= |δₓ ω² sin(ω t)| (no bias force): largest |a_support|/(μ g) over every sticking instant of exact runs at Γₓ = 0.5, 0.9, 1.5 and the chapter's.",
         k,
         worst,
         "<= k (1 + 1e-9): events located to ulps",
@@ -238,7 +238,7 @@ pub fn add(
         "fast-shaking-zero-mean-friction",
         "3.1.1",
         &format!(
-            "For any given object velocity the average friction tends to zero as the frequency grows: mean friction / (mu m g) on a block drifting at 0.1 V (exact periodic state) at 1, 3, 10, 30 x the frequency: {}.",
+            "For any given object velocity the average friction tends to zero as the frequency grows: mean friction / (μ m g) on a block drifting at 0.1 V (exact periodic state) at 1, 3, 10, 30 x the frequency: {}.",
             biases.iter().map(|b| format!("{b:.4}")).collect::<Vec<_>>().join(", ")
         ),
         doc.fast_limit,
@@ -285,7 +285,7 @@ pub fn add(
         "remaining-friction-viscous",
         "3.1.1",
         &format!(
-            "As printed: the friction that remains is viscous, growing with velocity and falling with frequency or amplitude. Holds for v << V = delta_x omega and Gamma_x >> 1: the mean friction is -(2/pi) mu m g arcsin(v/V), linear with c = 2 mu m g/(pi V) only at small v (exact c within 1e-3 of it at F = 0.02 mu m g, Gamma_x = 100); at F = 0.9 mu m g the linear law overestimates the drift by {:.0} %. Expected/computed: the drift ratio when the force doubles from 0.02 to 0.04 mu m g (2 for a viscous law, 2^(1/p) for F ~ v^p); tolerance 2 (2 - 2 cos(pi b/2)) + 10/Gamma_x^2.",
+            "As printed: the friction that remains is viscous, growing with velocity and falling with frequency or amplitude. Holds for v << V = δₓ ω and Γₓ >> 1: the mean friction is -(2/π) μ m g arcsin(v/V), linear with c = 2 μ m g/(π V) only at small v (exact c within 1e-3 of it at F = 0.02 μ m g, Γₓ = 100); at F = 0.9 μ m g the linear law overestimates the drift by {:.0} %. Expected/computed: the drift ratio when the force doubles from 0.02 to 0.04 μ m g (2 for a viscous law, 2^(1/p) for F ~ v^p); tolerance 2 (2 - 2 cos(π b/2)) + 10/Γₓ².",
             100.0 * departure
         ),
         expected_doubling,
@@ -307,7 +307,7 @@ pub fn add(
     r.claim(Claim::judged(
         "arcsin-law-large-gamma",
         "3.1.1 (derived)",
-        &format!("The cycle-averaged law v = V sin(pi F/(2 mu m g)) matches the exact periodic drift at Gamma_x = {g_hi:.0} (relative error)."),
+        &format!("The cycle-averaged law v = V sin(π F/(2 μ m g)) matches the exact periodic drift at Γₓ = {g_hi:.0} (relative error)."),
         0.0,
         e_hi,
         10.0 / (g_hi * g_hi),
@@ -321,7 +321,7 @@ pub fn add(
     r.claim(Claim::close(
         "booktop-slip-tilt-arctan-mu",
         "3.1.1 booktop",
-        &format!("The tilt needed for the coin to slip on a still book is arctan(mu) (about 20 deg for mu = 0.36; here {atan:.2} deg): bisection on the model's stick/slip outcome (60 halvings of 90 deg: bracket ~1e-16 deg; 1e-9 deg allows the rounding of tan at the threshold)."),
+        &format!("The tilt needed for the coin to slip on a still book is arctan(μ) (about 20 deg for μ = 0.36; here {atan:.2} deg): bisection on the model's stick/slip outcome (60 halvings of 90 deg: bracket ~1e-16 deg; 1e-9 deg allows the rounding of tan at the threshold)."),
         atan,
         tilt,
         1e-9,
@@ -342,7 +342,7 @@ pub fn add(
         "booktop-slides-at-small-tilt",
         "3.1.1 booktop",
         &format!(
-            "Shaken rapidly (Gamma_x > 1 - F/(mu m g), here {:.2} vs {:.2}) at {} Hz, the coin slides down a tilt of {small:.1} deg (a quarter of arctan(mu)), where it sticks on a still book: exact drift {:.4} m/s (averaged law {:.4} m/s).",
+            "Shaken rapidly (Γₓ > 1 - F/(μ m g), here {:.2} vs {:.2}) at {} Hz, the coin slides down a tilt of {small:.1} deg (a quarter of arctan(μ)), where it sticks on a still book: exact drift {:.4} m/s (averaged law {:.4} m/s).",
             book.gamma_x(),
             1.0 - book.bias,
             scene.frequency_hz,

@@ -227,7 +227,10 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &claims::Doc) -> Result<Chapter
         .collect();
     r.table(
         "error-vs-gamma",
-        format!("| Gamma_x | exact drift / V | averaged law / V | relative error |\n|---|---|---|---|\n{}\n", rows.join("\n")),
+        format!(
+            "| Γₓ | exact drift / V | averaged law / V | relative error |\n|---|---|---|---|\n{}\n",
+            rows.join("\n")
+        ),
     );
 
     // Work against accuracy: 20 periods from the exact periodic state.

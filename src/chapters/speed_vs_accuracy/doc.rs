@@ -29,7 +29,7 @@ pub struct Doc {
     pub zeno_plate_factor: f64,
     /// DOP853 needs fewer right-hand sides than DP5 at 1e-10 (`true`).
     pub dop853_cheaper: bool,
-    /// The flight-map law's coefficient 1/2 in v = b g t_f^2/(2 n T), scaled (1).
+    /// The flight-map law's coefficient 1/2 in v = b mu g t_f^2/(2 n T), scaled (1).
     pub flight_map_factor: f64,
     /// The viscous law's c = 2 mu m g/(pi V), scaled (1).
     pub viscous_factor: f64,
@@ -138,7 +138,7 @@ pub fn mutations() -> Vec<Mutation> {
         ),
         (
             "flight-map-economy",
-            "v = b g t_f^2/(2 n T) -> 1.1 x",
+            "v = b mu g t_f^2/(2 n T) -> 1.1 x",
             |d| d.flight_map_factor = 1.1,
         ),
         ("viscous-law-economy", "c = 2 mu m g/(pi V) -> 1.1 x", |d| {

@@ -107,8 +107,8 @@ pub fn economy(
         "relative error of the drift",
     )
     .log_y()
-    .series(Series::points("flight map b g t_f² / (2nT)", map).color(0))
-    .series(Series::points("μ_eff law b δ_z ω", law).color(1))
+    .series(Series::points("flight map bμg t_f² / (2nT)", map).color(0))
+    .series(Series::points("μ_eff law bμ δ_z ω", law).color(1))
     .hline(0.01, "1 %");
     let arcsin: Vec<(f64, f64)> = horizontal.iter().map(|r| (r.0, rel(r.2, r.1))).collect();
     let viscous: Vec<(f64, f64)> = horizontal.iter().map(|r| (r.0, rel(r.3, r.1))).collect();

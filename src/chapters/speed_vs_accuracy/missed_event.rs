@@ -75,7 +75,7 @@ fn judge(runs: &[Seen], reference: &Seen, search: &str) -> Claim {
         "stick-no-missed-event",
         "4, 5",
         &format!(
-            "With the {search} event search, both Dormand-Prince pairs at every rtol from 1e-8 to 1e-12 give the phase sequence of the reference (DP5 at 1e-13, certified) on the authors' stick at g = 9.81 m/s^2 over 0.4 s, whose ninth hop starts with a lift-off shorter than one step; the computed value lists the runs that differ"
+            "With the {search} event search, both Dormand-Prince pairs at every rtol from 1e-8 to 1e-12 give the phase sequence of the reference (DP5 at 1e-13, certified) on the authors' stick at g = 9.81 m/s² over 0.4 s, whose ninth hop starts with a lift-off shorter than one step; the computed value lists the runs that differ"
         ),
         json!([]),
         json!(differing),

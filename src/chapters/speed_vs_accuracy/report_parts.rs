@@ -166,12 +166,12 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     // Two decades of tolerance (1e-10 -> 1e-12) with tolerance-proportional control
     // promise a 100x smaller error; the 1e-11 middle point is reported, not ordered: at
     // these tolerances the signed error is a sum of event terms of both signs, and one
-    // decade can land on a cancellation (measured: --bias 0.36 gives 9.8e-11, 1.3e-9,
-    // 5.4e-11). Differences under the rounding floor F carry no order.
+    // decade can land on a cancellation (measured: --bias 0.9, F = 0.36 m g, gives
+    // 9.8e-11, 1.3e-9, 5.4e-11). Differences under the rounding floor F carry no order.
     r.claim(Claim::exact(
         "reference-convergence-study",
         "numerics",
-        "Integrated Dormand-Prince approaches the reference as the tolerance tightens: err(1e-12) <= err(1e-10) + F, with F the rounding floor of the drift (256 ulps of t per event times the relative-velocity jump 2 Gamma g / omega, over the window)",
+        "Integrated Dormand-Prince approaches the reference as the tolerance tightens: err(1e-12) <= err(1e-10) + F, with F the rounding floor of the drift (256 ulps of t per event times the relative-velocity jump 2 Γ g / ω, over the window)",
         true,
         if doc.tightening_helps {
             rel(d12) <= rel(d10) + floor
@@ -198,7 +198,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     // the default benchmark scene whatever the flags (the order a method shows on an
     // observable with events depends on the scene: near Gamma = 1 or at small mu the
     // events crowd and the asymptotic range starts beyond the ladder).
-    let bench = BlockScene::new(30.0, 2.5, 0.4, 0.02, g);
+    let bench = BlockScene::new(30.0, 2.5, 0.4, 0.05, g);
     let order_points: Vec<WpPoint> = if bench == scene {
         points.clone()
     } else {
@@ -250,7 +250,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
         r.claim(Claim::judged(
             &format!("{label}-order"),
             "numerics",
-            &format!("{name} converges on the block drift of the default scene (Gamma = 2.5, b = 0.02, mu = 0.4) at least at first order: every error of the ladder is below 2 e(h0) (h/h0)^1, h0 = T/20 (computed: the largest ratio e(h) / (e(h0) (h/h0))). A lower bound only: the signed error changes sign and course with h on this observable (chapter 7's text), so no order is fitted here; the orders are fitted on the stick."),
+            &format!("{name} converges on the block drift of the default scene (Γ = 2.5, b = 0.05, μ = 0.4) at least at first order: every error of the ladder is below 2 e(h0) (h/h0)^1, h0 = T/20 (computed: the largest ratio e(h) / (e(h0) (h/h0))). A lower bound only: the signed error changes sign and course with h on this observable (chapter 7's text), so no order is fitted here; the orders are fitted on the stick."),
             format!("<= 2 ({n} step sizes)"),
             worst,
             "factor 2 on a first-order envelope",
@@ -286,7 +286,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
             fails.push(Failure {
                 method: format!("{}-fixed", m.name()),
                 scene: format!(
-                    "stick flight relaxation, tau = gamma/k = 1 ms, h = T/10 = {:.1} tau",
+                    "stick flight relaxation, τ = γ/k = 1 ms, h = T/10 = {:.1} τ",
                     st.h_over_tau
                 ),
                 symptom: match e {
@@ -308,7 +308,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     r.claim(Claim::exact(
         "stiff-relaxation-explicit-blowup",
         "4 (C.3)",
-        "On the flight relaxation theta' = -(k/gamma)(theta - theta_0) (k/gamma = 1000/s), fixed steps of T/10 blow up for Euler and RK4 (h/tau beyond 2 and 2.785) while adaptive Dormand-Prince stays within 1e-6 rad of the closed form",
+        "On the flight relaxation θ' = -(k/γ)(θ - θ₀) (k/γ = 1000/s), fixed steps of T/10 blow up for Euler and RK4 (h/τ beyond 2 and 2.785) while adaptive Dormand-Prince stays within 1e-6 rad of the closed form",
         true,
         stiff_ok,
     ).with_check(Check::ClosedForm));
@@ -358,7 +358,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     if z.events_chattering > 2 * z.events_sticking {
         fails.push(Failure {
             method: "event-driven without a rest threshold".into(),
-            scene: format!("block on the plate, e = {e}, Gamma = {gamma_zeno}"),
+            scene: format!("block on the plate, e = {e}, Γ = {gamma_zeno}"),
             symptom: format!(
                 "chattering: {} events in {} periods where the sticking transition needs {}; each cascade ends only by round-off",
                 z.events_chattering,
@@ -396,7 +396,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     r.claim(Claim::close(
         "zeno-plate-resolved-two-ways",
         "3.1.2",
-        "On the chattering plate (Gamma = 1.2), the sticking transition (event-driven) and Moreau-Jean give the same drift (relative difference)",
+        "On the chattering plate (Γ = 1.2), the sticking transition (event-driven) and Moreau-Jean give the same drift (relative difference)",
         0.0,
         ((z.drift_mj_mps - doc.zeno_plate_factor * z.drift_sticking_mps)
             / z.drift_sticking_mps)
@@ -468,10 +468,10 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
         json!({"flight_map": map_ok, "mu_eff_law": law_ok, "of": plan.gammas.len()}),
     );
     // The claim is checked inside the limit it names, whatever the flags: Gamma = 2.5
-    // (a period-one sticking orbit) and b = mu/80. The flight map neglects the slip
-    // before takeoff, whose share of the drift scales with b/mu (measured 0.4 % at
-    // b/mu = 1/20): at b/mu = 1/80 it is well under 1 %.
-    let lim = BlockScene::new(args.frequency_hz, 2.5, args.mu, args.mu / 80.0, g);
+    // (a period-one sticking orbit) and b = 1/80. The flight map neglects the slip
+    // before takeoff, whose share of the drift scales with b = F/(mu m g) (measured
+    // 0.4 % at b = 1/20): at b = 1/80 it is well under 1 %.
+    let lim = BlockScene::new(args.frequency_hz, 2.5, args.mu, 1.0 / 80.0, g);
     let lim_exact = drift_block_model(&lim, &Options::default(), true, 64, tr, cy).value;
     let lim_err = flight_map_drift(&lim).map_or(f64::NAN, |m| {
         ((doc.flight_map_factor * m - lim_exact) / lim_exact).abs()
@@ -479,7 +479,7 @@ pub fn build(args: &Args, ctx: &Context, r: &mut ChapterReport, doc: &Doc) -> Re
     r.claim(Claim::judged(
         "flight-map-economy",
         "3.1.2",
-        "Approximation: the flight-map law v_ave = b g t_f^2/(2 n T) (sticking landings, no slip before takeoff) reproduces the exact drift within 1 % in the limit b << mu of period-n sticking orbits; at Gamma = 2.5, b = mu/80 (relative error)",
+        "Approximation: the flight-map law v_ave = b μ g t_f²/(2 n T) (sticking landings, no slip before takeoff) reproduces the exact drift within 1 % in the limit b << 1 of period-n sticking orbits; at Γ = 2.5, b = 1/80 (relative error)",
         0.0,
         lim_err,
         0.01,

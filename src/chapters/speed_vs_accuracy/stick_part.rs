@@ -169,7 +169,7 @@ pub fn build(
     r.claim(Claim::exact(
         "stick-dop853-cheaper-at-1e-10",
         "4, 5",
-        &format!("On the authors' scene (main_rod.m of toshankarghosh/toothpicks) with g = {AUTHORS_G_MPS2} m/s^2 and {cycles} drive cycles from the static angle, and on it only (measured on this scene whatever --g-mps2): at rtol = atol = 1e-10 Dormand-Prince 8(5,3) reaches the stick's mean speed within 1e-9 of the reference with fewer right-hand-side evaluations than Dormand-Prince 5(4) (the stick chapter's default integrator rests on this)"),
+        &format!("On the authors' scene (main_rod.m of toshankarghosh/toothpicks) with g = {AUTHORS_G_MPS2} m/s² and {cycles} drive cycles from the static angle, and on it only (measured on this scene whatever --g-mps2): at rtol = atol = 1e-10 Dormand-Prince 8(5,3) reaches the stick's mean speed within 1e-9 of the reference with fewer right-hand-side evaluations than Dormand-Prince 5(4) (the stick chapter's default integrator rests on this)"),
         true,
         e5 <= 1e-9 && e8 <= 1e-9 && cheaper,
     ).with_check(Check::SecondMethod));

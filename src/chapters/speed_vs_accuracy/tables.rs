@@ -30,7 +30,7 @@ pub fn tables(r: &mut ChapterReport, points: &[WpPoint], fails: &[Failure], swee
     r.table("failures", t);
     let rows: Vec<LawRow> = sweep.iter().map(|r| (r.0, r.1, r.2, Some(r.3))).collect();
     let t = law_table(
-        "| Gamma | exact drift (m/s) | flight map: error | mu_eff law: error |",
+        "| Γ | exact drift (m/s) | flight map: error | μ_eff law: error |",
         &rows,
         12,
         "no sticking orbit",
@@ -61,7 +61,7 @@ pub fn horizontal(r: &mut ChapterReport, rows: &[super::economy::HorizontalRow])
         .map(|r| (r.0, r.1, Some(r.2), Some(r.3)))
         .collect();
     let t = law_table(
-        "| K = delta omega^2/(mu g) | exact drift (m/s) | arcsin law: error | viscous law: error |",
+        "| Γₓ = δₓ ω²/(μ g) | exact drift (m/s) | arcsin law: error | viscous law: error |",
         &rows,
         8,
         "none",

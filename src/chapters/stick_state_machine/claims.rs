@@ -87,7 +87,7 @@ fn equations(d: &Doc, c: &Ctx) -> Vec<Claim> {
     // C.3, C.5: DP5 at rtol 1e-12 over 20 ms: its error is ~1e-13 m; 1e-9 m leaves room
     // for 1e4 times that and is 1e-4 of the smallest change a 10 % coefficient error makes
     let fe = flight_error(pa, d.flight_rate, d.flight_gravity);
-    v.push(Claim::close("c3-c5-flight-closed-form", "C.3, C.5", "In flight P is ballistic (C.5) and theta relaxes as theta' = -(k/gamma)(theta - theta_0) (C.3): the workbook's closed form equals a Dormand-Prince integration (rtol 1e-12) of the document's equations, every 0.5 ms over 20 ms (m or rad).", 0.0, fe, 1e-9).with_check(Check::SecondMethod));
+    v.push(Claim::close("c3-c5-flight-closed-form", "C.3, C.5", "In flight P is ballistic (C.5) and θ relaxes as θ' = -(k/γ)(θ - θ₀) (C.3): the workbook's closed form equals a Dormand-Prince integration (rtol 1e-12) of the document's equations, every 0.5 ms over 20 ms (m or rad).", 0.0, fe, 1e-9).with_check(Check::SecondMethod));
     // C.3's third row in contact: the spring-damper torque balances a contact moment
     let rate = pa.stiffness_nm_per_rad / pa.damping_nms_per_rad;
     let (mut flight_res, mut contact_res) = (0.0f64, 0.0f64);
@@ -105,7 +105,7 @@ fn equations(d: &Doc, c: &Ctx) -> Vec<Claim> {
     // in flight the closed form gives theta' exactly (rounding of k/gamma d: 1e-12 rad/s)
     let flight_ok = flight_res <= 1e-9;
     let general_holds = flight_ok && contact_res <= 1e-9;
-    v.push(rule("c3-relaxation-flight-only", "C.3", "As printed, C.3 lists theta' = -(k/gamma)(theta - theta_0) among the general kinematics of C (beside C.1, C.2, C.4). It is the flight's moment balance (C.8 with F = 0) and holds only in flight; in contact the plate's moment changes theta'. Largest |theta' + (k/gamma)(theta - theta_0)| (rad/s) at contact samples (flight samples: below 1e-9).", json!(0.0), json!(contact_res), "1e-9 rad/s", if d.c3_general { general_holds } else { flight_ok }, flight_ok && contact_res > 1e-9, Check::Simulation));
+    v.push(rule("c3-relaxation-flight-only", "C.3", "As printed, C.3 lists θ' = -(k/γ)(θ - θ₀) among the general kinematics of C (beside C.1, C.2, C.4). It is the flight's moment balance (C.8 with F = 0) and holds only in flight; in contact the plate's moment changes θ'. Largest |θ' + (k/γ)(θ - θ₀)| (rad/s) at contact samples (flight samples: below 1e-9).", json!(0.0), json!(contact_res), "1e-9 rad/s", if d.c3_general { general_holds } else { flight_ok }, flight_ok && contact_res > 1e-9, Check::Simulation));
     let _ = rate;
     v.extend(pivot_claims(d, c));
     v.extend(slide_claims(d, c));
@@ -122,7 +122,7 @@ fn pivot_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
     let e2 = pendulum_error(pa, &ev.pendulum[1], 2.0 * PENDULUM_EPS, d.c6_spring);
     let ratio = e2 / e1.max(1e-300);
     // the neglected terms are O(eps^2): ratio 4 for doubled eps; 1e-7 rad is ~10 eps^2
-    v.push(Claim::judged("c6-pivot-small-motion", "C.6", "Pivot: m L^2 theta'' = (g + z_s'') m L sin(theta) - k(theta - theta_0) - gamma theta'. On a still plate, small motions about the static angle follow the damped linearised pendulum with W0^2 = (k - m g L cos(theta_f))/(m L^2) taken from C.6; the difference is second order in the amplitude (ratio for 2 eps vs eps near 4, eps = 1e-4 rad).", 4.0, ratio, "|ratio - 4| <= 0.5 and error(eps) <= 1e-7 rad", (ratio - 4.0).abs() <= 0.5 && e1 <= 1e-7, Verdict::Confirmed).with_check(Check::ClosedForm));
+    v.push(Claim::judged("c6-pivot-small-motion", "C.6", "Pivot: m L² θ'' = (g + z_s'') m L sin(θ) - k(θ - θ₀) - γ θ'. On a still plate, small motions about the static angle follow the damped linearised pendulum with W0² = (k - m g L cos(θ_f))/(m L²) taken from C.6; the difference is second order in the amplitude (ratio for amplitudes 2A vs A near 4, A = 1e-4 rad).", 4.0, ratio, "|ratio - 4| <= 0.5 and error(A) <= 1e-7 rad", (ratio - 4.0).abs() <= 0.5 && e1 <= 1e-7, Verdict::Confirmed).with_check(Check::ClosedForm));
     // C.6 into C.7, F = m (a_P + g e_z), then the moment balance C.8 about P
     let mut worst = 0.0f64;
     let mut scale = 0.0f64;
@@ -155,7 +155,7 @@ fn pivot_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
     let tol = 1e-9 * scale;
     v.push(Claim::judged("c6-c7-c8-balance", "C.6, C.7, C.8", "C.6 (with the plate term +z_s'') put into C.7 gives the force F = m(a_P + g e_z) that satisfies the moment balance about P, C.8, at every pivot sample of both scenes on the vibrating plate. Largest |C.8 residual| (N m).", 0.0, worst, tol, worst <= tol && scale > 0.0, Verdict::Confirmed).with_check(Check::ClosedForm));
     let holds_conserved = h_rate <= 1e-9;
-    v.push(rule("c6-balance-not-conservation", "4.2", "As printed: C.6 follows \"from the conservation of angular momentum (m L^2 theta'' = H/C)\" about C. Correct: it is the angular-momentum *balance* about C, a point accelerating with the plate: the torque of gravity plus the pseudo-force -m z_s'' (hence g + z_s''), spring and damper change H = m L^2 theta'. Largest |dH/dt| / (m g L) at pivot samples.", json!(0.0), json!(h_rate), "1e-9 (conserved)", if d.c6_conservation { holds_conserved } else { !holds_conserved }, !holds_conserved, Check::Simulation));
+    v.push(rule("c6-balance-not-conservation", "4.2", "As printed: C.6 follows \"from the conservation of angular momentum (m L² θ'' = H/C)\" about C. Correct: it is the angular-momentum *balance* about C, a point accelerating with the plate: the torque of gravity plus the pseudo-force -m z_s'' (hence g + z_s''), spring and damper change H = m L² θ'. Largest |dH/dt| / (m g L) at pivot samples.", json!(0.0), json!(h_rate), "1e-9 (conserved)", if d.c6_conservation { holds_conserved } else { !holds_conserved }, !holds_conserved, Check::Simulation));
     v
 }
 
@@ -205,14 +205,14 @@ fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
     }
     let tol8 = 1e-9 * scale;
     // C.4 residual relative to g + |z_s''|: roundings of terms near 1/sin: 1e-9
-    v.push(Claim::judged("c9-c14-slide-equations", "C.8 to C.14", "The slides: F_z from C.9 (left, L(-mu cos + sin)) and C.11 (right, L(mu cos + sin)) with F_x = +-mu F_z satisfy the moment balance C.8; with C.10/C.13 for P and C.14 for theta'' the foot keeps to the plate (C.4 gives z_c'' = z_s''). Largest C.8 residual (N m) at the slide samples of both scenes; the C.4 residual (relative) must stay below 1e-9 too.", 0.0, c8, tol8, n > 0 && c8 <= tol8 && c4 <= 1e-9, Verdict::Confirmed).with_check(Check::ClosedForm));
+    v.push(Claim::judged("c9-c14-slide-equations", "C.8 to C.14", "The slides: F_z from C.9 (left, L(-μ cos + sin)) and C.11 (right, L(μ cos + sin)) with F_x = +-μ F_z satisfy the moment balance C.8; with C.10/C.13 for P and C.14 for θ'' the foot keeps to the plate (C.4 gives z_c'' = z_s''). Largest C.8 residual (N m) at the slide samples of both scenes; the C.4 residual (relative) must stay below 1e-9 too.", 0.0, c8, tol8, n > 0 && c8 <= tol8 && c4 <= 1e-9, Verdict::Confirmed).with_check(Check::ClosedForm));
     let ratio = if nl > 0 {
         (vx_rms / vz_rms.max(1e-300)).sqrt()
     } else {
         0.0
     };
     let vertical = ratio <= 1e-3;
-    v.push(rule("s43-p-moves-vertically", "4.3", "As printed (Sliding Left): \"C is constrained to be on the platform but moves to the left while the point P moves down vertically\". Correct: P is accelerated sideways by the friction force, x_p'' = mu F_z/m (C.10): P does not move vertically. RMS of x_p' over RMS of z_p' at the slide-left samples (vertical: below 1e-3).", json!(0.0), json!(ratio), "1e-3", if d.s43_p_vertical { vertical } else { !vertical }, nl > 0 && !vertical, Check::Simulation));
+    v.push(rule("s43-p-moves-vertically", "4.3", "As printed (Sliding Left): \"C is constrained to be on the platform but moves to the left while the point P moves down vertically\". Correct: P is accelerated sideways by the friction force, x_p'' = μ F_z/m (C.10): P does not move vertically. RMS of x_p' over RMS of z_p' at the slide-left samples (vertical: below 1e-3).", json!(0.0), json!(ratio), "1e-3", if d.s43_p_vertical { vertical } else { !vertical }, nl > 0 && !vertical, Check::Simulation));
     v
 }
 
@@ -223,7 +223,7 @@ fn collision_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
     let mut v = Vec::new();
     let both = [&ev.authors, &ev.jamming, c.main];
     let sing = both.iter().filter(|s| matches!(&s.outcome, crate::physics::stick::run::StickOutcome::Invalid(w) if w.contains("C.14"))).count();
-    v.push(Claim::judged("c14-singular-at-vertical", "C.14", "C.14 divides by sin(theta): the slides are undefined with the rod vertical. The workbook stops such a run as invalid (reason given); none of the scenes' runs reaches it.", 0, sing as u64, "exact", sing == 0, Verdict::Confirmed));
+    v.push(Claim::judged("c14-singular-at-vertical", "C.14", "C.14 divides by sin(θ): the slides are undefined with the rod vertical. The workbook stops such a run as invalid (reason given); none of the scenes' runs reaches it.", 0, sing as u64, "exact", sing == 0, Verdict::Confirmed));
     v.extend(rule_claims::c15_claims(d, c));
     let dev = ev
         .authors
@@ -239,7 +239,7 @@ fn collision_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
         .fold(0.0, f64::max);
     // the deviation is (theta_takeoff - theta_0) exp(-k t_f/gamma): below 1e-3 rad needs
     // flights of a few gamma/k; 1e-3 rad is 0.1 % of the lever's angle
-    v.push(Claim::judged("c15-theta-reset", "4.4", "\"After collision theta = theta_0\", with r_P/C evaluated at theta_0. Holds in the limit of flights much longer than the relaxation time gamma/k (1 ms here): the angle at landing differs from theta_0 by (theta_takeoff - theta_0) exp(-k t_flight/gamma). Largest |theta_landing - theta_0| (rad) of the evidence runs. The workbook uses the actual angle (--collision-angle actual) and offers the reset.", 0.0, dev, "1e-3 rad", dev <= 1e-3 && ev.authors.hops > 0, Verdict::Approximation).with_check(Check::Simulation));
+    v.push(Claim::judged("c15-theta-reset", "4.4", "\"After collision θ = θ₀\", with r_P/C evaluated at θ₀. Holds in the limit of flights much longer than the relaxation time γ/k (1 ms here): the angle at landing differs from θ₀ by (θ_takeoff - θ₀) exp(-k t_flight/γ). Largest |θ_landing - θ₀| (rad) of the evidence runs. The workbook uses the actual angle (--collision-angle actual) and offers the reset.", 0.0, dev, "1e-3 rad", dev <= 1e-3 && ev.authors.hops > 0, Verdict::Approximation).with_check(Check::Simulation));
     let _ = CollisionAngle::Actual;
     let _ = VXC;
     v
@@ -278,7 +278,7 @@ fn table1(d: &Doc, c: &Ctx) -> Vec<Claim> {
     let ps = vmax(&|s| s.violations.pivot_slip_mps);
     // forces are located to the event tolerance and integrated to rtol: 1e-10 of the
     // weight m g is far above both (measured ~1e-12)
-    v.push(Claim::judged("t1-pivot", "Table 1", "Pivot: h_c = 0, v_x = 0, F_z >= 0, |F_x| <= mu F_z. Largest violation at accepted pivot steps, in units of the weight m g (the simulator's guards enforce it).", 0.0, nv.max(cv), 1e-10, nv.max(cv) <= 1e-10 && ps == 0.0, Verdict::Confirmed));
+    v.push(Claim::judged("t1-pivot", "Table 1", "Pivot: h_c = 0, v_x = 0, F_z >= 0, |F_x| <= μ F_z. Largest violation at accepted pivot steps, in units of the weight m g (the simulator's guards enforce it).", 0.0, nv.max(cv), 1e-10, nv.max(cv) <= 1e-10 && ps == 0.0, Verdict::Confirmed));
     // Table 1's v_x signs against the friction power: F_x = sigma mu F_z dissipates
     // (-F_x v_x >= 0) only if v_x has the sign -sigma; the simulated slides are checked
     for (i, id, name, sign) in [
@@ -301,7 +301,7 @@ fn table1(d: &Doc, c: &Ctx) -> Vec<Claim> {
             }
         }
         let printed = if sign < 0.0 { "v_x < 0" } else { "v_x > 0" };
-        v.push(rule(id, "Table 1", &format!("{name}: h_c = 0, {printed} as printed, F_z >= 0, F_x = {} mu F_z. With that F_x the friction power -F_x v_x is a loss only if v_x {}: the fraction of simulated {name} samples with the printed sign of v_x (to 1e-9 m/s) must be 1.", if i == 0 { "+" } else { "-" }, if i == 0 { "< 0" } else { "> 0" }), json!(1.0), json!(frac(ok_doc, n)), "exact", n > 0 && ok_doc == n, n > 0 && ok_fix == n, Check::Simulation));
+        v.push(rule(id, "Table 1", &format!("{name}: h_c = 0, {printed} as printed, F_z >= 0, F_x = {} μ F_z. With that F_x the friction power -F_x v_x is a loss only if v_x {}: the fraction of simulated {name} samples with the printed sign of v_x (to 1e-9 m/s) must be 1.", if i == 0 { "+" } else { "-" }, if i == 0 { "< 0" } else { "> 0" }), json!(1.0), json!(frac(ok_doc, n)), "exact", n > 0 && ok_doc == n, n > 0 && ok_fix == n, Check::Simulation));
     }
     // Energy closure: every accepted step commits a local error below rtol relative to
     // the state's scale plus atol absolute (rtol = atol = 1e-10 J on the energy

@@ -60,7 +60,7 @@ pub fn c15_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
         worst = worst.max((om - ne.omega_after).abs() / (ne.omega_after.abs() + 1.0));
     }
     // the elimination and C.15 each round a few times: 1e-12 relative is 1e3 ulps
-    v.push(Claim::judged("c15-angular-momentum", "C.15", "The collision map theta'+ = -(r_P/C x (v_p - z_s' k))/L^2 (lever at the landing angle) equals the rate after the impact from the Newton-Euler impulse equations (impulse along the massless rod, C stuck on the plate), solved as a linear system at every landing of both evidence runs and their mirror images. Largest |difference| / (|theta'+| + 1 rad/s).", 0.0, worst, 1e-12, !states.is_empty() && worst <= 1e-12, Verdict::Confirmed).with_check(Check::SecondMethod));
+    v.push(Claim::judged("c15-angular-momentum", "C.15", "The collision map θ'+ = -(r_P/C x (v_p - z_s' k))/L² (lever at the landing angle) equals the rate after the impact from the Newton-Euler impulse equations (impulse along the massless rod, C stuck on the plate), solved as a linear system at every landing of both evidence runs and their mirror images. Largest |difference| / (|θ'+| + 1 rad/s).", 0.0, worst, 1e-12, !states.is_empty() && worst <= 1e-12, Verdict::Confirmed).with_check(Check::SecondMethod));
     // the axis: r = (L sin, 0, L cos), u = (u_x, 0, u_z): r x u = (0, r_z u_x - r_x u_z, 0)
     let (mut off, mut n) = (0.0f64, 0usize);
     for (m, t, y, _) in &states {
@@ -127,14 +127,14 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
         (
             "a1-slide-right-test",
             d.a1_right,
-            "mu F_z + F_x > 0 -> SLIDE RIGHT",
-            "mu F_z + F_x < 0 (F_x below the cone)",
+            "μ F_z + F_x > 0 -> SLIDE RIGHT",
+            "μ F_z + F_x < 0 (F_x below the cone)",
         ),
         (
             "a1-slide-left-test",
             d.a1_left,
-            "mu F_z - F_x > 0 -> SLIDE LEFT",
-            "mu F_z - F_x < 0 (F_x above the cone)",
+            "μ F_z - F_x > 0 -> SLIDE LEFT",
+            "μ F_z - F_x < 0 (F_x above the cone)",
         ),
     ] {
         let fires = ps.iter().filter(|s| test.fires(s.0.p.mu, s.3, s.4)).count();
@@ -167,7 +167,7 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
     }
     // closed form and pivot_eval agree to rounding of m g ~ 10 N: 1e-12 N
     let pivot_ok = dev <= 1e-12 && fz_min > 0.0;
-    v.push(rule("a1-vertical-flight", "Alg. 1", "As printed: with |theta| = 0 (and mu F_z + F_x > 0) the HINGE goes to FLIGHT. Correct: a vertical stick on a plate is an ordinary pivot: F_z = m (g + z_s'') > 0 and F_x = 0 while the plate's acceleration stays below g; only the slides are singular there (C.14). Smallest pivot normal force (N) over a cycle of a vertical stick on a plate at Gamma = 0.5 (closed form and pivot equations agree to 1e-12 N).", json!("F_z > 0: pivot"), json!(fz_min), "sign", !d.a1_vertical_flight && pivot_ok, pivot_ok, Check::ClosedForm));
+    v.push(rule("a1-vertical-flight", "Alg. 1", "As printed: with |θ| = 0 (and μ F_z + F_x > 0) the HINGE goes to FLIGHT. Correct: a vertical stick on a plate is an ordinary pivot: F_z = m (g + z_s'') > 0 and F_x = 0 while the plate's acceleration stays below g; only the slides are singular there (C.14). Smallest pivot normal force (N) over a cycle of a vertical stick on a plate at Γ = 0.5 (closed form and pivot equations agree to 1e-12 N).", json!("F_z > 0: pivot"), json!(fz_min), "sign", !d.a1_vertical_flight && pivot_ok, pivot_ok, Check::ClosedForm));
     let (mut fires, mut fires_fix, mut total) = (0usize, 0usize, 0usize);
     for (run, q) in c.runs() {
         let m = StickModel::new(*q);
@@ -183,7 +183,7 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
             fires_fix += usize::from(zp - zs < 0.0);
         }
     }
-    v.push(rule("a1-abort-heights", "Alg. 1-4", "As printed: ABORT if z_c < 0 or z_p < 0. Correct: heights count from the plate, and z_s = delta cos(omega t) is negative half the time: the stick has fallen when z_p - z_s <= 0 (|theta| >= 90 deg). Fraction of contact samples of the (completed) evidence runs at which the stated test fires.", json!(0.0), json!(frac(fires, total)), "0", total > 0 && fires == 0, total > 0 && fires_fix == 0, Check::Simulation));
+    v.push(rule("a1-abort-heights", "Alg. 1-4", "As printed: ABORT if z_c < 0 or z_p < 0. Correct: heights count from the plate, and z_s = δ cos(ω t) is negative half the time: the stick has fallen when z_p - z_s <= 0 (|θ| >= 90 deg). Fraction of contact samples of the (completed) evidence runs at which the stated test fires.", json!(0.0), json!(frac(fires, total)), "0", total > 0 && fires == 0, total > 0 && fires_fix == 0, Check::Simulation));
     v
 }
 
@@ -235,7 +235,7 @@ fn alg1_on_violation(d: &Doc, c: &Ctx) -> Claim {
             n += 1;
         }
     }
-    rule("a1-exits", "Alg. 1, Table 1", "Reading: Table 1's caption (HINGE runs when the reaction leaves the cone or turns tensile). Algorithm 1 executed as printed, in order, the last assignment winning, at every pivot exit of both scenes: it must choose the mode the contact conditions chose. The tests are read at the switch state to the event accuracy tol = 1e-9 m g (that state lies past the edge by at most tol): v < tol counts as < 0, v > tol as > 0. As printed, at an exit through the cone's edge F_x = mu F_z the reversed slide-right test and 'F_z > 0 -> FLIGHT' both fire, and FLIGHT wins. Exits at which the printed algorithm agrees (of all exits).", json!(n), json!(agree), "exact", n > 0 && agree == n, n > 0 && agree_fix == n, Check::LiteralExecution)
+    rule("a1-exits", "Alg. 1, Table 1", "Reading: Table 1's caption (HINGE runs when the reaction leaves the cone or turns tensile). Algorithm 1 executed as printed, in order, the last assignment winning, at every pivot exit of both scenes: it must choose the mode the contact conditions chose. The tests are read at the switch state to the event accuracy tol = 1e-9 m g (that state lies past the edge by at most tol): v < tol counts as < 0, v > tol as > 0. As printed, at an exit through the cone's edge F_x = μ F_z the reversed slide-right test and 'F_z > 0 -> FLIGHT' both fire, and FLIGHT wins. Exits at which the printed algorithm agrees (of all exits).", json!(n), json!(agree), "exact", n > 0 && agree == n, n > 0 && agree_fix == n, Check::LiteralExecution)
 }
 
 fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
@@ -264,7 +264,7 @@ fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
         dis_fix += usize::from((th.tan().abs() <= m.p.mu) != in_cone);
     }
     let n = states.len();
-    v.push(rule("a2-tan-test", "Alg. 2", "As printed: a sticking impact if tan(theta) <= mu. Correct: |tan(theta)| <= mu: the Newton-Euler impulse lies along the rod, |J_x|/|J_z| = |tan(theta)|. Landings of both scenes and their mirror images (the scenes lean to +x only) at which the stated test disagrees with 'the Newton-Euler impulse lies inside the cone'.", json!(0), json!(dis), "exact", n > 0 && dis == 0, n > 0 && dis_fix == 0, Check::SecondMethod));
+    v.push(rule("a2-tan-test", "Alg. 2", "As printed: a sticking impact if tan(θ) <= μ. Correct: |tan(θ)| <= μ: the Newton-Euler impulse lies along the rod, |J_x|/|J_z| = |tan(θ)|. Landings of both scenes and their mirror images (the scenes lean to +x only) at which the stated test disagrees with 'the Newton-Euler impulse lies inside the cone'.", json!(0), json!(dis), "exact", n > 0 && dis == 0, n > 0 && dis_fix == 0, Check::SecondMethod));
     // the impulse branch against the sign of the Newton-Euler impulse, at sticking candidates
     let (mut dis, mut dis_fix, mut dis_th, mut dis_th_fix, mut k) = (0, 0, 0, 0, 0usize);
     for (m, t, y, _) in states.iter().filter(|s| s.2[TH].tan().abs() <= s.0.p.mu) {
@@ -293,8 +293,8 @@ fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
     } else {
         "r_CP read from P to C"
     };
-    v.push(rule("a2-shortening-branch", "Alg. 2", &format!("As printed: if (x_p' i + (z_p' - z_s') k) . r_CP < 0 compute the hinge forces without an impulse, else (\"rod not shortening\") apply the angular-momentum map. Reading: {reading}. From C to P the branches are swapped: the Newton-Euler impulse is compressive only when the rod shortens (product < 0). Read from P to C the printed branches are right and only the comment \"rod not shortening\" is wrong. Sticking candidates (|tan| <= mu, both scenes and mirrors) at which the branch disagrees with the sign of the Newton-Euler impulse."), json!(0), json!(dis), "exact", k > 0 && dis == 0, k > 0 && dis_fix == 0, Check::SecondMethod));
-    v.push(rule("a2-theta-dot-sign", "Alg. 2", &format!("As printed: theta' = (r_CP x (v_p - v_s))/L^2, without the minus sign of C.15. Reading: {reading}. From C to P it has the wrong sign (C.15 and the Newton-Euler impulse give -(r_CP x (v_p - v_s))/L^2); from P to C it agrees. Sticking candidates at which the stated theta' differs from the Newton-Euler rate (1e-12 relative)."), json!(0), json!(dis_th), "exact", k > 0 && dis_th == 0, k > 0 && dis_th_fix == 0, Check::SecondMethod));
+    v.push(rule("a2-shortening-branch", "Alg. 2", &format!("As printed: if (x_p' i + (z_p' - z_s') k) . r_CP < 0 compute the hinge forces without an impulse, else (\"rod not shortening\") apply the angular-momentum map. Reading: {reading}. From C to P the branches are swapped: the Newton-Euler impulse is compressive only when the rod shortens (product < 0). Read from P to C the printed branches are right and only the comment \"rod not shortening\" is wrong. Sticking candidates (|tan| <= μ, both scenes and mirrors) at which the branch disagrees with the sign of the Newton-Euler impulse."), json!(0), json!(dis), "exact", k > 0 && dis == 0, k > 0 && dis_fix == 0, Check::SecondMethod));
+    v.push(rule("a2-theta-dot-sign", "Alg. 2", &format!("As printed: θ' = (r_CP x (v_p - v_s))/L², without the minus sign of C.15. Reading: {reading}. From C to P it has the wrong sign (C.15 and the Newton-Euler impulse give -(r_CP x (v_p - v_s))/L²); from P to C it agrees. Sticking candidates at which the stated θ' differs from the Newton-Euler rate (1e-12 relative)."), json!(0), json!(dis_th), "exact", k > 0 && dis_th == 0, k > 0 && dis_th_fix == 0, Check::SecondMethod));
     // after the map: "x_c' <- 0 ... if x_c' > 0 SLIDE RIGHT else SLIDE LEFT"
     let sticking: Vec<_> = c
         .runs()
@@ -347,8 +347,8 @@ fn free_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
         }
     }
     // |z_p' - z_s'| ~ 1 m/s: rounding 1e-15 m/s; 1e-12 m/s
-    v.push(rule("a2-impulse-free-landing", "Alg. 2", "tan(theta) > mu: theta' <- -(z_p' - z_s')/(L sin(theta)), x_c' <- x_p' + (z_p' - z_s') cot(theta): P keeps its velocity and C moves with the plate. Largest |z_c' - z_s'| (m/s) after the stated assignment (C.3) at the impulse-free landings of both scenes.", json!(0.0), json!(res), "1e-12 m/s", n > 0 && res <= 1e-12, n > 0 && res_fix <= 1e-12, Check::ClosedForm));
-    v.push(rule("a2-free-landing-order", "Alg. 2", "As printed (tan(theta) > mu branch): 'if x_c' > 0 then SLIDE RIGHT, x_c' <- x_p' + (z_p' - z_s') cot(theta)': read in order, the test sees C's velocity in flight, before the assignment. Correct: assign first, then choose the slide the new x_c' points to. Impulse-free landings of both scenes at which the two orders choose different slides (literal execution; Table 1's re-selection then repairs the choice at the same instant, see the table of printed rules).", json!(0), json!(order_dis), "exact", n > 0 && order_dis == 0, n > 0, Check::LiteralExecution));
+    v.push(rule("a2-impulse-free-landing", "Alg. 2", "tan(θ) > μ: θ' <- -(z_p' - z_s')/(L sin(θ)), x_c' <- x_p' + (z_p' - z_s') cot(θ): P keeps its velocity and C moves with the plate. Largest |z_c' - z_s'| (m/s) after the stated assignment (C.3) at the impulse-free landings of both scenes.", json!(0.0), json!(res), "1e-12 m/s", n > 0 && res <= 1e-12, n > 0 && res_fix <= 1e-12, Check::ClosedForm));
+    v.push(rule("a2-free-landing-order", "Alg. 2", "As printed (tan(θ) > μ branch): 'if x_c' > 0 then SLIDE RIGHT, x_c' <- x_p' + (z_p' - z_s') cot(θ)': read in order, the test sees C's velocity in flight, before the assignment. Correct: assign first, then choose the slide the new x_c' points to. Impulse-free landings of both scenes at which the two orders choose different slides (literal execution; Table 1's re-selection then repairs the choice at the same instant, see the table of printed rules).", json!(0), json!(order_dis), "exact", n > 0 && order_dis == 0, n > 0, Check::LiteralExecution));
     v
 }
 
@@ -366,7 +366,7 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
         }
     };
     let keeps = ps.iter().filter(|s| hinge(s, d.a2_hinge_lt)).count();
-    v.push(rule("a2-hinge-test", "Alg. 2", "As printed: if mu F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= mu F_z (inside the cone). Fraction of pivot samples (where the contact conditions keep the pivot) at which the stated test chooses HINGE (must be 1).", json!(1.0), json!(frac(keeps, n)), "exact", n > 0 && keeps == n, n > 0, Check::Simulation));
+    v.push(rule("a2-hinge-test", "Alg. 2", "As printed: if μ F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= μ F_z (inside the cone). Fraction of pivot samples (where the contact conditions keep the pivot) at which the stated test chooses HINGE (must be 1).", json!(1.0), json!(frac(keeps, n)), "exact", n > 0 && keeps == n, n > 0, Check::Simulation));
     // the block "if hinge then HINGE; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT", executed
     let mut ends_hinge = 0usize;
     for s in &ps {
@@ -385,7 +385,7 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
         }
         ends_hinge += usize::from(next == Some(Mode::Pivot));
     }
-    v.push(rule("a2-slide-overrides-hinge", "Alg. 2", &format!("As printed: 'if mu F_z < |F_x| then HINGE end if; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT': two separate ifs. Read as assignments (the last wins: {}), the slide choice overwrites HINGE every time; read as returns, or with the slide choice as the else branch, HINGE stands. Fraction of pivot samples at which the block, executed with the corrected hinge test, ends in HINGE (must be 1).", d.last_assert_wins), json!(1.0), json!(frac(ends_hinge, n)), "exact", n > 0 && ends_hinge == n, n > 0, Check::LiteralExecution));
+    v.push(rule("a2-slide-overrides-hinge", "Alg. 2", &format!("As printed: 'if μ F_z < |F_x| then HINGE end if; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT': two separate ifs. Read as assignments (the last wins: {}), the slide choice overwrites HINGE every time; read as returns, or with the slide choice as the else branch, HINGE stands. Fraction of pivot samples at which the block, executed with the corrected hinge test, ends in HINGE (must be 1).", d.last_assert_wins), json!(1.0), json!(frac(ends_hinge, n)), "exact", n > 0 && ends_hinge == n, n > 0, Check::LiteralExecution));
     // F_x > 0 -> SLIDE LEFT at the pivot exits of both scenes
     let (mut agree, mut exits) = (0usize, 0usize);
     for (run, q) in c.runs() {
@@ -410,7 +410,7 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
     }
     v.push(rule("a2-slide-direction", "Alg. 2", "If F_x > 0 SLIDE LEFT else SLIDE RIGHT (outside the cone): the tangential force the plate cannot supply drives C the other way. Pivot exits of both scenes at which the stated rule picks the slide the simulation's contact conditions took.", json!(exits), json!(agree), "exact", exits > 0 && agree == exits, exits > 0, Check::Simulation));
     let counter = c.ev.start_fz_n < 0.0 && c.ev.start_liftoff_hdot_mps < 0.0;
-    v.push(rule("a2-tension-flight", "Alg. 2", "As printed: a tensional ground reaction (F_z <= 0) implies FLIGHT. Correct: only if the flight moves C away from the plate; the massless rod released with a loaded spring swings C down at L sin(theta) (k/gamma)(theta - theta_0), and the contact goes on as a slide. Authors' start: pivot F_z < 0, and C's velocity relative to the plate in the flight that would follow (m/s).", json!("h_c' > 0"), json!(c.ev.start_liftoff_hdot_mps), "sign", !(d.a2_tension_flight && counter), counter, Check::Simulation));
+    v.push(rule("a2-tension-flight", "Alg. 2", "As printed: a tensional ground reaction (F_z <= 0) implies FLIGHT. Correct: only if the flight moves C away from the plate; the massless rod released with a loaded spring swings C down at L sin(θ) (k/γ)(θ - θ₀), and the contact goes on as a slide. Authors' start: pivot F_z < 0, and C's velocity relative to the plate in the flight that would follow (m/s).", json!("h_c' > 0"), json!(c.ev.start_liftoff_hdot_mps), "sign", !(d.a2_tension_flight && counter), counter, Check::Simulation));
     v
 }
 

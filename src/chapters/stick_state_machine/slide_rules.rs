@@ -73,7 +73,7 @@ pub fn alg34(d: &Doc, c: &Ctx, mode: Mode) -> Vec<Claim> {
             against += usize::from(!fires && o.fz > 0.0 && -o.fx * x.y[VXC] < 0.0);
         }
     }
-    v.push(rule(&format!("{key}-hinge-continuous"), alg, &format!("Reading: the rules run at every instant of {name}. As printed: if the hinge forces satisfy mu F_z >= |F_x| go to HINGE with x_c' <- 0, while C still slips. Correct: a slide ends when the slip stops (Table 1's v_x guard). Fraction of slipping {name} samples at which the stated test stops C without an impulse."), json!(0.0), json!(frac(hinge_slip, slipping)), "0", slipping > 0 && hinge_slip == 0, slipping > 0, Check::Simulation));
+    v.push(rule(&format!("{key}-hinge-continuous"), alg, &format!("Reading: the rules run at every instant of {name}. As printed: if the hinge forces satisfy μ F_z >= |F_x| go to HINGE with x_c' <- 0, while C still slips. Correct: a slide ends when the slip stops (Table 1's v_x guard). Fraction of slipping {name} samples at which the stated test stops C without an impulse."), json!(0.0), json!(frac(hinge_slip, slipping)), "0", slipping > 0 && hinge_slip == 0, slipping > 0, Check::Simulation));
     v.push(rule(&format!("{key}-other-slide-continuous"), alg, &format!("Reading: the rules run at every instant of {name}. As printed: when the hinge test fails go to {other_name} if its F_z > 0. Slipping {name} samples at which the stated rule switches to a slide whose friction would push along the slip (power -F_x v_x < 0)."), json!(0), json!(against), "0", slipping > 0 && against == 0, slipping > 0, Check::Simulation));
     // Table 1's reading: the algorithm runs at the slide's violations (slip stop, F_z = 0)
     // lift-offs of either slide: the two algorithms print the same lines mirrored
@@ -136,5 +136,5 @@ fn flight_fx_claim(d: &Doc, c: &Ctx, key: &str, alg: &str, name: &str) -> Claim 
     };
     // F_x = sigma mu F_z is exactly 0 at mu = 0 while F_z > 0: a slide, not a lift-off
     let counter = fx0 == 0.0 && fz0 > 0.0;
-    rule(&format!("{key}-flight-test"), alg, &format!("As printed ({name}): if F_z = 0 or F_x = 0 go to FLIGHT. Correct: F_z reaching 0 is a lift-off; F_x = 0 is not: with mu = 0 a slide has F_x = 0 and F_z > 0 throughout. Normal force (N) of a sampled slide state evaluated with mu = 0, where F_x = 0."), json!("F_z > 0"), json!(fz0), "sign", !(d.slide_flight_on_fx && counter), counter, Check::ClosedForm)
+    rule(&format!("{key}-flight-test"), alg, &format!("As printed ({name}): if F_z = 0 or F_x = 0 go to FLIGHT. Correct: F_z reaching 0 is a lift-off; F_x = 0 is not: with μ = 0 a slide has F_x = 0 and F_z > 0 throughout. Normal force (N) of a sampled slide state evaluated with μ = 0, where F_x = 0."), json!("F_z > 0"), json!(fz0), "sign", !(d.slide_flight_on_fx && counter), counter, Check::ClosedForm)
 }

@@ -239,7 +239,7 @@ pub fn threshold_claim(located: f64, bias_sign: f64, accuracy: f64) -> Claim {
         "chladni-drift-threshold",
         "3.1.2",
         &format!(
-            "A block pushed by a bias b mu m g on a vertically vibrating plate drifts once Gamma > 1 - b, not only once it flies (Gamma > 1): the normal force m g (1 - Gamma sin(omega t)) falls to m g (1 - Gamma), and friction can no longer hold the bias there. b = {BIAS}: the threshold located by bisection on the block model's mean velocity (tolerance: the last bracket's half-width)."
+            "A block pushed by a bias b μ m g on a vertically vibrating plate drifts once Γ > 1 - b, not only once it flies (Γ > 1): the normal force m g (1 - Γ sin(ω t)) falls to m g (1 - Γ), and friction can no longer hold the bias there. b = {BIAS}: the threshold located by bisection on the block model's mean velocity (tolerance: the last bracket's half-width)."
         ),
         closed,
         located,
@@ -260,13 +260,13 @@ pub fn report(r: &mut ChapterReport, c: &Chladni, bias_sign: f64) {
         "chladni-small-bias-patterns",
         "3.1.2",
         &format!(
-            "\"On a modally vibrating plate that has a large enough vibration amplitude, only a small bias would be needed to guide particles to the mode's nodes to form Chladni patterns.\" Grains (the chapter's block, mu = 0.4, e = 0) on a square plate in the mode cos(pi x/L) cos(3 pi y/L) + cos(3 pi x/L) cos(pi y/L) with Gamma_0 = {GAMMA0} at the antinodes, pushed by a bias of {BIAS} mu m g down the amplitude's slope: fraction of grains resting in the band around the nodal lines where Gamma <= 1 - b ({:.0} % of the plate) at the end (at the start: {:.0} %). Consistency: the bias is imposed towards the nodes, so the gathering follows from its direction; the evidence is the drift threshold above (a small bias moves grains wherever Gamma > 1 - b).",
+            "\"On a modally vibrating plate that has a large enough vibration amplitude, only a small bias would be needed to guide particles to the mode's nodes to form Chladni patterns.\" Grains (the chapter's block, μ = 0.4, e = 0) on a square plate in the mode cos(π x/L) cos(3 π y/L) + cos(3 π x/L) cos(π y/L) with Γ₀ = {GAMMA0} at the antinodes, pushed by a bias of {BIAS} μ m g down the amplitude's slope: fraction of grains resting in the band around the nodal lines where Γ <= 1 - b ({:.0} % of the plate) at the end (at the start: {:.0} %). Consistency: the bias is imposed towards the nodes, so the gathering follows from its direction; the evidence is the drift threshold above (a small bias moves grains wherever Γ > 1 - b).",
             100.0 * c.band_area_fraction,
             100.0 * start
         ),
         ">= 0.99",
         end,
-        "fraction, 0.01 of Gamma from the band's edge",
+        "fraction, 0.01 of Γ from the band's edge",
         end >= 0.99,
         Verdict::Confirmed,
     ));

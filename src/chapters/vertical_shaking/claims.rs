@@ -51,7 +51,7 @@ pub fn flight_needs_gamma(scene: &Scene, doc: &Doc) -> Claim {
     Claim::exact(
         "flight-needs-gamma-above-1",
         "3.1.2",
-        "Flight needs a peak plate acceleration delta_z omega^2 > g: no take-off in 50 periods at Gamma = 0.999, take-off at Gamma = 1.001 (of the printed threshold).",
+        "Flight needs a peak plate acceleration δ_z ω² > g: no take-off in 50 periods at Γ = 0.999, take-off at Γ = 1.001 (of the printed threshold).",
         "false, true",
         format!("{below}, {above}").as_str(),
     )
@@ -65,7 +65,7 @@ pub fn takeoff(scene: &Scene, takeoff_phase: f64, doc: &Doc) -> Claim {
     Claim::close(
         "takeoff-phase",
         "3.1.2 (derived)",
-        "The block leaves the plate when the plate's acceleration reaches -g: sin(omega t) = 1/Gamma (first take-off from rest; located event; 1e-9 rad: event located to ~1e-13 rad).",
+        "The block leaves the plate when the plate's acceleration reaches -g: sin(ω t) = 1/Γ (first take-off from rest; located event; 1e-9 rad: event located to ~1e-13 rad).",
         (doc.takeoff_factor / scene.gamma).asin(),
         takeoff_phase,
         1e-9,
@@ -106,7 +106,7 @@ pub fn fast_limits(scene: &Scene, quick: bool, doc: &Doc) -> (Claim, Claim) {
         "contact-fraction-to-zero",
         "3.1.2",
         &format!(
-            "As omega grows at fixed delta_z the fraction of time in contact goes to 0: from Gamma = 2 at 1, 2, 4, 8 x the frequency (Gamma = 2, 8, 32, 128) it is {} (tolerance pi/(2 Gamma) at Gamma = 128: the document's contact ~ pi/omega over flight ~ 2 v_z/g).",
+            "As ω grows at fixed δ_z the fraction of time in contact goes to 0: from Γ = 2 at 1, 2, 4, 8 x the frequency (Γ = 2, 8, 32, 128) it is {} (tolerance π/(2 Γ) at Γ = 128: the document's contact ~ π/ω over flight ~ 2 v_z/g).",
             fractions.iter().map(|f| format!("{f:.3}")).collect::<Vec<_>>().join(", ")
         ),
         doc.contact_limit,
@@ -126,7 +126,7 @@ pub fn fast_limits(scene: &Scene, quick: bool, doc: &Doc) -> (Claim, Claim) {
         "viscous-constant-to-zero",
         "3.1.2",
         &format!(
-            "The effective viscous constant c = F/v_ave goes to zero as omega grows at fixed delta_z, as 1/omega by the document's law (c = g/v_z): c (1/s) from Gamma = 2 at 1, 2, 4, 8 x the frequency = {}; ratio c_8/c_1 against 8^-1 (tolerance 0.15 of it: the law's error is +14.4 % at Gamma = 2, < 1 % at Gamma = 128).",
+            "The effective viscous constant c = F/v_ave goes to zero as ω grows at fixed δ_z, as 1/ω by the document's law (c = g/v_z): c (1/s) from Γ = 2 at 1, 2, 4, 8 x the frequency = {}; ratio c_8/c_1 against 8^-1 (tolerance 0.15 of it: the law's error is +14.4 % at Γ = 2, < 1 % at Γ = 128).",
             cs.iter().map(|c| format!("{c:.3}")).collect::<Vec<_>>().join(", ")
         ),
         expected,
@@ -163,7 +163,7 @@ pub fn sliding_contact(scene: &Scene, doc: &Doc) -> Claim {
     Claim::judged(
         "sliding-contact-full-friction",
         "3.1.2",
-        "If the block slides during contact, the average horizontal force is mu times the average vertical force m g (flights and impacts included): vertical vibration does not reduce sliding friction. Mean friction / (mu x mean normal force) of a block kept sliding over 60 periods (1e-9: round-off of closed-form phases and located events):",
+        "If the block slides during contact, the average horizontal force is μ times the average vertical force m g (flights and impacts included): vertical vibration does not reduce sliding friction. Mean friction / (μ x mean normal force) of a block kept sliding over 60 periods (1e-9: round-off of closed-form phases and located events):",
         doc.sliding_factor,
         ratio,
         1e-9,
@@ -192,7 +192,7 @@ pub fn small_force(scene: &Scene, doc: &Doc) -> Claim {
         "small-force-moves-block",
         "3.1.2",
         &format!(
-            "So long as delta_z omega^2 > g, an arbitrarily small sideways force moves the block: F = 0.01, 0.001, 0.0001 mu m g give {} m/s at Gamma = 1.05 (the drift scales with F: no threshold force), and F = 0.001 mu m g gives {below:.1e} m/s at Gamma = 0.95 (below 1 - F/(mu m g): friction holds).",
+            "So long as δ_z ω² > g, an arbitrarily small sideways force moves the block: F = 0.01, 0.001, 0.0001 μ m g give {} m/s at Γ = 1.05 (the drift scales with F: no threshold force), and F = 0.001 μ m g gives {below:.1e} m/s at Γ = 0.95 (below 1 - F/(μ m g): friction holds).",
             above.iter().map(|x| format!("{x:.2e}")).collect::<Vec<_>>().join(", ")
         ),
         true,
@@ -269,7 +269,7 @@ pub fn bias_law(scene: &Scene, quick: bool, doc: &Doc) -> (Claim, Claim) {
         "flight-time-2vz-over-g",
         "3.1.2",
         &format!(
-            "As printed: each flight starts at v_z = omega delta_z and lasts t_f = 2 v_z/g. An approximation: exact in the limit of flights of n whole periods from rest, n -> infinity, where t_f g/v_z = 2 n pi/Gamma_n at Gamma_n = sqrt(1 + (n pi)^2) (within 2/(2 (n pi)^2) of 2). Simulated t_f g/v_z just below Gamma_n and the closed form: {table}; at the chapter's Gamma = {:.2}: {tf_here:.3}. Tolerance per n: twice the eps-offset error estimate (runs at 1e-6 and 1e-5 below Gamma_n) plus 1e-9.",
+            "As printed: each flight starts at v_z = ω δ_z and lasts t_f = 2 v_z/g. An approximation: exact in the limit of flights of n whole periods from rest, n -> infinity, where t_f g/v_z = 2 n π/Γₙ at Γₙ = sqrt(1 + (n π)²) (within 2/(2 (n π)²) of 2). Simulated t_f g/v_z just below Γₙ and the closed form: {table}; at the chapter's Γ = {:.2}: {tf_here:.3}. Tolerance per n: twice the error estimate of the offset below Γₙ (runs at 1e-6 and 1e-5 below it) plus 1e-9.",
             scene.gamma
         ),
         last.1,
@@ -283,7 +283,7 @@ pub fn bias_law(scene: &Scene, quick: bool, doc: &Doc) -> (Claim, Claim) {
         "bias-law-mu-eff",
         "3.1.2",
         &format!(
-            "As printed: F = m g v_ave/v_z, mu_eff = v_ave/v_z for F < mu m g. An approximation: exact in the same limit, where (v_ave/v_z)/mu_eff = n pi/Gamma_n (take-off speed delta omega overestimated by Gamma_n/(n pi)); simulated just below Gamma_n and closed form: {table_law}; at the chapter's Gamma = {:.2} the ratio is {law_here}. Tolerance per n: twice the eps-offset estimate plus the slip before take-off (exact against no-contact-slip runs), plus 1e-9.",
+            "As printed: F = m g v_ave/v_z, μ_eff = v_ave/v_z for F < μ m g. An approximation: exact in the same limit, where (v_ave/v_z)/μ_eff = n π/Γₙ (take-off speed δ_z ω overestimated by Γₙ/(n π)); simulated just below Γₙ and closed form: {table_law}; at the chapter's Γ = {:.2} the ratio is {law_here}. Tolerance per n: twice the error estimate of the offset below Γₙ plus the slip before take-off (exact against no-contact-slip runs), plus 1e-9.",
             scene.gamma
         ),
         last.3,
@@ -302,7 +302,7 @@ pub fn period_doublings(scene: &Scene, quick: bool, doc: &Doc) -> Claim {
     Claim::judged(
         "period-doubling-multiplier",
         "3.1.2 (derived)",
-        "Beyond Gamma_n the block never rests and flies exactly n periods per flight (touch-and-go at cos(phi) = n pi/Gamma); this orbit period-doubles where the multiplier of the one-flight map reaches -1 (Gamma = 3.7242, 6.5938, 9.6346 for n = 1, 2, 3). Check: after a long transient the classifier finds P1 just below and P2 just above each located value.",
+        "Beyond Γₙ the block never rests and flies exactly n periods per flight (touch-and-go at cos(φ) = n π/Γ); this orbit period-doubles where the multiplier of the one-flight map reaches -1 (Γ = 3.7242, 6.5938, 9.6346 for n = 1, 2, 3). Check: after a long transient the classifier finds P1 just below and P2 just above each located value.",
         true,
         pd_ok && pd_n > 0,
         "exact",
@@ -333,7 +333,7 @@ pub fn flight_boundaries(bounds: &[Boundary], quick: bool, doc: &Doc) -> Claim {
     Claim::judged(
         "flight-period-boundaries",
         "3.1.2 (derived)",
-        "A flight from rest lasts exactly n periods at Gamma_n = sqrt(1 + (n pi)^2) (3.297, 6.362, 9.477): the located boundaries where resting between flights is lost agree (largest difference, n = 1, 2, 3; tolerance: the bisection bracket).",
+        "A flight from rest lasts exactly n periods at Γₙ = sqrt(1 + (n π)²) (3.297, 6.362, 9.477): the located boundaries where resting between flights is lost agree (largest difference, n = 1, 2, 3; tolerance: the bisection bracket).",
         0.0,
         worst,
         tol,
@@ -369,7 +369,7 @@ pub fn decomposition(scene: &Scene, transient: usize, observe: usize) -> String 
     }
     gammas.sort_by(f64::total_cmp);
     let mut s = String::from(
-        "| Gamma | law / exact - 1 | sticking impacts | no slip before take-off | contact time neglected | flight-time spread | flight on a fixed floor | take-off speed = delta omega |\n|---|---|---|---|---|---|---|---|\n",
+        "| Γ | law / exact - 1 | sticking impacts | no slip before take-off | contact time neglected | flight-time spread | flight on a fixed floor | take-off speed = δ_z ω |\n|---|---|---|---|---|---|---|---|\n",
     );
     for g in gammas {
         let sc = scene.at_gamma(g);

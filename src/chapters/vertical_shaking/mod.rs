@@ -140,7 +140,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
         .map(|n| regimes::period_doubling_gamma(f64::from(n)))
         .collect();
     r.result("period_doubling_gamma", pd);
-    let mut t = String::from("| Gamma | below | above | located by | bracket | shift with 4x transient | accuracy |\n|---|---|---|---|---|---|---|\n");
+    let mut t = String::from("| Γ | below | above | located by | bracket | shift with 4x transient | accuracy |\n|---|---|---|---|---|---|---|\n");
     for b in &bounds {
         t.push_str(&format!(
             "| {:.6} | {} | {} | {} | {:.1e} | {:.1e} | {:.1e} |\n",
