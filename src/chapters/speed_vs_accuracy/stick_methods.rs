@@ -64,9 +64,10 @@ pub const METHODS: [&str; 4] = [
     "soft_contact",
 ];
 
-/// Tolerance of the soft model's integration: converged in time (at eps = 0.003125 the
-/// mean speed moves by 6e-8 relative from rtol 1e-10 to 1e-11 and by 3e-6 from 1e-9,
-/// against a regularisation error of 8e-5 there).
+/// Tolerance of the soft model's integration: converged in time for this ladder (at
+/// eps = 0.003125 the mean speed moves by 1.1e-7 relative from rtol 1e-10 to 1e-11, 3e-7
+/// from 1e-9: 1.4 % of its regularisation error 7.8e-5; at eps = 0.0015625 by 1.8e-7
+/// from 1e-10 to 1e-12, 0.5 % of 3.7e-5).
 pub const SOFT_RTOL: f64 = 1e-10;
 
 /// Step budget of one soft-contact run: the finest rung of the full ladder (eps =
