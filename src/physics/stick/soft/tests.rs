@@ -70,13 +70,14 @@ fn standing_still_the_contact_carries_the_weight_at_penetration_m_g_over_k_n() {
 
 #[test]
 fn the_root_search_converges_where_newton_ping_pongs_across_the_kink() {
-    // A state of the self-locking scene at eps = 0.025 (met, with the first family, at t = 0.0224 s by
-    // Rosenbrock 2(3) at rtol 1e-10) where g(theta') has a kink near its root: F_z
+    // A state of the self-locking scene at eps = 0.025 (met, with the first family, at
+    // t = 0.0224 s by Rosenbrock 2(3) at rtol 1e-10) where g(theta') has a kink near its root: F_z
     // reaches 0 at theta' ~ 0.44 rad/s and beyond it g has the rod's slope gamma only.
     // Plain safeguarded Newton bounced between the two branches for all its iterations
     // and returned 0.42719 or 0.42735 rad/s depending on the state's last digits (the
-    // root is 0.4273496): the noise stalled the step control. The rtsafe rule (Newton
-    // step at most half the step before last, else bisect) converges in ~60.
+    // root is 0.4273496): the noise stalled the step control. Now the bracket is split
+    // where g changes character (zero slip, +-3 v_eps, the damper unloading) and Newton
+    // steps follow the rtsafe rule (at most half the step before last, else bisect).
     let p = crate::physics::stick::jamming_scene(9.81);
     // the family of that run (v_eps = 0.1 eps m/s; the kink is the normal law's)
     let sys = SoftStick {
