@@ -213,11 +213,11 @@ pub fn soft_ladder(p: &StickParams, plan: &Plan, reference: f64) -> Ladder {
             let v = match r.outcome {
                 SoftOutcome::Completed => r.mean_velocity_mps,
                 SoftOutcome::Failed(e) => {
-                    note = Some(format!("eps = {eps}: {e}"));
+                    note = Some(format!("ε = {eps}: {e}"));
                     f64::NAN
                 }
                 SoftOutcome::Budget { t_s } => {
-                    note = Some(format!("eps = {eps}: step budget spent at t = {t_s:.4} s"));
+                    note = Some(format!("ε = {eps}: step budget spent at t = {t_s:.4} s"));
                     f64::NAN
                 }
             };

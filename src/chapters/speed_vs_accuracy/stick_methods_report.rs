@@ -16,7 +16,7 @@ const STYLE: [(&str, &str, usize); 4] = [
     ("event_dop853", "event-driven DOP853 (rtol)", 4),
     ("event_dopri5", "event-driven DP5 (rtol)", 2),
     ("moreau_jean", "Moreau-Jean (step h)", 3),
-    ("soft_contact", "soft contact + Rosenbrock (eps)", 0),
+    ("soft_contact", "soft contact + Rosenbrock (ε)", 0),
 ];
 
 /// Errors below this are drawn at it (log axis).
