@@ -21,6 +21,7 @@ pub mod missed_event;
 pub mod report_parts;
 pub mod stick_methods;
 pub mod stick_methods_report;
+pub mod stick_methods_soft;
 pub mod stick_part;
 pub mod tables;
 pub mod work_precision;

@@ -4,12 +4,14 @@
 //! all measured on the stick's mean speed against the event-driven reference.
 //!
 //! No stepping here: the runs are [`crate::physics::stick::run::simulate_stick`] (via
-//! [`super::measure::stick_speed`]), [`simulate_stick_mj`] and [`simulate_soft`].
+//! [`super::measure::stick_speed`]), [`simulate_stick_mj`] and
+//! [`crate::physics::stick::soft::run::simulate_soft`] (its family given one by one).
 
 use super::measure::{stick_speed, timed};
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
-use crate::physics::stick::soft::run::{simulate_soft, SoftOutcome};
+use crate::physics::stick::soft::run::{simulate_soft_with, SoftOutcome};
+use crate::physics::stick::soft::SoftParams;
 use crate::physics::stick::timestepping::simulate_stick_mj;
 use crate::physics::stick::{StickModel, StickParams};
 use crate::report::{Check, Claim};
@@ -62,12 +64,15 @@ pub const METHODS: [&str; 4] = [
     "soft_contact",
 ];
 
-/// Tolerance of the soft model's integration (where, without the damper's ramp, DP5 and
-/// Rosenbrock 2(3) agreed to 1e-6 on the mean speed).
+/// Tolerance of the soft model's integration: converged in time for this ladder (at
+/// eps = 0.003125 the mean speed moves by 1.1e-7 relative from rtol 1e-10 to 1e-11, 3e-7
+/// from 1e-9: 1.4 % of its regularisation error 7.8e-5; at eps = 0.0015625 by 1.8e-7
+/// from 1e-10 to 1e-12, 0.5 % of 3.7e-5).
 pub const SOFT_RTOL: f64 = 1e-10;
 
-/// Step budget of one soft-contact run.
-pub const SOFT_BUDGET: u64 = 20_000;
+/// Step budget of one soft-contact run: the finest rung of the full ladder (eps =
+/// 0.00078125, 2 periods) takes 2.8e4 steps; five times that bounds a run to seconds.
+pub const SOFT_BUDGET: u64 = 150_000;
 
 /// Sizes of the ladders.
 #[derive(Debug, Clone)]
@@ -80,6 +85,8 @@ pub struct Plan {
     pub mj_steps: Vec<u32>,
     /// Regularisations (each half the last).
     pub eps: Vec<f64>,
+    /// The soft model's family: its contact constants at `eps`.
+    pub soft_family: fn(&StickParams, f64) -> SoftParams,
 }
 
 impl Plan {
@@ -90,14 +97,17 @@ impl Plan {
                 cycles: 2.0,
                 tols: vec![1e-6, 1e-9, 1e-12],
                 mj_steps: vec![2000, 4000, 8000],
-                eps: vec![0.1],
+                // three rungs inside the asymptotic range (local orders 1.05, 1.10)
+                eps: vec![0.0125, 0.00625, 0.003125],
+                soft_family: SoftParams::regularised,
             }
         } else {
             Plan {
                 cycles: 2.0,
                 tols: (4..=12).map(|k| 10f64.powi(-k)).collect(),
                 mj_steps: vec![500, 1000, 2000, 4000, 8000, 16000, 32000, 64000],
-                eps: vec![0.1, 0.05],
+                eps: (0..8).map(|k| 0.1 * 0.5f64.powi(k)).collect(),
+                soft_family: SoftParams::regularised,
             }
         }
     }
@@ -173,39 +183,52 @@ pub fn measure_scene(p: &StickParams, plan: &Plan) -> SceneMethods {
             "{ambiguous} of {contact} contact steps over the ladder had more than one solution of the local problem"
         )),
     });
+    ladders.push(soft_ladder(p, plan, reference));
+    SceneMethods {
+        reference_mps: reference,
+        cycles,
+        ladders,
+    }
+}
+
+/// The soft-contact ladder of `plan` on scene `p` (Rosenbrock 2(3) at [`SOFT_RTOL`]).
+pub fn soft_ladder(p: &StickParams, plan: &Plan, reference: f64) -> Ladder {
     let control = StepControl::tol(SOFT_RTOL, SOFT_RTOL);
     let mut note = None;
     let rungs = plan
         .eps
         .iter()
         .map(|&eps| {
+            let soft = (plan.soft_family)(p, eps);
             let (r, wall) = timed(1, || {
-                simulate_soft(p, eps, cycles, Method::Rosenbrock23, control, SOFT_BUDGET)
+                simulate_soft_with(
+                    p,
+                    soft,
+                    plan.cycles,
+                    Method::Rosenbrock23,
+                    control,
+                    SOFT_BUDGET,
+                )
             });
             let v = match r.outcome {
                 SoftOutcome::Completed => r.mean_velocity_mps,
                 SoftOutcome::Failed(e) => {
-                    note = Some(format!("eps = {eps}: {e}"));
+                    note = Some(format!("ε = {eps}: {e}"));
                     f64::NAN
                 }
                 SoftOutcome::Budget { t_s } => {
-                    note = Some(format!("eps = {eps}: step budget spent at t = {t_s:.4} s"));
+                    note = Some(format!("ε = {eps}: step budget spent at t = {t_s:.4} s"));
                     f64::NAN
                 }
             };
             rung(eps, v, r.stats.rhs_evals, wall, reference)
         })
         .collect();
-    ladders.push(Ladder {
+    Ladder {
         method: "soft_contact",
         knob_name: "eps",
         rungs,
         note,
-    });
-    SceneMethods {
-        reference_mps: reference,
-        cycles,
-        ladders,
     }
 }
 

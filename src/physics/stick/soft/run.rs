@@ -1,7 +1,8 @@
 //! One run of the soft-contact stick with a chosen integrator and a step budget.
 
-use super::{SoftStick, SD};
+use super::{SoftParams, SoftStick, SD};
 use crate::numerics::ode::{Integrator, Method, OdeError, Stats, StepControl};
+use crate::physics::stick::StickModel;
 use crate::physics::stick::StickParams;
 
 /// How a soft-contact run ended.
@@ -43,7 +44,24 @@ pub fn simulate_soft(
     control: StepControl,
     max_steps: u64,
 ) -> SoftSummary {
-    let sys = SoftStick::new(*p, eps);
+    let soft = SoftParams::regularised(p, eps);
+    simulate_soft_with(p, soft, cycles, method, control, max_steps)
+}
+
+/// As [`simulate_soft`] with the contact constants `soft` given one by one (to vary one
+/// constant at a time).
+pub fn simulate_soft_with(
+    p: &StickParams,
+    soft: SoftParams,
+    cycles: f64,
+    method: Method,
+    control: StepControl,
+    max_steps: u64,
+) -> SoftSummary {
+    let sys = SoftStick {
+        model: StickModel::new(*p),
+        soft,
+    };
     let theta = p.static_angle().unwrap_or(p.theta0_rad);
     let y0 = sys.at_rest(0.0, theta);
     let t_end = cycles * p.period_s();
