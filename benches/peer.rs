@@ -11,6 +11,17 @@
 //!    contact modes by Dormand-Prince 5(4) with events: the workbook's DP5 and SciPy's
 //!    RK45, same rtol = atol, same longest step T/14).
 //! 2. The block of chapter 7 (`benches/peers/block_scipy.py`), every mode integrated.
+//! 3. The soft-contact stick (`physics::stick::soft`, self-locking scene, `eps` = 0.1, two
+//!    drive periods from rest): `benches/peers/stick_soft_scipy.py`, a port of the same
+//!    right-hand side (checked against the workbook's by `examples/soft_rhs.rs`), under
+//!    SciPy's `Radau`, `BDF`, `LSODA` (stiff) and `DOP853`, `RK45` (explicit) at a ladder
+//!    of rtol, against the workbook's Rosenbrock 2(3) at a ladder of rtol; atol = rtol
+//!    on both sides. Accuracy is the relative
+//!    difference of the mean speed from one reference of the same soft model (SciPy's
+//!    `Radau` at rtol 1e-12), the same for both sides; the comparison at equal accuracy
+//!    takes, for each accuracy, the cheapest run of each side that reaches it (no
+//!    interpolation: the ladders are half a decade apart).
+//!    Options: `--only stick|block|soft` (one part), `--soft-eps X`, `--soft-cycles N`.
 //!
 //! Prints the wall times (minimum of repeats), their ratio and the difference of the
 //! mean speeds.
@@ -21,7 +32,8 @@ use locomotion_workbook::chapters::speed_vs_accuracy::measure::{
 };
 use locomotion_workbook::numerics::hybrid::Options;
 use locomotion_workbook::numerics::ode::{Method, StepControl};
-use locomotion_workbook::physics::stick::{authors_scene, StickModel};
+use locomotion_workbook::physics::stick::soft::run::{simulate_soft, SoftOutcome};
+use locomotion_workbook::physics::stick::{authors_scene, jamming_scene, StickModel};
 use std::process::Command;
 
 fn arg<T: std::str::FromStr>(args: &[String], name: &str, default: T) -> T {
@@ -89,10 +101,30 @@ fn main() {
     let tol: f64 = arg(&args, "--tol", 1e-10);
     let repeats: u32 = arg(&args, "--repeats", 5);
     let python: String = arg(&args, "--python", "python3".to_string());
+    let only: String = arg(&args, "--only", String::new());
+    let part = |name: &str| only.is_empty() || only == name;
     println!(
-        "rtol = atol = {tol:e} on both sides; wall times are the minimum of {repeats} repeats"
+        "rtol = atol = {tol:e} on both sides (stick, block); wall times are the minimum of {repeats} repeats"
     );
+    let mut ok = true;
+    if part("stick") {
+        ok &= stick(&python, tol, repeats);
+    }
+    if part("block") {
+        ok &= block(&python, tol, repeats);
+    }
+    if part("soft") {
+        let eps: f64 = arg(&args, "--soft-eps", 0.1);
+        let cycles: f64 = arg(&args, "--soft-cycles", 2.0);
+        ok &= soft(&python, repeats, eps, cycles);
+    }
+    if !ok {
+        std::process::exit(1);
+    }
+}
 
+/// The stick (part 1), DP5 against RK45 and DOP853 against DOP853. Returns whether both peers ran.
+fn stick(python: &str, tol: f64, repeats: u32) -> bool {
     // 1. the stick
     let model = StickModel::new(authors_scene(10.0));
     let p = model.p;
@@ -137,7 +169,7 @@ fn main() {
         "stick",
         (ours.value, wall),
         reference.value,
-        peer(&python, "stick_scipy.py", &stick_args),
+        peer(python, "stick_scipy.py", &stick_args),
     );
 
     // 1b. the stick with the best pair on each side: the workbook's default DOP853
@@ -158,9 +190,18 @@ fn main() {
         "DOP853",
         (ours853.value, wall853),
         reference.value,
-        peer(&python, "stick_scipy.py", &args853),
+        peer(python, "stick_scipy.py", &args853),
     );
 
+    ok_stick && ok_853
+}
+
+/// The block (part 2). Returns whether the peer ran.
+fn block(python: &str, tol: f64, repeats: u32) -> bool {
+    let opts = Options {
+        control: StepControl::tol(tol, tol),
+        ..Options::default()
+    };
     // 2. the block
     let s = BlockScene::new(30.0, 2.5, 0.4, 0.02, 9.81);
     let (ours, wall) = timed(repeats, || drift_block_model(&s, &opts, false, 20, 10, 40));
@@ -173,13 +214,173 @@ fn main() {
         repeats.min(3).to_string(),
     ]
     .to_vec();
-    let ok_block = compare(
+    compare(
         "block",
         (ours.value, wall),
         exact,
-        peer(&python, "block_scipy.py", &block_args),
+        peer(python, "block_scipy.py", &block_args),
+    )
+}
+
+/// One run of a work-precision ladder: its accuracy on the mean speed and its cost.
+#[derive(Debug, Clone)]
+struct Point {
+    label: String,
+    rel: f64,
+    wall_s: f64,
+    evals: u64,
+}
+
+/// The cheapest run of `pts` whose relative difference is at most `target`.
+fn cheapest(pts: &[Point], target: f64) -> Option<&Point> {
+    pts.iter()
+        .filter(|q| q.rel <= target)
+        .min_by(|a, b| a.wall_s.total_cmp(&b.wall_s))
+}
+
+/// The soft-contact stick (part 3): the workbook's Rosenbrock 2(3) against SciPy's stiff
+/// methods (and explicit pairs) at equal accuracy. Returns whether the peer ran.
+fn soft(python: &str, repeats: u32, eps: f64, cycles: f64) -> bool {
+    // atol = rtol, as the chapter's soft runs: with atol = rtol / 1000 the workbook's
+    // Rosenbrock 2(3) stalls at t = 0.0137 s from rtol 1e-9 on (1e5 accepted steps)
+    const ATOL_RATIO: f64 = 1.0;
+    let p = jamming_scene(9.81);
+    let args: Vec<String> = [
+        "--scene",
+        "jamming",
+        "--eps",
+        &format!("{eps:e}"),
+        "--cycles",
+        &format!("{cycles}"),
+        "--atol-ratio",
+        &format!("{ATOL_RATIO:e}"),
+        "--ref-rtol",
+        "1e-12",
+        "--repeats",
+        &repeats.min(3).to_string(),
+        "--methods",
+        "Radau,BDF,LSODA,DOP853,RK45",
+        "--rtols",
+        "1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10",
+        "--explicit-rtols",
+        "1e-4,1e-8",
+        "--max-evals",
+        "400000",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
+    let Some(v) = peer(python, "stick_soft_scipy.py", &args) else {
+        println!("soft: SciPy peer not available");
+        return false;
+    };
+    let reference = v["reference"]["mean_velocity_mps"]
+        .as_f64()
+        .unwrap_or(f64::NAN);
+    let rel = |x: f64| ((x - reference) / reference).abs(); // formula: |v - v_ref| / |v_ref|
+    println!(
+        "soft: self-locking scene, eps = {eps}, {cycles} periods from rest, atol = rtol x {ATOL_RATIO:e} on both sides"
     );
-    if !(ok_stick && ok_853 && ok_block) {
-        std::process::exit(1);
+    println!(
+        "soft: reference (SciPy Radau, rtol 1e-12): {reference:.12e} m/s in {:.3} s ({} evaluations)",
+        v["reference"]["wall_s"].as_f64().unwrap_or(f64::NAN),
+        v["reference"]["nfev"]
+    );
+    // the workbook's ladder: rtol 1e-3 .. 1e-10, half a decade apart
+    let mut ours = Vec::new();
+    for k in 6..=20 {
+        let rtol = 10f64.powf(-f64::from(k) / 2.0);
+        let control = StepControl::tol(rtol, rtol * ATOL_RATIO);
+        let (r, wall) = timed(repeats, || {
+            simulate_soft(&p, eps, cycles, Method::Rosenbrock23, control, 200_000)
+        });
+        if r.outcome != SoftOutcome::Completed {
+            println!("soft: workbook rtol {rtol:.1e}: {:?}", r.outcome);
+            continue;
+        }
+        ours.push(Point {
+            label: format!("Rosenbrock23 rtol {rtol:.1e}"),
+            rel: rel(r.mean_velocity_mps),
+            wall_s: wall,
+            evals: r.stats.rhs_evals,
+        });
+    }
+    let mut theirs = Vec::new();
+    println!("soft: | run | relative difference | wall time (s) | evaluations |");
+    for r in ours.iter() {
+        println!(
+            "soft: | workbook {} | {:.1e} | {:.3e} | {} |",
+            r.label, r.rel, r.wall_s, r.evals
+        );
+    }
+    for r in v["runs"].as_array().into_iter().flatten() {
+        let label = format!(
+            "{} rtol {:.0e}",
+            r["method"].as_str().unwrap_or("?"),
+            r["rtol"].as_f64().unwrap_or(f64::NAN)
+        );
+        let wall = r["wall_s"].as_f64().unwrap_or(f64::NAN);
+        let evals = r["nfev"].as_u64().unwrap_or(0);
+        match r["relative_difference"].as_f64() {
+            Some(e) => {
+                println!("soft: | SciPy {label} | {e:.1e} | {wall:.3e} | {evals} |");
+                theirs.push(Point {
+                    label,
+                    rel: e,
+                    wall_s: wall,
+                    evals,
+                });
+            }
+            None => println!(
+                "soft: | SciPy {label} | {} | {wall:.3e} | {evals} |",
+                r["status"].as_str().unwrap_or("failed")
+            ),
+        }
+    }
+    println!("soft: each SciPy run against the workbook's cheapest run at least as accurate:");
+    for t in &theirs {
+        match cheapest(&ours, t.rel) {
+            Some(o) => println!(
+                "soft:   SciPy {} ({:.1e}, {:.3e} s) / workbook {} ({:.1e}, {:.3e} s) = {:.0}",
+                t.label,
+                t.rel,
+                t.wall_s,
+                o.label,
+                o.rel,
+                o.wall_s,
+                t.wall_s / o.wall_s
+            ),
+            None => println!(
+                "soft:   SciPy {} ({:.1e}): no workbook run that accurate",
+                t.label, t.rel
+            ),
+        }
+    }
+    println!("soft: at equal accuracy, the best SciPy choice against the workbook (cheapest run of each reaching it):");
+    for target in [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8] {
+        match (cheapest(&theirs, target), cheapest(&ours, target)) {
+            (Some(t), Some(o)) => println!(
+                "soft:   {target:.0e}: SciPy {} {:.3e} s ({} evaluations), workbook {} {:.3e} s ({} evaluations): ratio {}",
+                t.label, t.wall_s, t.evals, o.label, o.wall_s, o.evals, ratio(t.wall_s / o.wall_s)
+            ),
+            (t, o) => println!(
+                "soft:   {target:.0e}: not reached by {}",
+                match (t, o) {
+                    (None, None) => "either side",
+                    (None, _) => "SciPy",
+                    _ => "the workbook",
+                }
+            ),
+        }
+    }
+    true
+}
+
+/// A cost ratio: one decimal below 10, none above.
+fn ratio(x: f64) -> String {
+    if x < 10.0 {
+        format!("{x:.1}")
+    } else {
+        format!("{x:.0}")
     }
 }
