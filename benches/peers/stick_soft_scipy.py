@@ -9,8 +9,9 @@ theta' at every right-hand side by the same bracket and safeguarded Newton itera
 run under scipy.integrate.solve_ivp with the stiff methods Radau, BDF and LSODA and the
 explicit pairs DOP853 and RK45 at a ladder of rtol (atol = rtol times --atol-ratio).
 
-Prints one JSON object: the scene, the soft constants, a tight reference of the same soft
-model (Radau at --ref-rtol) and per run the mean horizontal speed of C, its relative
+Prints one JSON object: the scene, a tight reference of the same soft model (Radau at
+--ref-rtol; its uncertainty is its relative difference from Radau at ten times that) and
+per run the mean horizontal speed of C, its relative
 difference from the reference, the wall time (minimum of --repeats) and the evaluation
 counts. `--check-rhs FILE` instead compares this port's right-hand side with the
 workbook's at the states of FILE (written by `cargo run --release --example soft_rhs`).
@@ -329,6 +330,12 @@ def main():
         sys.exit(0 if check_rhs(a.check_rhs) else 1)
     p = scene(a.scene)
     ref_v, ref_wall, ref_counts, ref_status = run(p, a.eps, a.cycles, "Radau", a.ref_rtol, a.ref_rtol, 10 ** 8)
+    if not math.isfinite(ref_v):
+        print(json.dumps({"error": "the Radau reference at rtol %g did not complete: %s (try a looser --ref-rtol)" % (a.ref_rtol, ref_status)}))
+        return
+    # the reference's own uncertainty: the same method at ten times its tolerance
+    chk_v, _, _, chk_status = run(p, a.eps, a.cycles, "Radau", 10 * a.ref_rtol, 10 * a.ref_rtol, 10 ** 8)
+    ref_uncertainty = abs(chk_v - ref_v) / abs(ref_v) if math.isfinite(chk_v) else None
     runs = []
     for method in a.methods.split(","):
         ladder = a.explicit_rtols if method in ("DOP853", "RK45", "RK23") else a.rtols
@@ -353,6 +360,7 @@ def main():
         "eps": a.eps,
         "cycles": a.cycles,
         "reference": {"method": "Radau", "rtol": a.ref_rtol, "mean_velocity_mps": ref_v, "wall_s": ref_wall, "status": ref_status, **ref_counts},
+        "reference_uncertainty": ref_uncertainty,
         "runs": runs,
     }
     print(json.dumps(out))
