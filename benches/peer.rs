@@ -15,7 +15,9 @@
 //!    drive periods from rest): `benches/peers/stick_soft_scipy.py`, a port of the same
 //!    right-hand side (checked against the workbook's by `examples/soft_rhs.rs`), under
 //!    SciPy's `Radau`, `BDF`, `LSODA` (stiff) and `DOP853`, `RK45` (explicit) at a ladder
-//!    of rtol, against the workbook's Rosenbrock 2(3) at a ladder of rtol; atol = rtol
+//!    of rtol, against the workbook's Rosenbrock 2(3) at a ladder of rtol (the port's
+//!    right-hand side is compared with the workbook's first, `peers/soft_states.rs`, and
+//!    a mismatch stops the part); atol = rtol
 //!    on both sides. Accuracy is the relative
 //!    difference of the mean speed from one reference of the same soft model (SciPy's
 //!    `Radau` at rtol 1e-12), the same for both sides; the comparison at equal accuracy
@@ -35,8 +37,11 @@ use locomotion_workbook::chapters::speed_vs_accuracy::measure::{
 use locomotion_workbook::numerics::hybrid::Options;
 use locomotion_workbook::numerics::ode::{Method, StepControl};
 use locomotion_workbook::physics::stick::soft::run::{simulate_soft, SoftOutcome};
-use locomotion_workbook::physics::stick::{authors_scene, jamming_scene, StickModel};
+use locomotion_workbook::physics::stick::{authors_scene, jamming_scene, StickModel, StickParams};
 use std::process::Command;
+
+#[path = "peers/soft_states.rs"]
+mod soft_states;
 
 fn arg<T: std::str::FromStr>(args: &[String], name: &str, default: T) -> T {
     args.iter()
@@ -60,7 +65,11 @@ fn peer(python: &str, script: &str, args: &[String]) -> Option<serde_json::Value
             v
         }
         Ok(o) => {
-            eprintln!("{script} failed: {}", String::from_utf8_lossy(&o.stderr));
+            eprintln!(
+                "{script} failed: {}{}",
+                String::from_utf8_lossy(&o.stdout),
+                String::from_utf8_lossy(&o.stderr)
+            );
             None
         }
         Err(e) => {
@@ -243,6 +252,37 @@ fn cheapest(pts: &[Point], target: f64) -> Option<&Point> {
         .min_by(|a, b| a.wall_s.total_cmp(&b.wall_s))
 }
 
+/// Compares the SciPy port's right-hand side with the workbook's at the states of
+/// `soft_states` (`stick_soft_scipy.py --check-rhs`); prints its verdict.
+fn check_soft_port(python: &str, p: &StickParams, eps: f64) -> bool {
+    let states = soft_states::soft_rhs_states(p, "jamming", eps);
+    let file = match tempfile::NamedTempFile::new()
+        .and_then(|f| std::fs::write(f.path(), states.to_string()).map(|_| f))
+    {
+        Ok(f) => f,
+        Err(e) => {
+            eprintln!("soft: cannot write the states for the check: {e}");
+            return false;
+        }
+    };
+    let path = file.path().to_string_lossy().to_string();
+    let Some(v) = peer(
+        python,
+        "stick_soft_scipy.py",
+        &["--check-rhs".to_string(), path],
+    ) else {
+        println!("soft: the port's right-hand side does not match the workbook's (or the check did not run)");
+        return false;
+    };
+    println!(
+        "soft: port checked at {} states: right-hand sides agree to {:.1e} of each component's scale, constants to {:.1e} (slow root solves set apart: {})",
+        v["states"], v["rhs_max_difference_over_component_scale"].as_f64().unwrap_or(f64::NAN),
+        v["constants_max_relative_difference"].as_f64().unwrap_or(f64::NAN),
+        v["states_with_slow_root_solve"]
+    );
+    true
+}
+
 /// The soft-contact stick (part 3): the workbook's Rosenbrock 2(3) against SciPy's stiff
 /// methods (and explicit pairs) at equal accuracy. Returns whether the peer ran.
 fn soft(python: &str, repeats: u32, eps: f64, cycles: f64, ref_rtol: f64) -> bool {
@@ -250,6 +290,9 @@ fn soft(python: &str, repeats: u32, eps: f64, cycles: f64, ref_rtol: f64) -> boo
     // Rosenbrock 2(3) stalls at t = 0.0137 s from rtol 1e-9 on (1e5 accepted steps)
     const ATOL_RATIO: f64 = 1.0;
     let p = jamming_scene(9.81);
+    if !check_soft_port(python, &p, eps) {
+        return false;
+    }
     let args: Vec<String> = [
         "--scene",
         "jamming",
