@@ -11,6 +11,21 @@
 //!    contact modes by Dormand-Prince 5(4) with events: the workbook's DP5 and SciPy's
 //!    RK45, same rtol = atol, same longest step T/14).
 //! 2. The block of chapter 7 (`benches/peers/block_scipy.py`), every mode integrated.
+//! 3. The soft-contact stick (`physics::stick::soft`, self-locking scene, `eps` = 0.1, two
+//!    drive periods from rest): `benches/peers/stick_soft_scipy.py`, a port of the same
+//!    right-hand side (checked against the workbook's by `examples/soft_rhs.rs`), under
+//!    SciPy's `Radau`, `BDF`, `LSODA` (stiff) and `DOP853`, `RK45` (explicit) at a ladder
+//!    of rtol, against the workbook's Rosenbrock 2(3) at a ladder of rtol (the port's
+//!    right-hand side is compared with the workbook's first, `peers/soft_states.rs`, and
+//!    a mismatch stops the part); atol = rtol
+//!    on both sides. Accuracy is the relative
+//!    difference of the mean speed from one reference of the same soft model (SciPy's
+//!    `Radau` at rtol 1e-12), the same for both sides; the comparison at equal accuracy
+//!    takes, for each accuracy, the cheapest run of each side that reaches it (no
+//!    interpolation: the ladders are half a decade apart).
+//!    Options: `--only stick|block|soft` (one part), `--soft-eps X`, `--soft-cycles N`,
+//!    `--soft-ref-rtol X` (the reference's rtol = atol, default 1e-12; at eps = 0.01 Radau
+//!    fails at 1e-12 with a step below the spacing of floats: use 1e-10).
 //!
 //! Prints the wall times (minimum of repeats), their ratio and the difference of the
 //! mean speeds.
@@ -21,8 +36,12 @@ use locomotion_workbook::chapters::speed_vs_accuracy::measure::{
 };
 use locomotion_workbook::numerics::hybrid::Options;
 use locomotion_workbook::numerics::ode::{Method, StepControl};
-use locomotion_workbook::physics::stick::{authors_scene, StickModel};
+use locomotion_workbook::physics::stick::soft::run::{simulate_soft, SoftOutcome};
+use locomotion_workbook::physics::stick::{authors_scene, jamming_scene, StickModel, StickParams};
 use std::process::Command;
+
+#[path = "peers/soft_states.rs"]
+mod soft_states;
 
 fn arg<T: std::str::FromStr>(args: &[String], name: &str, default: T) -> T {
     args.iter()
@@ -36,7 +55,9 @@ fn peer(python: &str, script: &str, args: &[String]) -> Option<serde_json::Value
     let path = format!("{}/benches/peers/{script}", env!("CARGO_MANIFEST_DIR"));
     match Command::new(python).arg(&path).args(args).output() {
         Ok(o) if o.status.success() => {
-            let v: Option<serde_json::Value> = serde_json::from_slice(&o.stdout).ok();
+            let v: Option<serde_json::Value> = serde_json::from_slice(&o.stdout)
+                .map_err(|e| eprintln!("{script}: output is not JSON ({e})"))
+                .ok();
             if let Some(e) = v.as_ref().and_then(|v| v.get("error")) {
                 eprintln!("{script}: {e}");
                 return None;
@@ -44,7 +65,11 @@ fn peer(python: &str, script: &str, args: &[String]) -> Option<serde_json::Value
             v
         }
         Ok(o) => {
-            eprintln!("{script} failed: {}", String::from_utf8_lossy(&o.stderr));
+            eprintln!(
+                "{script} failed: {}{}",
+                String::from_utf8_lossy(&o.stdout),
+                String::from_utf8_lossy(&o.stderr)
+            );
             None
         }
         Err(e) => {
@@ -89,10 +114,31 @@ fn main() {
     let tol: f64 = arg(&args, "--tol", 1e-10);
     let repeats: u32 = arg(&args, "--repeats", 5);
     let python: String = arg(&args, "--python", "python3".to_string());
+    let only: String = arg(&args, "--only", String::new());
+    let part = |name: &str| only.is_empty() || only == name;
     println!(
-        "rtol = atol = {tol:e} on both sides; wall times are the minimum of {repeats} repeats"
+        "rtol = atol = {tol:e} on both sides (stick, block); wall times are the minimum of {repeats} repeats"
     );
+    let mut ok = true;
+    if part("stick") {
+        ok &= stick(&python, tol, repeats);
+    }
+    if part("block") {
+        ok &= block(&python, tol, repeats);
+    }
+    if part("soft") {
+        let eps: f64 = arg(&args, "--soft-eps", 0.1);
+        let cycles: f64 = arg(&args, "--soft-cycles", 2.0);
+        let ref_rtol: f64 = arg(&args, "--soft-ref-rtol", 1e-12);
+        ok &= soft(&python, repeats, eps, cycles, ref_rtol);
+    }
+    if !ok {
+        std::process::exit(1);
+    }
+}
 
+/// The stick (part 1), DP5 against RK45 and DOP853 against DOP853. Returns whether both peers ran.
+fn stick(python: &str, tol: f64, repeats: u32) -> bool {
     // 1. the stick
     let model = StickModel::new(authors_scene(10.0));
     let p = model.p;
@@ -137,7 +183,7 @@ fn main() {
         "stick",
         (ours.value, wall),
         reference.value,
-        peer(&python, "stick_scipy.py", &stick_args),
+        peer(python, "stick_scipy.py", &stick_args),
     );
 
     // 1b. the stick with the best pair on each side: the workbook's default DOP853
@@ -158,9 +204,18 @@ fn main() {
         "DOP853",
         (ours853.value, wall853),
         reference.value,
-        peer(&python, "stick_scipy.py", &args853),
+        peer(python, "stick_scipy.py", &args853),
     );
 
+    ok_stick && ok_853
+}
+
+/// The block (part 2). Returns whether the peer ran.
+fn block(python: &str, tol: f64, repeats: u32) -> bool {
+    let opts = Options {
+        control: StepControl::tol(tol, tol),
+        ..Options::default()
+    };
     // 2. the block
     // b = F/(mu m g) = 0.05: the peer script's default --bias 0.02 is F/(m g), the same force.
     let s = BlockScene::new(30.0, 2.5, 0.4, 0.05, 9.81);
@@ -174,13 +229,232 @@ fn main() {
         repeats.min(3).to_string(),
     ]
     .to_vec();
-    let ok_block = compare(
+    compare(
         "block",
         (ours.value, wall),
         exact,
-        peer(&python, "block_scipy.py", &block_args),
+        peer(python, "block_scipy.py", &block_args),
+    )
+}
+
+/// One run of a work-precision ladder: its accuracy on the mean speed and its cost.
+#[derive(Debug, Clone)]
+struct Point {
+    label: String,
+    rel: f64,
+    wall_s: f64,
+    evals: u64,
+}
+
+/// The cheapest run of `pts` whose relative difference is at most `target`.
+fn cheapest(pts: &[Point], target: f64) -> Option<&Point> {
+    pts.iter()
+        .filter(|q| q.rel <= target)
+        .min_by(|a, b| a.wall_s.total_cmp(&b.wall_s))
+}
+
+/// Compares the SciPy port's right-hand side with the workbook's at the states of
+/// `soft_states` (`stick_soft_scipy.py --check-rhs`); prints its verdict.
+fn check_soft_port(python: &str, p: &StickParams, eps: f64) -> bool {
+    let states = soft_states::soft_rhs_states(p, "jamming", eps);
+    let file = match tempfile::NamedTempFile::new()
+        .and_then(|f| std::fs::write(f.path(), states.to_string()).map(|_| f))
+    {
+        Ok(f) => f,
+        Err(e) => {
+            eprintln!("soft: cannot write the states for the check: {e}");
+            return false;
+        }
+    };
+    let path = file.path().to_string_lossy().to_string();
+    let Some(v) = peer(
+        python,
+        "stick_soft_scipy.py",
+        &["--check-rhs".to_string(), path],
+    ) else {
+        println!("soft: the port's right-hand side does not match the workbook's (or the check did not run)");
+        return false;
+    };
+    println!(
+        "soft: port checked at {} states: right-hand sides agree to {:.1e} of each component's scale, constants to {:.1e} (slow root solves set apart: {})",
+        v["states"], v["rhs_max_difference_over_component_scale"].as_f64().unwrap_or(f64::NAN),
+        v["constants_max_relative_difference"].as_f64().unwrap_or(f64::NAN),
+        v["states_with_slow_root_solve"]
     );
-    if !(ok_stick && ok_853 && ok_block) {
-        std::process::exit(1);
+    true
+}
+
+/// The soft-contact stick (part 3): the workbook's Rosenbrock 2(3) against SciPy's stiff
+/// methods (and explicit pairs) at equal accuracy. Returns whether the peer ran.
+fn soft(python: &str, repeats: u32, eps: f64, cycles: f64, ref_rtol: f64) -> bool {
+    // atol = rtol, as the chapter's soft runs: with atol = rtol / 1000 the workbook's
+    // Rosenbrock 2(3) stalls at t = 0.0137 s from rtol 1e-9 on (1e5 accepted steps)
+    const ATOL_RATIO: f64 = 1.0;
+    let p = jamming_scene(9.81);
+    if !check_soft_port(python, &p, eps) {
+        return false;
+    }
+    let args: Vec<String> = [
+        "--scene",
+        "jamming",
+        "--eps",
+        &format!("{eps:e}"),
+        "--cycles",
+        &format!("{cycles}"),
+        "--atol-ratio",
+        &format!("{ATOL_RATIO:e}"),
+        "--ref-rtol",
+        &format!("{ref_rtol:e}"),
+        "--repeats",
+        &repeats.min(3).to_string(),
+        "--methods",
+        "Radau,BDF,LSODA,DOP853,RK45",
+        "--rtols",
+        "1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10",
+        "--explicit-rtols",
+        "1e-4,1e-8",
+        "--max-evals",
+        "400000",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
+    let Some(v) = peer(python, "stick_soft_scipy.py", &args) else {
+        println!("soft: SciPy peer not available");
+        return false;
+    };
+    let reference = v["reference"]["mean_velocity_mps"]
+        .as_f64()
+        .unwrap_or(f64::NAN);
+    let rel = |x: f64| ((x - reference) / reference).abs(); // formula: |v - v_ref| / |v_ref|
+                                                            // below a few times the reference's own uncertainty no accuracy can be told apart
+    let uncertainty = v["reference_uncertainty"].as_f64().unwrap_or(f64::INFINITY);
+    let floor = 3.0 * uncertainty;
+    println!(
+        "soft: self-locking scene, eps = {eps}, {cycles} periods from rest, atol = rtol x {ATOL_RATIO:e} on both sides"
+    );
+    println!(
+        "soft: reference (SciPy Radau, rtol = atol = {ref_rtol:e}): {reference:.12e} m/s in {:.3} s ({} evaluations)",
+        v["reference"]["wall_s"].as_f64().unwrap_or(f64::NAN),
+        v["reference"]["nfev"]
+    );
+    println!("soft: the reference's uncertainty (against Radau at ten times its rtol): {uncertainty:.1e}; accuracies below {floor:.1e} are not compared");
+    // the workbook's ladder: rtol 1e-3 .. 1e-10, half a decade apart
+    let mut ours = Vec::new();
+    for k in 6..=20 {
+        let rtol = 10f64.powf(-f64::from(k) / 2.0);
+        let control = StepControl::tol(rtol, rtol * ATOL_RATIO);
+        let run = || simulate_soft(&p, eps, cycles, Method::Rosenbrock23, control, 200_000);
+        // a run that stalls (1e5 accepted steps and more near one instant) is not repeated
+        let (first, wall1) = timed(1, run);
+        let (r, wall) = if first.outcome == SoftOutcome::Completed {
+            let (r, wall) = timed(repeats, run);
+            (r, wall.min(wall1))
+        } else {
+            (first, wall1)
+        };
+        if r.outcome != SoftOutcome::Completed {
+            println!("soft: workbook rtol {rtol:.1e}: {:?}", r.outcome);
+            continue;
+        }
+        ours.push(Point {
+            label: format!("Rosenbrock23 rtol {rtol:.1e}"),
+            rel: rel(r.mean_velocity_mps),
+            wall_s: wall,
+            evals: r.stats.rhs_evals,
+        });
+    }
+    let mut theirs = Vec::new();
+    println!("soft: | run | relative difference | wall time (s) | evaluations |");
+    for r in ours.iter() {
+        println!(
+            "soft: | workbook {} | {:.1e} | {:.3e} | {} |",
+            r.label, r.rel, r.wall_s, r.evals
+        );
+    }
+    for r in v["runs"].as_array().into_iter().flatten() {
+        let label = format!(
+            "{} rtol {:.0e}",
+            r["method"].as_str().unwrap_or("?"),
+            r["rtol"].as_f64().unwrap_or(f64::NAN)
+        );
+        let wall = r["wall_s"].as_f64().unwrap_or(f64::NAN);
+        let evals = r["nfev"].as_u64().unwrap_or(0);
+        if r["method"] == v["reference"]["method"] && r["rtol"] == v["reference"]["rtol"] {
+            println!("soft: | SciPy {label} | the reference itself | {wall:.3e} | {evals} |");
+            continue;
+        }
+        match r["relative_difference"].as_f64() {
+            Some(e) => {
+                println!("soft: | SciPy {label} | {e:.1e} | {wall:.3e} | {evals} |");
+                theirs.push(Point {
+                    label,
+                    rel: e,
+                    wall_s: wall,
+                    evals,
+                });
+            }
+            None => println!(
+                "soft: | SciPy {label} | {} | {wall:.3e} | {evals} |",
+                r["status"].as_str().unwrap_or("failed")
+            ),
+        }
+    }
+    println!("soft: each SciPy run against the workbook's cheapest run at least as accurate:");
+    for t in &theirs {
+        if t.rel < floor {
+            println!(
+                "soft:   SciPy {} ({:.1e}): below the reference's uncertainty",
+                t.label, t.rel
+            );
+            continue;
+        }
+        match cheapest(&ours, t.rel) {
+            Some(o) => println!(
+                "soft:   SciPy {} ({:.1e}, {:.3e} s) / workbook {} ({:.1e}, {:.3e} s) = {:.0}",
+                t.label,
+                t.rel,
+                t.wall_s,
+                o.label,
+                o.rel,
+                o.wall_s,
+                t.wall_s / o.wall_s
+            ),
+            None => println!(
+                "soft:   SciPy {} ({:.1e}): no workbook run that accurate",
+                t.label, t.rel
+            ),
+        }
+    }
+    println!("soft: at equal accuracy, the best SciPy choice against the workbook (cheapest run of each reaching it):");
+    for target in [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8] {
+        if target < floor {
+            println!("soft:   {target:.0e}: below the reference's uncertainty");
+            continue;
+        }
+        match (cheapest(&theirs, target), cheapest(&ours, target)) {
+            (Some(t), Some(o)) => println!(
+                "soft:   {target:.0e}: SciPy {} {:.3e} s ({} evaluations), workbook {} {:.3e} s ({} evaluations): ratio {}",
+                t.label, t.wall_s, t.evals, o.label, o.wall_s, o.evals, ratio(t.wall_s / o.wall_s)
+            ),
+            (t, o) => println!(
+                "soft:   {target:.0e}: not reached by {}",
+                match (t, o) {
+                    (None, None) => "either side",
+                    (None, _) => "SciPy",
+                    _ => "the workbook",
+                }
+            ),
+        }
+    }
+    true
+}
+
+/// A cost ratio: one decimal below 10, none above.
+fn ratio(x: f64) -> String {
+    if x < 10.0 {
+        format!("{x:.1}")
+    } else {
+        format!("{x:.0}")
     }
 }
