@@ -329,6 +329,8 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
     let mut guards0: Vec<f64> = Vec::with_capacity(8);
     let mut guards1: Vec<f64> = Vec::with_capacity(8);
     let mut fresh_mode = true;
+    // The directions of the mode's guards, asked once per mode entry.
+    let mut dirs: Vec<Direction> = Vec::with_capacity(8);
     // Evaluations spent on interpolants built after their step (DOP853's extension).
     let mut dense_evals = 0u64;
     let outcome = 'outer: loop {
@@ -337,6 +339,8 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
         }
         if fresh_mode {
             sys.guards(mode, t, &y, &mut guards0);
+            dirs.clear();
+            dirs.extend((0..guards0.len()).map(|i| sys.direction(mode, i)));
             fresh_mode = false;
             // A state or guard the model made NaN/inf (at the start, or by a transition):
             // end here, so the outcome says where it arose.
@@ -419,7 +423,7 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
             rates.update(sys, mode, st, &guards0, &guards1);
         }
         for i in 0..guards0.len() {
-            let dir = sys.direction(mode, i);
+            let dir = dirs[i];
             let mut ta = ts;
             let mut ga = guards0[i];
             let mut bracket = None;
