@@ -206,6 +206,22 @@ async function main() {
           });
           writeFileSync(join(shotDir, `${name}-exercises.png`), Buffer.from(ex.data, "base64"));
         }
+        // Sections asked for by name: BOOK_SHOTS="chapters/07-speed-vs-accuracy.html#8-the-stick-by-three-methods,..."
+        for (const want of (process.env.BOOK_SHOTS ?? "").split(",").filter((w) => w.startsWith(page + "#"))) {
+          const id = want.slice(page.length + 1);
+          const { result: at } = await s("Runtime.evaluate", {
+            expression: `(() => { const h = document.getElementById(${JSON.stringify(id)});
+              return h ? h.getBoundingClientRect().top + window.scrollY : -1; })()`,
+            returnByValue: true,
+          });
+          if (at.value < 0) throw new Error(`BOOK_SHOTS: no #${id} on ${page}`);
+          const sec = await s("Page.captureScreenshot", {
+            format: "png",
+            captureBeyondViewport: true,
+            clip: { x: 300, y: at.value - 20, width: 980, height: 2400, scale: 1 },
+          });
+          writeFileSync(join(shotDir, `${name}-${id}.png`), Buffer.from(sec.data, "base64"));
+        }
       }
       console.log(`ok ${page}: ${info.katexCount} formulas, ${info.links.length} links`);
     }
