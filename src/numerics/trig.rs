@@ -47,15 +47,40 @@ static TABLE: LazyLock<[(f64, f64); SIZE]> = LazyLock::new(|| {
     t
 });
 
+/// The table, held by reference: a caller that keeps one (a model that evaluates the
+/// plate's phase on every right-hand side) skips the lazy initialisation's check on
+/// every call ([`Table::sin_cos_turns`]; the same arithmetic as [`sin_cos_turns`]).
+#[derive(Clone, Copy)]
+pub struct Table(&'static [(f64, f64); SIZE]);
+
+impl std::fmt::Debug for Table {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Table({SIZE} points)")
+    }
+}
+
+/// The table (initialised on first use).
+pub fn table() -> Table {
+    Table(&TABLE)
+}
+
+impl Table {
+    /// `(sin(2 pi x), cos(2 pi x))` for an angle `x` in turns, as [`sin_cos_turns`].
+    #[inline]
+    pub fn sin_cos_turns(self, x: f64) -> (f64, f64) {
+        let u = x * SIZE as f64; // exact: SIZE is a power of two
+        if in_range(u) {
+            lookup(self.0, u)
+        } else {
+            (TAU * x).sin_cos()
+        }
+    }
+}
+
 /// `(sin(2 pi x), cos(2 pi x))` for an angle `x` in turns.
 #[inline]
 pub fn sin_cos_turns(x: f64) -> (f64, f64) {
-    let u = x * SIZE as f64; // exact: SIZE is a power of two
-    if in_range(u) {
-        table(u)
-    } else {
-        (TAU * x).sin_cos()
-    }
+    table().sin_cos_turns(x)
 }
 
 /// `(sin(x), cos(x))` for an angle `x` in radians.
@@ -63,7 +88,7 @@ pub fn sin_cos_turns(x: f64) -> (f64, f64) {
 pub fn sin_cos(x_rad: f64) -> (f64, f64) {
     let u = x_rad * (SIZE as f64 / TAU);
     if in_range(u) {
-        table(u)
+        lookup(&TABLE, u)
     } else {
         x_rad.sin_cos()
     }
@@ -76,12 +101,12 @@ fn in_range(u: f64) -> bool {
     u.abs() < (1u64 << 50) as f64
 }
 
-/// The sine and cosine of `2 pi u / SIZE`.
+/// The sine and cosine of `2 pi u / SIZE` from the table `t`.
 #[inline]
-fn table(u: f64) -> (f64, f64) {
+fn lookup(t: &[(f64, f64); SIZE], u: f64) -> (f64, f64) {
     let n = (u + ROUND) - ROUND; // formula: n = round(u), the nearest table point
     let d = (u - n) * (TAU / SIZE as f64); // formula: d = 2 pi (u - n)/SIZE, |d| <= pi/SIZE
-    let (sa, ca) = TABLE[(n as i64 as usize) & (SIZE - 1)];
+    let (sa, ca) = t[(n as i64 as usize) & (SIZE - 1)];
     let d2 = d * d;
     // formula: sin d = d (1 - d^2/6 (1 - d^2/20)), cos d = 1 - d^2/2 (1 - d^2/12)
     // (multiplications by the reciprocals: a division costs several of them)

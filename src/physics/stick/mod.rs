@@ -53,7 +53,7 @@ pub mod soft;
 mod system;
 pub mod timestepping;
 
-use crate::numerics::trig::{sin_cos, sin_cos_turns};
+use crate::numerics::trig::{sin_cos, Table};
 use std::f64::consts::TAU;
 
 pub use params::{
@@ -186,6 +186,9 @@ pub struct StickModel {
     pub frequency_hz: f64,
     /// The plate's phase `phi / (2 pi)` (turns).
     pub phase_turns: f64,
+    /// The sine-cosine table of [`crate::numerics::trig`], held so that the plate's phase,
+    /// evaluated on every right-hand side, skips the table's initialisation check.
+    pub trig: Table,
 }
 
 impl StickModel {
@@ -212,6 +215,7 @@ impl StickModel {
             inv_ml2: 1.0 / (p.mass_kg * p.length_m * p.length_m),
             frequency_hz: p.plate.omega_rad_s / TAU,
             phase_turns: p.plate.phase_rad / TAU,
+            trig: crate::numerics::trig::table(),
         }
     }
 
@@ -220,7 +224,9 @@ impl StickModel {
     pub fn plate(&self, t: f64) -> (f64, f64, f64) {
         let pl = &self.p.plate;
         // phase in turns: f t + phi/(2 pi) (the table's sine and cosine take turns)
-        let (s, c) = sin_cos_turns(self.frequency_hz * t + self.phase_turns);
+        let (s, c) = self
+            .trig
+            .sin_cos_turns(self.frequency_hz * t + self.phase_turns);
         let w = pl.omega_rad_s;
         let d = pl.amplitude_m;
         (d * s, d * w * c, -d * w * w * s) // formula: z_s = delta cos(wt): phase pi/2 in sin(wt + phi)
