@@ -2,7 +2,9 @@
 //! at the ends of each step, and the call into
 //! [`hidden_crossing`](crate::numerics::events::hidden_crossing).
 //!
-//! A guard's rate along the trajectory is its directional difference along the flow,
+//! A guard's rate along the trajectory is the model's own
+//! ([`HybridSystem::guard_rates`], in closed form, from `f(t1, y1)`), or else its
+//! directional difference along the flow,
 //! `g' = (g(t + d, y + d f(t, y)) - g(t, y)) / d` with `d = h 2^-20`: one evaluation of
 //! all guards per step, since `f(t1, y1)` is the integrator's next first stage. The
 //! forward difference is off by `d g''/2`, a relative `2^-21 h / tau` of the rate for a
@@ -66,7 +68,7 @@ impl Rates {
         let d = (st.t1 - st.t0) * RATE_STEP;
         if !self.have_r0 {
             let f0 = &st.f0;
-            directional(
+            rates_along_flow(
                 sys,
                 mode,
                 st.t0,
@@ -79,7 +81,7 @@ impl Rates {
             );
             self.have_r0 = true;
         }
-        directional(
+        rates_along_flow(
             sys,
             mode,
             st.t1,
@@ -129,6 +131,17 @@ impl Rates {
         if !self.on || !self.have_r0 || i >= self.r1.len() {
             return None;
         }
+        let (a, b) = self.ends(i, (ta, ga), (tb, gb));
+        hermite_root(&a, &b)
+    }
+
+    /// Guard `i` at the step's ends `(ta, ga)`, `(tb, gb)` with its rates there.
+    fn ends(
+        &self,
+        i: usize,
+        (ta, ga): (f64, f64),
+        (tb, gb): (f64, f64),
+    ) -> (GuardPoint, GuardPoint) {
         let a = GuardPoint {
             t: ta,
             g: ga,
@@ -139,7 +152,7 @@ impl Rates {
             g: gb,
             rate: self.r1[i],
         };
-        hermite_root(&a, &b)
+        (a, b)
     }
 
     /// The step was kept whole: its end is the next step's start.
@@ -170,16 +183,7 @@ impl Rates {
         if !self.have_r0 || !self.suspect(i) {
             return None;
         }
-        let a = GuardPoint {
-            t: ta,
-            g: ga,
-            rate: self.r0[i],
-        };
-        let b = GuardPoint {
-            t: tb,
-            g: gb,
-            rate: self.r1[i],
-        };
+        let (a, b) = self.ends(i, (ta, ga), (tb, gb));
         let d = (tb - ta) * RATE_STEP;
         let at = |s: f64| {
             let g = sys.guard(mode, i, s, &eval(s));
@@ -201,7 +205,7 @@ impl Rates {
 /// The model's own guard rates ([`HybridSystem::guard_rates`]), or else
 /// `out[i] = (g_i(t + d, y + d f) - g[i]) / d'` with `d'` the representable time step.
 #[allow(clippy::too_many_arguments)]
-fn directional<S: HybridSystem<N>, const N: usize>(
+fn rates_along_flow<S: HybridSystem<N>, const N: usize>(
     sys: &S,
     mode: S::Mode,
     t: f64,

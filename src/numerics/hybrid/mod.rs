@@ -406,7 +406,9 @@ pub fn simulate<S: HybridSystem<N>, const N: usize>(
                 None => sys.exact(mode, ts, &ys, s).expect("closed form"),
             }
         };
-        // The same for the guards, which read only the first GUARD_ARGS components.
+        // The same for the guards, which read only the first GUARD_ARGS components (two
+        // closures, not one with the count as an argument: the count must stay a constant
+        // where the interpolant is inlined, or the guard search costs 3.6 % more).
         let geval = |s: f64| -> [f64; N] {
             match &step {
                 Some(st) => st.eval_first(&flow, s, S::GUARD_ARGS),

@@ -3,7 +3,7 @@
 // Index loops run over several arrays of the same length at once.
 #![allow(clippy::needless_range_loop)]
 
-use super::{OdeSystem, Stats};
+use super::{OdeError, OdeSystem, Stats};
 
 /// `y + h * sum(c_j k_j)` for up to six stages.
 #[inline]
@@ -52,6 +52,21 @@ impl Tol {
     pub(super) fn scale(self, a: f64, b: f64) -> f64 {
         self.atol + self.rtol * a.abs().max(b.abs()) // formula: sc = atol + rtol max(|y0|, |y1|)
     }
+}
+
+/// Where a trial step of length `h` from `t` towards `t + span` ends: `(h, t1, last)`.
+/// A step within 1e-12 of the span goes onto its end exactly (`last`). A final step may
+/// be as short as it needs to be (a few ulps before a breakpoint); any other step this
+/// short means the error control has collapsed.
+pub(super) fn place_step(t: f64, span: f64, h: f64) -> Result<(f64, f64, bool), OdeError> {
+    let last = h >= span * (1.0 - 1e-12);
+    if last {
+        return Ok((span, t + span, true));
+    }
+    if h <= 16.0 * f64::EPSILON * t.abs().max(1e-300) {
+        return Err(OdeError::StepTooSmall { t_s: t });
+    }
+    Ok((h, t + h, false))
 }
 
 /// Hairer's starting-step heuristic (`hinit`) for a method of order `order`.

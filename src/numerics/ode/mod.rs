@@ -19,7 +19,7 @@ mod dopri5;
 mod rosenbrock;
 mod step;
 
-use common::{comb, finite, initial_step, stage_arg, Tol};
+use common::{comb, finite, initial_step, place_step, stage_arg, Tol};
 use step::Interp;
 pub use step::Step;
 
@@ -443,17 +443,8 @@ impl<const N: usize> Integrator<N> {
         }
         .min(h_max);
         loop {
-            let last = h >= span * (1.0 - 1e-12);
-            if last {
-                h = span;
-            }
-            let t1 = if last { t + span } else { t + h };
-            // A final step onto t_max may be as short as it needs to be (a few ulps
-            // before a breakpoint); any other step this short means the error control
-            // has collapsed.
-            if !last && h <= 16.0 * f64::EPSILON * t.abs().max(1e-300) {
-                return Err(OdeError::StepTooSmall { t_s: t });
-            }
+            let (h_placed, t1, last) = place_step(t, span, h)?;
+            h = h_placed;
             let (y1, e) = self.trial(sys, t, y, &f0, h, tol);
             if e.is_finite() && e <= 1.0 {
                 // formula: h_new = h min(fac_max, max(fac_min, 0.9 e^(-1/(q+1))))

@@ -26,7 +26,7 @@
 // Index loops run over several arrays of the same length at once.
 #![allow(clippy::needless_range_loop)]
 
-use super::common::{finite, initial_step, Tol};
+use super::common::{finite, initial_step, place_step, Tol};
 use super::dopri5::error_norm;
 use super::step::Interp;
 use super::{Integrator, OdeError, OdeSystem};
@@ -132,14 +132,8 @@ impl<const N: usize> Integrator<N> {
             }
         };
         loop {
-            let last = h >= span * (1.0 - 1e-12);
-            if last {
-                h = span;
-            }
-            let t1 = if last { t + span } else { t + h };
-            if !last && h <= 16.0 * f64::EPSILON * t.abs().max(1e-300) {
-                return Err(OdeError::StepTooSmall { t_s: t });
-            }
+            let (h_placed, t1, last) = place_step(t, span, h)?;
+            h = h_placed;
             let trial = attempt(sys, t, y, &f0, (&j, &tv), h);
             self.stats.rhs_evals += 2;
             let e = match (&trial, tol) {

@@ -18,10 +18,31 @@ use crate::numerics::events::Direction;
 use crate::numerics::hybrid::{HybridSystem, Transition};
 use std::f64::consts::FRAC_PI_2;
 
-fn tr(n: Next) -> Transition<Mode, StickStop, NSTATE> {
-    match n {
-        Next::To(mode, state) => Transition::To { mode, state },
-        Next::Stop(x) => Transition::Stop(x),
+impl StickModel {
+    /// The transition to `next` decided at `(t, y)` (`y` the state the event was found
+    /// at, made canonical). The energy accumulators restart from zero in every mode
+    /// (keeping them small keeps their share of the error control honest); the new state
+    /// carries only what the reset itself added (impulse work, impact loss), and the run's
+    /// observer sums them. The carried plate height and rod direction start every mode
+    /// exact. Shared by the physical rules and the printed ones.
+    pub(super) fn transition(
+        &self,
+        next: Next,
+        t: f64,
+        y: &State,
+    ) -> Transition<Mode, StickStop, NSTATE> {
+        match next {
+            Next::To(mode, mut state) => {
+                for k in W_PLATE..=D_IMPACT {
+                    state[k] -= y[k];
+                }
+                Transition::To {
+                    mode,
+                    state: self.canonical(mode, t, &state),
+                }
+            }
+            Next::Stop(x) => Transition::Stop(x),
+        }
     }
 }
 
@@ -104,7 +125,7 @@ impl HybridSystem<NSTATE> for StickModel {
         y: &State,
     ) -> Transition<Mode, StickStop, NSTATE> {
         let y = &self.canonical(mode, t, y);
-        let mut next = tr(match (mode, i) {
+        let next = match (mode, i) {
             (Mode::Flight, 0) => self.landing(t, y),
             (Mode::Flight, _) => Next::Stop(StickStop::Invalid(format!(
                 "C went below the plate in flight at t = {t:.6} s (a landing was missed)"
@@ -121,18 +142,8 @@ impl HybridSystem<NSTATE> for StickModel {
             _ => Next::Stop(StickStop::Invalid(format!(
                 "C slips against the friction force at t = {t:.6} s: no consistent slide"
             ))),
-        });
-        // The energy accumulators restart from zero in every mode (keeping them small keeps
-        // their share of the error control honest); the new state carries only what the
-        // reset itself added (impulse work, impact loss). The run's observer sums them.
-        // The carried plate height and rod direction start every mode exact.
-        if let Transition::To { mode, state } = &mut next {
-            for k in W_PLATE..=D_IMPACT {
-                state[k] -= y[k];
-            }
-            *state = self.canonical(*mode, t, state);
-        }
-        next
+        };
+        self.transition(next, t, y)
     }
 
     fn max_step(&self, mode: Mode, t: f64, y: &State) -> f64 {

@@ -35,7 +35,7 @@
 mod algorithms;
 
 use super::rules::Next;
-use super::{Mode, State, StickModel, StickStop, D_IMPACT, NSTATE, OM, TH, VXC, VZC, W_PLATE, ZC};
+use super::{Mode, State, StickModel, StickStop, NSTATE, OM, TH, VXC, VZC, ZC};
 use crate::numerics::events::Direction;
 use crate::numerics::hybrid::{HybridSystem, Transition};
 use std::cell::{Cell, RefCell};
@@ -393,18 +393,8 @@ impl HybridSystem<NSTATE> for PrintedStick {
                 ))),
             }
         };
-        let mut next = match next {
-            Next::To(mode, state) => Transition::To { mode, state },
-            Next::Stop(x) => Transition::Stop(x),
-        };
         // the energy accumulators restart in every mode, as in the physical rules
-        if let Transition::To { mode, state } = &mut next {
-            for k in W_PLATE..=D_IMPACT {
-                state[k] -= y[k];
-            }
-            *state = self.m.canonical(*mode, t, state);
-        }
-        next
+        self.m.transition(next, t, y)
     }
 
     fn max_step(&self, mode: Mode, t: f64, y: &State) -> f64 {
