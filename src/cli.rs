@@ -22,7 +22,12 @@ use std::path::{Path, PathBuf};
 /// Exit codes: 0 ran and no claim failed (also when the reader closes stdout early,
 /// as `workbook all | head`); 1 some claim failed (a regression of the workbook); 2 bad
 /// input: a flag outside its validated range, or a run beyond the work budget; 3 output
-/// cannot be written (the --figures folder is checked before any computation).
+/// cannot be written (the --figures folder is checked before any computation; every file
+/// is written whole or not at all); 4 `render --check` found a stale table.
+///
+/// Figures: the default full run of a chapter (or `all`) rewrites the committed
+/// figures/ byte-identical; a run with --quick or any other flag writes them to out/
+/// (ignored by git) unless --figures DIR is given.
 ///
 /// Every physical flag accepts exactly the range over which the chapter's checks are
 /// validated (each chapter's --help gives the range and its reason; the tests run each
@@ -128,42 +133,56 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    let parsed = command()
+    let cmd = command();
+    let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+    if let Some(line) = non_utf8_value(&args) {
+        let _ = writeln!(err, "{line}");
+        return 2;
+    }
+    let args = join_negative_values(&cmd, args);
+    let parsed = cmd
         .try_get_matches_from(args)
-        .and_then(|m| Cli::from_arg_matches(&m).map(|c| (c, given_globals(&m))));
-    let (cli, given) = match parsed {
+        .and_then(|m| Cli::from_arg_matches(&m).map(|c| (c, given_globals(&m), exploring(&m))));
+    let (mut cli, given, exploring) = match parsed {
         Ok(c) => c,
         Err(e) => {
             use clap::error::ErrorKind;
             return match e.kind() {
-                ErrorKind::DisplayHelp
-                | ErrorKind::DisplayVersion
-                | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
                     let _ = write!(out, "{}", e.render());
-                    if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
-                        2
-                    } else {
-                        0
-                    }
+                    0
+                }
+                ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+                    // no subcommand: the usage is the error message (stderr, exit 2)
+                    let _ = write!(err, "{}", e.render());
+                    2
                 }
                 _ => {
-                    // One line: clap's first line names the flag and the value.
-                    let text = e.render().to_string();
-                    let first = text
-                        .lines()
-                        .find(|l| !l.trim().is_empty())
-                        .unwrap_or("error: bad arguments");
-                    let _ = writeln!(err, "{first} (see --help)");
+                    let _ = writeln!(err, "{} (see --help)", one_line(&e.render().to_string()));
                     2
                 }
             };
         }
     };
+    let redirected = exploring && !given.contains(&"figures") && !cli.no_figures;
+    if redirected {
+        // Exploring keeps the checkout clean: the committed figures/ hold the default
+        // full runs that the course's captions describe.
+        cli.figures = PathBuf::from(EXPLORE_FIGURES);
+    }
     match refuse_unused(&cli, &given)
         .and_then(|()| dispatch(&cli, out))
         .and_then(|code| out.flush().map(|()| code).map_err(Into::into))
     {
-        Ok(code) => code,
+        Ok(code) => {
+            if redirected && computes(&cli.command) {
+                let _ = writeln!(
+                    err,
+                    "note: the figures of this non-default run are in {EXPLORE_FIGURES}/ (figures/ keeps the default runs; --figures DIR chooses)"
+                );
+            }
+            code
+        }
         Err(WorkbookError::BrokenPipe) => 0, // the reader closed stdout: end quietly
         Err(e) => {
             let _ = writeln!(err, "{e}");
@@ -192,6 +211,108 @@ fn given_globals(m: &clap::ArgMatches) -> Vec<&'static str> {
                 .any(|mm| mm.value_source(id) == Some(ValueSource::CommandLine))
         })
         .collect()
+}
+
+/// Folder for the figures of runs with `--quick` or any non-default physical flag
+/// (unless `--figures` is given): `out/`, ignored by git.
+pub const EXPLORE_FIGURES: &str = "out";
+
+/// Flags that change what is printed or saved but not what is computed: a run with only
+/// these still writes the committed figures.
+const OUTPUT_ONLY: [&str; 4] = ["json", "events", "figures", "no_figures"];
+
+/// Whether the command line asks for anything but the default full run: `--quick`, a
+/// physical flag, a scene or method, `--g-mps2` (every flag a user typed except
+/// [`OUTPUT_ONLY`] ones).
+fn exploring(m: &clap::ArgMatches) -> bool {
+    use clap::parser::ValueSource;
+    let typed = |mm: &clap::ArgMatches| {
+        mm.ids().any(|id| {
+            let id = id.as_str();
+            !OUTPUT_ONLY.contains(&id) && mm.value_source(id) == Some(ValueSource::CommandLine)
+        })
+    };
+    typed(m) || m.subcommand().is_some_and(|(_, sub)| typed(sub))
+}
+
+/// Whether a subcommand runs chapters (and may write figures).
+fn computes(c: &Command) -> bool {
+    !matches!(c, Command::List | Command::Render { .. })
+}
+
+/// Clap's message as one line: its first paragraph (the error, naming the flag and the
+/// value), with a line break inside the value shown as `\n`.
+fn one_line(rendered: &str) -> String {
+    let first = rendered
+        .trim_start()
+        .split("\n\n")
+        .next()
+        .unwrap_or("error: bad arguments");
+    let line = first.trim_end().replace('\r', "\\r").replace('\n', "\\n");
+    if line.is_empty() {
+        "error: bad arguments".into()
+    } else {
+        line
+    }
+}
+
+/// The error line for an argument that is not UTF-8, naming its flag (`--x VALUE` or
+/// `--x=VALUE`); clap's own message names none.
+fn non_utf8_value(args: &[OsString]) -> Option<String> {
+    let i = args.iter().skip(1).position(|a| a.to_str().is_none())? + 1;
+    let bytes = args[i].as_encoded_bytes();
+    let flag = if bytes.starts_with(b"--") {
+        let end = bytes.iter().position(|&b| b == b'=').unwrap_or(bytes.len());
+        String::from_utf8_lossy(&bytes[..end]).into_owned()
+    } else {
+        match args[i - 1].to_str() {
+            Some(prev) if prev.starts_with("--") => prev.to_string(),
+            _ => "an argument".to_string(),
+        }
+    };
+    Some(format!(
+        "error: invalid value {:?} for {flag}: not valid UTF-8 text (see --help)",
+        args[i].to_string_lossy()
+    ))
+}
+
+/// Joins a value flag and a following negative number into one argument
+/// (`--theta0-rad -.3` into `--theta0-rad=-.3`): clap takes a leading `-` for a flag
+/// unless the text looks like a plain decimal, and refuses `-.5` or `-3e-1`. Only a
+/// token that parses as a number is joined, so no flag can be swallowed.
+fn join_negative_values(cmd: &clap::Command, args: Vec<OsString>) -> Vec<OsString> {
+    fn value_flags(cmd: &clap::Command, names: &mut Vec<String>) {
+        for a in cmd.get_arguments() {
+            if let (Some(long), true) = (a.get_long(), a.get_action().takes_values()) {
+                names.push(format!("--{long}"));
+            }
+        }
+        for sub in cmd.get_subcommands() {
+            value_flags(sub, names);
+        }
+    }
+    let mut names = Vec::new();
+    value_flags(cmd, &mut names);
+    let mut out: Vec<OsString> = Vec::with_capacity(args.len());
+    let mut it = args.into_iter().peekable();
+    while let Some(a) = it.next() {
+        let is_value_flag = a.to_str().is_some_and(|s| names.iter().any(|n| n == s));
+        let next_is_negative = it
+            .peek()
+            .and_then(|n| n.to_str())
+            .is_some_and(|n| n.starts_with('-') && n.len() > 1 && n.parse::<f64>().is_ok());
+        match (is_value_flag, next_is_negative, it.peek().cloned()) {
+            (true, true, Some(v)) => {
+                let mut joined = a.clone();
+                joined.push("=");
+                joined.push(&v);
+                it.next();
+                out.push(joined);
+            }
+            _ => out.push(a),
+        }
+    }
+    out
 }
 
 /// Refuses a global flag where it would mean nothing (every flag means something
@@ -254,10 +375,7 @@ fn check_figures(root: &Path) -> error::Result<()> {
         return Err(fail("it exists and is not a folder".into()));
     }
     std::fs::create_dir_all(root).map_err(|e| fail(format!("cannot create the folder ({e})")))?;
-    let probe = root.join(".workbook-write-check");
-    std::fs::write(&probe, b"")
-        .and_then(|()| std::fs::remove_file(&probe))
-        .map_err(|e| fail(format!("the folder is not writable ({e})")))
+    crate::output::probe_folder(root).map_err(|e| fail(format!("the folder is not writable ({e})")))
 }
 
 /// The report as JSON, refused if it carries a non-finite number (JSON has none; a
@@ -274,8 +392,7 @@ fn checked(report: &ChapterReport) -> error::Result<&ChapterReport> {
 
 fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
     let ctx = cli.context()?;
-    let computes = !matches!(cli.command, Command::List | Command::Render { .. });
-    if let (true, Some(root)) = (computes, &ctx.figures_root) {
+    if let (true, Some(root)) = (computes(&cli.command), &ctx.figures_root) {
         check_figures(root)?;
     }
     let report = match &cli.command {

@@ -91,7 +91,8 @@ impl fmt::Display for WorkbookError {
                 "error: the run needs {estimate}, beyond the budget of {budget}: lower {flag} (or pass --allow-long-runs)"
             ),
             WorkbookError::Output { flag, path, why } => {
-                write!(f, "error: cannot write figures to {path} given by {flag}: {why}")
+                let what = if flag == "--figures" { "figures to " } else { "" };
+                write!(f, "error: cannot write {what}{path} given by {flag}: {why}")
             }
             WorkbookError::Invalid(why) => write!(
                 f,

@@ -18,6 +18,7 @@ pub mod chapters;
 pub mod cli;
 pub mod error;
 pub mod numerics;
+pub mod output;
 pub mod physics;
 pub mod plot;
 pub mod render;

@@ -17,7 +17,7 @@ use crate::chapters::{self, Context, CHAPTERS};
 use crate::error::{Result, WorkbookError};
 use crate::report::ChapterReport;
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 const BEGIN: &str = "<!-- BEGIN generated:";
 const END: &str = "<!-- END -->";
@@ -79,49 +79,87 @@ pub fn table_of(report: &ChapterReport, name: &str) -> Option<String> {
     }
 }
 
+/// Exit code of `render --check` when a generated table is out of date: 4, apart from
+/// 1 (a claim failed, a regression), 2 (bad input) and 3 (output cannot be written).
+pub const STALE_EXIT: i32 = 4;
+
 /// Refreshes (or with `check`, verifies) every chapter text in `dir`, and the block
 /// `findings` of the README beside it (`dir/../README.md`, generated from the claims of
 /// every chapter by [`crate::report::findings_markdown`]). Returns the exit code: 0 when
-/// up to date (or refreshed), 1 when `check` found a stale table.
+/// up to date (or refreshed), [`STALE_EXIT`] when `check` found a stale table.
+///
+/// `dir` is checked before any chapter runs: it must hold course text with generated
+/// blocks (else bad input, exit 2), and without `check` every file to refresh must be
+/// writable (else exit 3, naming the file).
 pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
-    let ctx = Context::headless(false);
-    let mut stale = 0;
-    let mut reports = Vec::new();
-    let mut seen = 0;
-    for info in CHAPTERS.iter() {
-        let report = chapters::run_default(info.id, &ctx)?;
-        let path = dir.join(info.markdown_path().file_name().expect("file name"));
-        if let Ok(text) = std::fs::read_to_string(&path) {
-            if !block_names(&text).is_empty() {
-                seen += 1;
-                let new = fill_blocks(&text, &|n| table_of(&report, n))
-                    .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
-                stale += refresh(&path, &text, &new, check, out)?;
-            }
-        }
-        reports.push(report);
-    }
-    let readme = dir
+    let texts = course_texts(dir, check)?;
+    let readme_path = dir
         .parent()
         .unwrap_or_else(|| Path::new(""))
         .join("README.md");
-    if let Ok(text) = std::fs::read_to_string(&readme) {
-        if !block_names(&text).is_empty() {
-            let findings = crate::report::findings_markdown(&reports);
-            let new = fill_blocks(&text, &|n| (n == "findings").then(|| findings.clone()))
-                .map_err(|e| WorkbookError::Io(format!("{}: {e}", readme.display())))?;
-            stale += refresh(&readme, &text, &new, check, out)?;
+    let readme = std::fs::read_to_string(&readme_path)
+        .ok()
+        .filter(|t| !block_names(t).is_empty());
+    let ctx = Context::headless(false);
+    let mut stale = 0;
+    let mut reports = Vec::new();
+    for info in CHAPTERS.iter() {
+        let text = texts.iter().find(|(p, _)| *p == chapter_path(dir, info));
+        if text.is_none() && readme.is_none() {
+            continue; // neither its text nor the README's findings need this chapter
         }
+        let report = chapters::run_default(info.id, &ctx)?;
+        if let Some((path, text)) = text {
+            let new = fill_blocks(text, &|n| table_of(&report, n))
+                .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
+            stale += refresh(path, text, &new, check, out)?;
+        }
+        reports.push(report);
     }
-    if seen == 0 {
-        // Nothing checked is not "up to date": a wrong --dir must not pass.
+    if let Some(text) = readme {
+        let findings = crate::report::findings_markdown(&reports);
+        let new = fill_blocks(&text, &|n| (n == "findings").then(|| findings.clone()))
+            .map_err(|e| WorkbookError::Io(format!("{}: {e}", readme_path.display())))?;
+        stale += refresh(&readme_path, &text, &new, check, out)?;
+    }
+    Ok(if stale > 0 { STALE_EXIT } else { 0 })
+}
+
+/// The course text of chapter `info` in `dir`.
+fn chapter_path(dir: &Path, info: &chapters::ChapterInfo) -> PathBuf {
+    dir.join(info.markdown_path().file_name().expect("file name"))
+}
+
+/// The chapter texts in `dir` that hold generated blocks, read before any computation:
+/// none is bad input (a wrong `--dir` must not pass as "up to date"); a file that
+/// `render` would have to rewrite and cannot is an output error naming it.
+fn course_texts(dir: &Path, check: bool) -> Result<Vec<(PathBuf, String)>> {
+    let mut texts = Vec::new();
+    for info in CHAPTERS.iter() {
+        let path = chapter_path(dir, info);
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            continue;
+        };
+        if block_names(&text).is_empty() {
+            continue;
+        }
+        if !check {
+            crate::output::probe_file(&path).map_err(|e| WorkbookError::Output {
+                flag: "--dir".into(),
+                path: path.display().to_string(),
+                why: e.to_string(),
+            })?;
+        }
+        texts.push((path, text));
+    }
+    if texts.is_empty() {
         return Err(WorkbookError::bad_input(
             "--dir",
             dir.display(),
             "a folder holding the course text chapters/NN-<id>.md with generated blocks (none found there)",
         ));
     }
-    Ok(i32::from(stale > 0))
+    Ok(texts)
 }
 
 /// Writes `new` to `path` (or with `check` reports it stale) when it differs from
@@ -135,7 +173,7 @@ fn refresh(path: &Path, text: &str, new: &str, check: bool, out: &mut dyn Write)
         writeln!(out, "stale: {} (run `workbook render`)", path.display())?;
         return Ok(1);
     }
-    std::fs::write(path, new)?;
+    crate::output::write_atomic(path, new.as_bytes()).map_err(WorkbookError::Io)?;
     writeln!(out, "updated: {}", path.display())?;
     Ok(0)
 }

@@ -467,3 +467,194 @@ fn events_csv_of_the_authors_scene_has_its_83_transitions() {
         "{err}"
     );
 }
+
+#[test]
+fn bare_workbook_prints_its_usage_on_stderr_and_exits_2() {
+    let (code, out, err) = run(&[]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty(), "{out}");
+    assert!(err.contains("Usage: workbook"), "{err}");
+}
+
+#[test]
+fn negative_numbers_are_values_in_every_spelling() {
+    for v in ["-3e-1", "-1e-3", "-.5", "-30"] {
+        let (code, out, err) = run(&["effective-mass", "--angle-deg", v, "--json", "--no-figures"]);
+        assert_eq!(code, 0, "--angle-deg {v}: {err}");
+        let j: Value = serde_json::from_str(out.trim()).unwrap();
+        let given: f64 = v.parse().unwrap();
+        assert_eq!(j["params"]["angle_deg"].as_f64(), Some(given), "{v}");
+    }
+    let (code, _, err) = run(&[
+        "stick-state-machine",
+        "--theta0-rad",
+        "-.3",
+        "--quick",
+        "--no-figures",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    // a negative number outside the range is refused by the range, naming the flag
+    assert_bad_input(
+        &["effective-mass", "--angle-deg", "-1e3", "--no-figures"],
+        "--angle-deg",
+    );
+    // a value with a line break or invalid UTF-8 still gets one line naming the flag
+    assert_bad_input(&["effective-mass", "--angle-deg", "1\n2"], "--angle-deg");
+    let bad: std::ffi::OsString = std::os::unix::ffi::OsStringExt::from_vec(b"\xff".to_vec());
+    let mut out = Vec::new();
+    let mut err = Vec::new();
+    let args: Vec<std::ffi::OsString> = vec![
+        "workbook".into(),
+        "effective-mass".into(),
+        "--mu".into(),
+        bad,
+    ];
+    let code = locomotion_workbook::cli::run_cli(args, &mut out, &mut err);
+    let err = String::from_utf8_lossy(&err);
+    assert_eq!(code, 2);
+    assert!(
+        err.trim_end().lines().count() == 1 && err.contains("--mu"),
+        "{err}"
+    );
+}
+
+#[test]
+fn help_ranges_are_the_accepted_ranges() {
+    // horizontal-shaking --bias: 0, or 1e-6 <= bias < 1 (the help says so)
+    let (_, help, _) = run(&["horizontal-shaking", "--help"]);
+    assert!(help.contains("1e-6 <= bias < 1"), "{help}");
+    assert_bad_input(
+        &["horizontal-shaking", "--bias", "1e-7", "--no-figures"],
+        "--bias",
+    );
+    // stick-state-machine --duration-s: omega t Gamma <= 1.5e5, exactly (265 s meets it
+    // at 30 Hz and Gamma = 3: 1.4992e5; 265.3 does not: 1.5009e5)
+    let (code, _, err) = run(&[
+        "stick-state-machine",
+        "--duration-s",
+        "265",
+        "--quick",
+        "--no-figures",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_bad_input(
+        &[
+            "stick-state-machine",
+            "--duration-s",
+            "265.3",
+            "--quick",
+            "--no-figures",
+        ],
+        "--duration-s",
+    );
+}
+
+#[test]
+fn a_refused_run_leaves_an_existing_events_file_untouched() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("events.csv");
+    std::fs::write(&path, "keep me\n").unwrap();
+    let p = path.to_str().unwrap();
+    // bad input, and a run over the work budget: both refused before the run
+    assert_bad_input(&["stick-state-machine", "--events", p, "--mu", "5"], "--mu");
+    let (code, _, err) = run(&[
+        "stick-state-machine",
+        "--events",
+        p,
+        "--gamma",
+        "0",
+        "--frequency-hz",
+        "1000",
+        "--duration-s",
+        "10000",
+        "--no-figures",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "keep me\n");
+    // an accepted run replaces it whole and says how many switches it holds
+    let (code, out, err) = run(&[
+        "stick-state-machine",
+        "--events",
+        p,
+        "--quick",
+        "--json",
+        "--no-figures",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(out.trim()).unwrap();
+    let rows = std::fs::read_to_string(&path).unwrap().lines().count() - 1;
+    assert_eq!(v["results"]["events_written"].as_f64(), Some(rows as f64));
+    assert_eq!(v["results"]["events_total"], v["results"]["events_written"]);
+    // a folder is not a file: exit 3 naming --events and the path, not "figures"
+    let d = dir.path().to_str().unwrap();
+    let (code, _, err) = run(&[
+        "stick-state-machine",
+        "--events",
+        d,
+        "--quick",
+        "--no-figures",
+    ]);
+    assert_eq!(code, 3, "{err}");
+    assert!(
+        err.contains("--events") && err.contains(d) && !err.contains("figures"),
+        "{err}"
+    );
+}
+
+#[test]
+fn exploring_writes_figures_outside_the_committed_folder() {
+    // Run from a scratch folder: the default run writes figures/<id>/, a run with a
+    // non-default flag or --quick writes out/<id>/ and says so, --figures DIR wins.
+    let dir = tempfile::tempdir().unwrap();
+    let bin = env!("CARGO_BIN_EXE_workbook");
+    let go = |args: &[&str]| {
+        let o = std::process::Command::new(bin)
+            .args(args)
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0), "{args:?}");
+        String::from_utf8_lossy(&o.stderr).into_owned()
+    };
+    let err = go(&["effective-mass", "--angle-deg", "30"]);
+    assert!(err.contains("out/"), "{err}");
+    assert!(dir.path().join("out/effective-mass").is_dir());
+    assert!(!dir.path().join("figures").exists());
+    go(&["effective-mass", "--quick"]);
+    assert!(!dir.path().join("figures").exists());
+    let err = go(&["effective-mass", "--json"]);
+    assert!(err.is_empty(), "{err}");
+    assert!(dir.path().join("figures/effective-mass").is_dir());
+    go(&["effective-mass", "--quick", "--figures", "mine"]);
+    assert!(dir.path().join("mine/effective-mass").is_dir());
+}
+
+#[test]
+fn render_says_stale_with_its_own_exit_code_and_names_a_read_only_file() {
+    use locomotion_workbook::render::STALE_EXIT;
+    let dir = tempfile::tempdir().unwrap();
+    let name = CHAPTERS[0].markdown_path();
+    let src = std::fs::read_to_string(&name).unwrap();
+    let copy = dir.path().join(name.file_name().unwrap());
+    let marker = "<!-- BEGIN generated:claims -->\n";
+    assert!(src.contains(marker));
+    std::fs::write(
+        &copy,
+        src.replacen(marker, &format!("{marker}stale row\n"), 1),
+    )
+    .unwrap();
+    let d = dir.path().to_str().unwrap();
+    let (code, out, _) = run(&["render", "--check", "--dir", d]);
+    assert_eq!(code, STALE_EXIT, "{out}");
+    assert_ne!(STALE_EXIT, 1);
+    assert!(out.contains("stale:"), "{out}");
+    let mut perm = std::fs::metadata(&copy).unwrap().permissions();
+    perm.set_readonly(true);
+    std::fs::set_permissions(&copy, perm).unwrap();
+    let (code, _, err) = run(&["render", "--dir", d]);
+    assert_eq!(code, 3, "{err}");
+    assert!(err.contains(copy.to_str().unwrap()), "{err}");
+    assert!(std::fs::read_to_string(&copy)
+        .unwrap()
+        .contains("stale row"));
+}

@@ -224,6 +224,29 @@ fn pair_value(f: &Flag, kind: Kind, rng: &mut Rng) -> String {
     format!("{neg}{a},{b}")
 }
 
+/// The enumerated flags of `chapter` (`--method`, `--scene`, ...) with their values,
+/// from the clap definition itself.
+fn enum_flags(chapter: &str) -> Vec<(String, Vec<String>)> {
+    let cmd = locomotion_workbook::cli::command();
+    let Some(sub) = cmd.find_subcommand(chapter) else {
+        return Vec::new();
+    };
+    sub.get_arguments()
+        .filter(|a| !a.is_global_set() && !a.get_possible_values().is_empty())
+        .filter_map(|a| {
+            let values: Vec<String> = a
+                .get_possible_values()
+                .iter()
+                .map(|v| v.get_name().to_string())
+                .collect();
+            Some((format!("--{}", a.get_long()?), values))
+        })
+        .collect()
+}
+
+/// One to four numeric flags (each drawn inside, at an end, just outside or special),
+/// sometimes an enumerated flag and, for the stick, an rtol decade from 1e-2 to 1e-14;
+/// values written `--flag=value` or `--flag value` (negative numbers included).
 fn make_case(rng: &mut Rng, table: &[(&'static str, Vec<Flag>)]) -> Case {
     let mut i = (rng.next() % table.len() as u64) as usize;
     if table[i].0 == "vertical-shaking" && rng.unit() < 0.6 {
@@ -232,7 +255,11 @@ fn make_case(rng: &mut Rng, table: &[(&'static str, Vec<Flag>)]) -> Case {
         i = (rng.next() % table.len() as u64) as usize;
     }
     let (chapter, flags) = &table[i];
-    let n = if rng.unit() < 0.7 { 1 } else { 2 };
+    let n = if rng.unit() < 0.4 {
+        1
+    } else {
+        2 + (rng.next() % 3) as usize
+    };
     let mut args = vec![
         chapter.to_string(),
         "--quick".to_string(),
@@ -243,6 +270,14 @@ fn make_case(rng: &mut Rng, table: &[(&'static str, Vec<Flag>)]) -> Case {
     }
     let mut must_refuse = false;
     let mut used: Vec<&str> = Vec::new();
+    let push = |args: &mut Vec<String>, rng: &mut Rng, name: &str, value: String| {
+        if rng.unit() < 0.5 {
+            args.push(format!("{name}={value}"));
+        } else {
+            args.push(name.to_string());
+            args.push(value);
+        }
+    };
     for _ in 0..n {
         let f = rng.pick(flags);
         if used.contains(&f.name) {
@@ -258,13 +293,24 @@ fn make_case(rng: &mut Rng, table: &[(&'static str, Vec<Flag>)]) -> Case {
         ]);
         let value = if chapter == &"locomotion-definition" {
             pair_value(&f, kind, rng)
+        } else if f.name == "--rtol" && kind == Kind::Inside {
+            format!("1e-{}", 2 + rng.next() % 13) // every decade 1e-2 .. 1e-14
         } else {
             draw(&f, kind, rng)
         };
-        if kind == Kind::JustOutside && !f.relative && n == 1 {
+        // outside a range that depends on no other flag: refused whatever the others
+        if kind == Kind::JustOutside && !f.relative {
             must_refuse = true;
         }
-        args.push(format!("{}={value}", f.name));
+        push(&mut args, rng, f.name, value);
+    }
+    if rng.unit() < 0.4 {
+        let enums = enum_flags(chapter);
+        if !enums.is_empty() {
+            let (name, values) = &enums[(rng.next() % enums.len() as u64) as usize];
+            let v = values[(rng.next() % values.len() as u64) as usize].clone();
+            push(&mut args, rng, name, v);
+        }
     }
     Case { args, must_refuse }
 }

@@ -424,8 +424,19 @@ pub fn save_drawing<D: Drawing>(
     let fail = |p: &Path, e: String| {
         WorkbookError::Io(format!("cannot write figure {}: {e}", p.display()))
     };
-    render(SVGBackend::new(&svg, size).into_drawing_area(), d).map_err(|e| fail(&svg, e))?;
-    render(BitMapBackend::new(&png, size).into_drawing_area(), d).map_err(|e| fail(&png, e))?;
+    // Each file is drawn into a temporary beside it and renamed (crate::output): an
+    // interrupted run leaves the old figure, never a truncated one.
+    let mut text = String::new();
+    render(
+        SVGBackend::with_string(&mut text, size).into_drawing_area(),
+        d,
+    )
+    .map_err(|e| fail(&svg, e))?;
+    crate::output::write_atomic(&svg, text.as_bytes()).map_err(WorkbookError::Io)?;
+    crate::output::with_temp_file(&png, |tmp| {
+        render(BitMapBackend::new(tmp, size).into_drawing_area(), d)
+    })
+    .map_err(WorkbookError::Io)?;
     Ok(vec![svg.display().to_string(), png.display().to_string()])
 }
 
@@ -447,13 +458,15 @@ pub fn save_gif<D: Drawing>(
         .map_err(|e| WorkbookError::Io(format!("cannot create {}: {e}", dir.display())))?;
     let size = (size.0.clamp(50, 4000), size.1.clamp(50, 4000));
     let path = dir.join(format!("{name}.gif"));
-    let fail =
-        |e: String| WorkbookError::Io(format!("cannot write figure {}: {e}", path.display()));
-    let backend = BitMapBackend::gif(&path, size, delay_ms).map_err(|e| fail(e.to_string()))?;
-    let root = backend.into_drawing_area();
-    for f in frames {
-        render_frame(&root, f).map_err(fail)?;
-    }
+    crate::output::with_temp_file(&path, |tmp| {
+        let backend = BitMapBackend::gif(tmp, size, delay_ms).map_err(|e| e.to_string())?;
+        let root = backend.into_drawing_area();
+        for f in frames {
+            render_frame(&root, f)?;
+        }
+        Ok(()) // dropping the backend closes the file before the rename
+    })
+    .map_err(WorkbookError::Io)?;
     Ok(vec![path.display().to_string()])
 }
 

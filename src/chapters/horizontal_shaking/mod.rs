@@ -36,7 +36,8 @@ pub struct Args {
     /// Plate frequency f = omega/(2 pi) (Hz, 0.01 <= f <= 1000); default 5 Hz, the document's "say 5 oscillations/s".
     #[arg(long = "frequency-hz", default_value_t = 5.0)]
     pub frequency_hz: f64,
-    /// Bias force F as a fraction of mu m g (dimensionless, 0 <= bias < 1); default 0.5.
+    /// Bias force F as a fraction of mu m g (dimensionless: 0, or 1e-6 <= bias < 1; below
+    /// 1e-6 the drift is within the rounding of the exact periodic solution); default 0.5.
     #[arg(long, default_value_t = 0.5)]
     pub bias: f64,
 }

@@ -123,9 +123,10 @@ pub struct Args {
     /// Plate frequency f (Hz, 1 to 1000) [scene: 30].
     #[arg(long = "frequency-hz")]
     pub frequency_hz: Option<f64>,
-    /// Simulated time (s) [10; 2 with --quick]: at most 1e4 s and omega t Gamma <= 1.5e5
+    /// Simulated time (s) [10; 2 with --quick]: 0 < t <= 1e4 s and omega t Gamma <= 1.5e5
     /// (the rounding of the plate phase must stay under the cone check's 1e-10 m g);
-    /// runs beyond 10 minutes (f t > 5e6 cycles) need --allow-long-runs.
+    /// runs estimated beyond 10 minutes (f t > 4e7 drive cycles in a release build,
+    /// 5e6 in a debug build) need --allow-long-runs.
     #[arg(long = "duration-s")]
     pub duration_s: Option<f64>,
     /// Lever arm of the collision map: `actual` (the angle at landing, what the physics
@@ -175,18 +176,29 @@ pub const PHASE_ROUNDING_MAX: f64 = 1.5e5;
 pub fn max_duration_s(f_hz: f64, gamma: f64) -> f64 {
     let omega = 2.0 * std::f64::consts::PI * f_hz;
     if gamma > 0.0 {
-        let t = (PHASE_ROUNDING_MAX / (omega * gamma)).min(1e4); // formula: omega t Gamma <= 1e-10/(3 eps)
-                                                                 // three significant digits, rounded down, so that the range the error line
-                                                                 // prints is the range checked
-        format!("{:.2e}", 0.995 * t).parse().unwrap_or(t)
+        (PHASE_ROUNDING_MAX / (omega * gamma)).min(1e4) // formula: omega t Gamma <= 1e-10/(3 eps)
     } else {
         1e4
     }
 }
 
-/// Measured cost of one drive cycle of the main run (s): 3.3 s for 3e4 cycles of the
-/// jamming scene (dev build, 2 cores), rounded up.
-pub const SECONDS_PER_CYCLE: f64 = 1.2e-4;
+/// `x` (> 0) rounded down to `digits` significant digits, as text: a bound printed in
+/// an error line that is never above the bound checked.
+fn floor_digits(x: f64, digits: i32) -> String {
+    let scale = 10f64.powi(digits - 1 - x.log10().floor() as i32);
+    crate::error::num((x * scale).floor() / scale)
+}
+
+/// Measured cost of one drive cycle of the main run (s), for the build that runs: the
+/// test (dev) build takes 3.3 s for 3e4 cycles of the jamming scene (2 cores), rounded
+/// up to 1.2e-4; the release build about 1e-5 (criterion: about 100k cycles/s on the
+/// jamming scene; 3 s for 2e5 cycles of a gently shaken plate at 1 kHz), rounded up to
+/// 1.5e-5, so that the budget's estimate is the time a reader will wait.
+pub const SECONDS_PER_CYCLE: f64 = if cfg!(debug_assertions) {
+    1.2e-4
+} else {
+    1.5e-5
+};
 
 /// Validated parameters, duration (s) and options from the flags.
 pub fn setup(args: &Args, ctx: &Context) -> Result<(StickParams, f64, Options)> {
@@ -263,7 +275,7 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(StickParams, f64, Options)> 
         |v| v > 0.0 && v <= t_max,
         &format!(
             "0 < value <= {} (s): omega t Gamma <= {} and t <= 1e4 s; the plate phase omega t carries a rounding of eps omega t, a force error of ~3 eps omega t Gamma m g that the cone check's 1e-10 m g must cover",
-            crate::error::num(t_max),
+            floor_digits(t_max, 6),
             crate::error::num(PHASE_ROUNDING_MAX)
         ),
     )?;
@@ -318,15 +330,42 @@ fn start_state(model: &StickModel, start: Start) -> crate::physics::stick::State
 }
 
 /// The output error of `--events` (exit code 3).
-fn events_error(args: &Args, e: std::io::Error) -> crate::error::WorkbookError {
+fn events_error(args: &Args, why: &str) -> crate::error::WorkbookError {
     crate::error::WorkbookError::Output {
         flag: "--events".into(),
         path: args
             .events
             .as_ref()
             .map_or(String::new(), |p| p.display().to_string()),
-        why: e.to_string(),
+        why: why.to_string(),
     }
+}
+
+/// Most switches `--events` keeps in memory and writes (about 64 bytes each: 64 MB).
+/// A longer run's file is cut there, and the cut is said in the results
+/// (`events_written`, `events_total`, `events_cut_at_s`) and on stderr.
+pub const EVENTS_CAP: usize = 1_000_000;
+
+/// Writes the `--events` CSV of `run` to `path` atomically and records in the report
+/// how many switches it holds of how many the run had.
+fn write_events(
+    r: &mut crate::report::ChapterReport,
+    path: &std::path::Path,
+    run: &RunSummary,
+) -> std::result::Result<(), String> {
+    crate::output::write_atomic(path, events_csv(run).as_bytes())?;
+    let (written, total) = (run.switches.len(), run.event_count);
+    r.result("events_written", written as f64);
+    r.result("events_total", total as f64);
+    if written < total {
+        let cut_s = run.switches.last().map_or(0.0, |w| w.t_s);
+        r.result("events_cut_at_s", cut_s);
+        eprintln!(
+            "note: --events {} holds the first {written} of {total} switches (cut at t = {cut_s:.6} s; at most {EVENTS_CAP} are kept)",
+            path.display()
+        );
+    }
+    Ok(())
 }
 
 /// The CSV of `--events`: one header line, then one line per switch.
@@ -444,7 +483,12 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     r.param("method", args.method.method().name());
 
     let rec = Recording {
-        sequence_cap: 4000,
+        // with --events every switch is kept, up to EVENTS_CAP (then the cut is reported)
+        sequence_cap: if args.events.is_some() {
+            EVENTS_CAP
+        } else {
+            4000
+        },
         trace_dt_s: 0.0,
         check_invariants: true,
     };
@@ -457,11 +501,11 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
             "authors-code"
         },
     );
-    // The events file is created before the run: an unwritable path fails at once.
-    let mut events_file = match &args.events {
-        Some(path) => Some(std::fs::File::create(path).map_err(|e| events_error(args, e))?),
-        None => None,
-    };
+    // The events file is checked before the run (an unwritable path fails at once) but
+    // written only after it, whole (a refused or interrupted run leaves it as it was).
+    if let Some(path) = &args.events {
+        crate::output::probe_file(path).map_err(|e| events_error(args, &e.to_string()))?;
+    }
     let cycles = dur * p.frequency_hz(); // formula: work = drive cycles f t
     let est = crate::sweep::check_budget(
         "--duration-s",
@@ -478,10 +522,8 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
         Rules::Printed => run_printed_from(&p, Printed::AS_PRINTED, args.start, dur, &opts, rec),
     };
     bar.finish_and_clear();
-    if let Some(file) = events_file.as_mut() {
-        use std::io::Write as _;
-        file.write_all(events_csv(&main).as_bytes())
-            .map_err(|e| events_error(args, e))?;
+    if let Some(path) = &args.events {
+        write_events(&mut r, path, &main).map_err(|e| events_error(args, &e))?;
     }
     let b = main.budget;
     let finite = [

@@ -43,6 +43,10 @@ impl StickOutcome {
     }
 }
 
+/// Most entries the event and landing lists keep (16 MB and 80 MB at most), so that no
+/// accepted run length can exhaust memory; the counts go on ([`RunSummary::event_count`]).
+pub const LIST_CAP: usize = 1_000_000;
+
 /// What to record during a run, beyond the counts.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Recording {
@@ -141,12 +145,14 @@ pub struct RunSummary {
     pub violations: Violations,
     /// Trace samples (canonical states; energy accumulators are running totals).
     pub trace: Vec<Sample>,
-    /// Events: (time s, from, to) with `to = None` for the stop.
+    /// Events: (time s, from, to) with `to = None` for the stop; at most [`LIST_CAP`].
     pub events: Vec<(f64, Mode, Option<Mode>)>,
+    /// Every event of the run, also those beyond the recorded lists' caps.
+    pub event_count: usize,
     /// The same events with the state and contact force at each switch (recorded with
     /// the phase sequence, capped at its length): what `--events FILE` writes.
     pub switches: Vec<Switch>,
-    /// Landings (when recording a sequence).
+    /// Landings (when recording a sequence; at most [`LIST_CAP`]).
     pub landings: Vec<Landing>,
     /// Final state.
     pub y_end: State,
@@ -291,7 +297,8 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
         after: Option<(Mode, &State)>,
     ) {
         let to = after.map(|(m, _)| m);
-        if self.rec.sequence_cap > 0 {
+        self.sum.event_count += 1;
+        if self.rec.sequence_cap > 0 && self.sum.events.len() < LIST_CAP {
             self.sum.events.push((t, from, to));
             if self.sum.switches.len() < self.rec.sequence_cap {
                 let y = self.model.canonical(from, t, _before);
@@ -321,7 +328,7 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
                 if sticking {
                     self.sum.sticking_landings += 1;
                 }
-                if self.rec.sequence_cap > 0 {
+                if self.rec.sequence_cap > 0 && self.sum.landings.len() < LIST_CAP {
                     let lever = y[TH];
                     self.sum.landings.push(Landing {
                         t_s: t,
@@ -400,6 +407,7 @@ pub fn simulate_system<S: HybridSystem<NSTATE, Mode = Mode, Stop = StickStop>>(
             violations: Violations::default(),
             trace: Vec::new(),
             events: Vec::new(),
+            event_count: 0,
             switches: Vec::new(),
             landings: Vec::new(),
             y_end: y0,
