@@ -2,8 +2,8 @@
 
 use super::claims::booktop;
 use super::drift::{steady_drift, Scene};
-use super::work;
 use crate::error::Result;
+use crate::ladder as work;
 use crate::numerics::hybrid::Segment;
 use crate::physics::block::{BlockMode, BlockOptions, Observer};
 use crate::physics::plate::PlateMotion;

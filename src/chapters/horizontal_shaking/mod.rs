@@ -19,7 +19,6 @@ use drift::{steady_drift, Scene};
 pub mod claims;
 pub mod drift;
 mod figures;
-pub mod work;
 
 /// Flags of the chapter: the document's scene (a coin on a hand-shaken book).
 #[derive(clap::Args, Debug, Clone)]
@@ -250,8 +249,8 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &claims::Doc) -> Result<Chapter
     } else {
         vamp
     };
-    let wp = work::work_precision(&model, exact.drift_mps, scale, ctx.quick);
-    r.table("work-precision", work::table(&wp));
+    let wp = crate::ladder::work_precision(&model, exact.drift_mps, scale, ctx.quick);
+    r.table("work-precision", crate::ladder::table(&wp));
 
     if let Some(dir) = ctx.figure_dir("horizontal-shaking") {
         let paths = figures::draw(

@@ -79,6 +79,15 @@ impl ContactMethod {
     }
 }
 
+/// The parser of `--collision-angle` (the physics enum stays free of clap).
+fn collision_angle_parser() -> impl clap::builder::TypedValueParser<Value = CollisionAngle> {
+    use clap::builder::TypedValueParser as _;
+    clap::builder::PossibleValuesParser::new(["actual", "reset"]).map(|s| match s.as_str() {
+        "reset" => CollisionAngle::Reset,
+        _ => CollisionAngle::Actual,
+    })
+}
+
 /// The transition rules of a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum Rules {
@@ -131,7 +140,7 @@ pub struct Args {
     pub duration_s: Option<f64>,
     /// Lever arm of the collision map: `actual` (the angle at landing, what the physics
     /// supports) or `reset` (the document's theta_0) [default: actual].
-    #[arg(long = "collision-angle", value_enum, default_value_t = CollisionAngle::Actual)]
+    #[arg(long = "collision-angle", default_value = "actual", value_parser = collision_angle_parser())]
     pub collision_angle: CollisionAngle,
     /// Relative (and absolute) tolerance of Dormand-Prince in the contact modes (1, 1e-14
     /// to 1e-2) [1e-10].

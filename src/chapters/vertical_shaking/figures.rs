@@ -3,8 +3,8 @@
 use super::claims::gamma_n;
 use super::regimes::{Boundary, SweepPoint};
 use super::scene::Scene;
-use crate::chapters::horizontal_shaking::work;
 use crate::error::Result;
+use crate::ladder as work;
 use crate::plot::{save_chart, Chart, Legend};
 use std::path::Path;
 

@@ -189,11 +189,8 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     } else {
         vz
     };
-    let wp = super::horizontal_shaking::work::work_precision(&model, reference, scale, ctx.quick);
-    r.table(
-        "work-precision",
-        super::horizontal_shaking::work::table(&wp),
-    );
+    let wp = crate::ladder::work_precision(&model, reference, scale, ctx.quick);
+    r.table("work-precision", crate::ladder::table(&wp));
 
     if let Some(dir) = ctx.figure_dir("vertical-shaking") {
         let paths = figures::draw(&dir, &scene, &pts, &bounds, &wp, ctx.quick)?;

@@ -12,7 +12,7 @@
 use super::{State, StickModel, D_DAMP, D_FRIC, D_IMPACT, W_PLATE};
 
 /// The energy budget of a run (J).
-#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Budget {
     /// Work done by the plate (J).
     pub plate_work_j: f64,

@@ -3,7 +3,7 @@
 use crate::physics::plate::{Axis, Harmonic};
 
 /// Which angle the collision map (C.15) uses for the lever arm `r_P/C`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CollisionAngle {
     /// The document's choice: the rod is put back at `theta_0` at every landing and
     /// `r_P/C` is evaluated there. An approximation, good when the flight lasts many

@@ -1,6 +1,8 @@
-//! Work against accuracy of the steady drift: the event-driven method (closed forms,
-//! and Dormand-Prince 5(4) with event location at several tolerances) against a
-//! fixed-step RK4 without event location. Shared by both shaking chapters.
+//! The work-precision ladder of the block on a shaken plate: the event-driven method
+//! (closed forms, and Dormand-Prince 5(4) with event location at several tolerances)
+//! against a fixed-step RK4 without event location, measured on the steady drift.
+//! Shared by both shaking chapters (3 and 4), so it sits below the chapters: a chapter
+//! never imports another (tests/architecture.rs).
 
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
