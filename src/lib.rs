@@ -17,6 +17,7 @@
 pub mod chapters;
 pub mod cli;
 pub mod error;
+pub mod lab;
 pub mod numerics;
 pub mod physics;
 pub mod plot;
