@@ -165,12 +165,14 @@ function showError(text) {
     if (key && $(`f-${key}`)) $(`f-${key}`).classList.add("bad");
   }
   $("stage").classList.add("stale");
+  $("numbers").classList.add("stale");
 }
 
 function hideError() {
   $("error").hidden = true;
   for (const el of document.querySelectorAll(".param input")) el.classList.remove("bad");
   $("stage").classList.remove("stale");
+  $("numbers").classList.remove("stale");
 }
 
 function scheduleMap() {
@@ -275,8 +277,10 @@ function drawAnim() {
   const W = cv.width, H = cv.height;
   const run = lab.run, sc = run.scene;
   const s = 190 / sc.length_m; // px per metre
-  const E = $("magnify").checked ? 20 : 1;
-  const y0 = H - 70;
+  // vertical motion of plate and C magnified, at most 20 x and to at most 40 px of plate travel
+  const ampPx = sc.plate_amplitude_m * s;
+  const E = $("magnify").checked ? Math.max(1, Math.min(20, Math.floor(40 / Math.max(ampPx, 1e-9)))) : 1;
+  const y0 = H - 34 - E * ampPx;
   const cur = state(run, lab.frame);
   const camX = cur.x;
   const X = (x) => W * 0.42 + (x - camX) * s;
@@ -330,7 +334,7 @@ function drawAnim() {
     g.lineTo(cx + r * Math.sin(a), cy - r * Math.cos(a));
     g.closePath(); g.fill(); g.stroke();
     const f = Math.hypot(cur.fx, cur.fz) / sc.weight_n;
-    const len = Math.min(150, 45 * f);
+    const len = Math.min(140, 90 * f); // 90 px per weight m g
     if (len > 1) arrow(g, cx, cy, cx + (len * cur.fx) / (f * sc.weight_n), cy - (len * cur.fz) / (f * sc.weight_n), "#c53030");
   }
   drawRod(g, cx, cy, cur.th, s * sc.length_m, mode.color, 9);
@@ -351,7 +355,8 @@ function drawAnim() {
     g.fillStyle = "#c53030";
     g.fillText(`force on C: ${fmt(cur.fx, 3)} N across, ${fmt(cur.fz, 3)} N up (cone: |F_x| ≤ μ F_z)`, 10, 56);
   }
-  if (E > 1) { g.fillStyle = "#888"; g.fillText("vertical motion of plate and C drawn 20 x larger", W - 290, 22); }
+  if (E > 1) { g.fillStyle = "#888"; g.textAlign = "right"; g.fillText(`vertical motion of plate and C drawn ${E} x larger`, W - 10, 22); g.textAlign = "left"; }
+  $("magnify-label").textContent = `vertical motion x${E > 1 ? E : 20}`;
   $("clock").textContent = `t = ${cur.t.toFixed(3)} s  (frame ${lab.frame + 1}/${lab.frameCount})`;
 }
 
@@ -381,7 +386,7 @@ function niceStep(x) {
 const fmtLen = (m) => (m >= 0.01 ? `${fmt(m * 100, 3)} cm` : `${fmt(m * 1000, 3)} mm`);
 
 // ---------- timeline: mode strip and x_C(t) ----------
-const TL = { left: 52, right: 10, top: 6, strip: 16, bottom: 22 };
+const TL = { left: 64, right: 10, top: 6, strip: 16, bottom: 22 };
 function drawTimeline() {
   const cv = $("timeline"), g = cv.getContext("2d");
   const W = cv.width, H = cv.height;
@@ -506,10 +511,10 @@ function drawMap() {
   const th = Number(lab.values.theta0_rad), mu = Number(lab.values.mu);
   if (Number.isFinite(th) && Number.isFinite(mu)) {
     const x = G.X(th), y = G.Y(mu);
-    g.strokeStyle = "#000"; g.lineWidth = 2.5;
-    g.beginPath(); g.arc(x, y, 7, 0, 2 * Math.PI); g.stroke();
-    g.strokeStyle = "#fff"; g.lineWidth = 1.2;
-    g.beginPath(); g.arc(x, y, 7, 0, 2 * Math.PI); g.stroke();
+    g.fillStyle = "#fff"; g.strokeStyle = "#000"; g.lineWidth = 2;
+    g.beginPath(); g.arc(x, y, 6, 0, 2 * Math.PI); g.fill(); g.stroke();
+    g.fillStyle = "#000";
+    g.beginPath(); g.arc(x, y, 2, 0, 2 * Math.PI); g.fill();
   }
   g.restore();
   g.fillStyle = "#333"; g.font = "11px system-ui, sans-serif";
@@ -517,7 +522,8 @@ function drawMap() {
   for (const u of [0.2, 0.4, 0.6, 0.8]) { g.fillText(u.toFixed(1), MP.left - 22, G.Y(u) + 4); }
   g.fillText("spring rest angle θ₀ (rad)", MP.left + 60, cv.height - 6);
   g.save(); g.translate(11, MP.top + 150); g.rotate(-Math.PI / 2); g.fillText("friction μ", -25, 0); g.restore();
-  g.fillText(`±${fmt(vmax * 1e3, 2)} mm/s`, cv.width - 70, cv.height - MP.bottom + 13);
+  lab.mapScale = `colour scale ±${fmt(vmax * 1e3, 2)} mm/s`;
+  $("map-scale").textContent = lab.mapScale;
 }
 
 function diverging(x) {
