@@ -149,15 +149,15 @@ fn out_of_range_values_get_the_clis_own_line() {
 
 #[test]
 fn the_lab_bounds_its_runs_by_drive_cycles() {
-    // 200 s at 30 Hz: within the CLI's budget, beyond the lab's 3000 cycles
-    let e = lab_run(&body(json!({"duration_s": 200}))).expect_err("refused");
+    // 40 s at 30 Hz: within the CLI's budget, beyond the lab's 1000 cycles
+    let e = lab_run(&body(json!({"duration_s": 40}))).expect_err("refused");
     assert_eq!(e.status, 400);
     assert!(
-        e.reason.contains("--duration-s") && e.reason.contains("3000"),
+        e.reason.contains("--duration-s") && e.reason.contains("1000"),
         "{}",
         e.reason
     );
-    assert!(lab_run(&body(json!({"duration_s": 100}))).is_ok());
+    assert!(lab_run(&body(json!({"duration_s": 30}))).is_ok());
 }
 
 /// One HTTP/1.0 request to the lab (so that the answer is not chunked): (status, body).
@@ -285,4 +285,100 @@ fn the_map_is_chapter_6s_late_speed_and_is_kept() {
         .filter(|v| v.as_f64().is_some_and(|v| v > 0.0))
         .count();
     assert!(forward > n * n / 10, "{forward} forward cells");
+}
+
+/// A small deterministic generator (64-bit LCG, Knuth's constants).
+struct Lcg(u64);
+
+impl Lcg {
+    fn next(&mut self) -> u64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        self.0 >> 11
+    }
+    fn pick<'a, T>(&mut self, xs: &'a [T]) -> &'a T {
+        &xs[(self.next() % xs.len() as u64) as usize]
+    }
+}
+
+#[test]
+fn no_request_body_panics_the_endpoint() {
+    // mutated requests: each field set to an edge value, a wrong type or a stray string;
+    // fields dropped, renamed, duplicated; bytes flipped. Every answer is a run or a 4xx
+    // with a one-line reason; the valid ones (a few) are run to the end.
+    let values: Vec<Value> = vec![
+        json!(0),
+        json!(-0.0),
+        json!(-1),
+        json!(1e-320),
+        json!(1e300),
+        json!(-1e300),
+        json!(1.5707963267948966),
+        json!(2),
+        json!(50),
+        json!(1000),
+        json!(1e-14),
+        json!("NaN"),
+        json!("-inf"),
+        json!(""),
+        json!(" 0.4 "),
+        json!("0x10"),
+        json!("1e999"),
+        json!("--json"),
+        json!("jamming"),
+        json!("authors"),
+        json!("dopri5"),
+        json!(null),
+        json!(true),
+        json!([]),
+        json!({}),
+        json!("\u{0}"),
+        json!("é".repeat(70)),
+        json!(u64::MAX),
+        json!(i64::MIN),
+    ];
+    let keys: Vec<&str> = api::FIELDS
+        .iter()
+        .map(|f| f.0)
+        .chain(["seq", "x", "a\nb"])
+        .collect();
+    let mut rng = Lcg(23);
+    let (mut ran, mut refused) = (0, 0);
+    for i in 0..3000 {
+        let mut b = body(json!({"duration_s": 0.2}));
+        for _ in 0..=(rng.next() % 3) {
+            let k = *rng.pick(&keys);
+            match rng.next() % 4 {
+                0 => {
+                    b.as_object_mut().expect("object").remove(k);
+                }
+                _ => b[k] = rng.pick(&values).clone(),
+            }
+        }
+        let mut bytes = b.to_string().into_bytes();
+        if i % 5 == 0 && !bytes.is_empty() {
+            let at = (rng.next() % bytes.len() as u64) as usize;
+            bytes[at] = (rng.next() % 256) as u8;
+        }
+        match api::parse_run(&bytes) {
+            Ok(req) => {
+                if ran < 25 {
+                    let v = simulate::run(&req);
+                    assert!(v["report"]["results"]["outcome"].is_string(), "{v}");
+                }
+                ran += 1;
+            }
+            Err(e) => {
+                assert!(e.status == 400 || e.status == 413, "{e:?}");
+                assert!(
+                    e.reason.starts_with("error: ") && !e.reason.contains('\n'),
+                    "{e:?}"
+                );
+                refused += 1;
+            }
+        }
+    }
+    assert!(ran > 25 && refused > 1000, "{ran} ran, {refused} refused");
 }

@@ -20,9 +20,11 @@ pub const MAX_BODY_BYTES: usize = 16 * 1024;
 const MAX_FIELD_CHARS: usize = 64;
 
 /// Most drive cycles `f t` one lab run may simulate: the lab animates every run, and
-/// keeps its trajectory in memory (about 16 samples a cycle) while it thins it to frames;
-/// 3000 cycles are 100 s at 30 Hz, under a second of work. Longer runs: the CLI.
-pub const MAX_CYCLES: f64 = 3000.0;
+/// keeps its trajectory in memory (one sample per integration step, about 16 a cycle at
+/// the default rtol and some 350 with DOPRI5 at 1e-14, 112 bytes each) while it thins it
+/// to frames: at most about 40 MB a run. 1000 cycles are 33 s at 30 Hz, a fraction of a
+/// second of work at the default rtol. Longer runs: the CLI.
+pub const MAX_CYCLES: f64 = 1000.0;
 
 /// The request's fields: JSON key, the CLI flag it becomes, and whether it is required.
 /// Every physical parameter is required, so that a page never runs on a value it did
@@ -155,9 +157,14 @@ fn field_text(key: &str, value: &Value) -> Result<String, ApiError> {
     Ok(text)
 }
 
-/// At most 40 characters of `s`, for messages.
+/// At most 40 characters of `s`, control characters escaped, for one-line messages.
 fn clip(s: &str) -> String {
-    let mut out: String = s.chars().take(40).collect();
+    let mut out: String = s
+        .chars()
+        .take(40)
+        .collect::<String>()
+        .escape_debug()
+        .to_string();
     if s.chars().count() > 40 {
         out.push_str("...");
     }

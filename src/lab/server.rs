@@ -16,8 +16,9 @@ use std::sync::{mpsc, Arc};
 use std::time::Duration;
 use tiny_http::{Header, Method, Request, Response, Server};
 
-/// Most runs and maps computed at once; a request beyond is answered 503 at once.
-pub const MAX_RUNS: usize = 8;
+/// Most runs and maps computed at once (with [`super::api::MAX_CYCLES`], a bound on the
+/// lab's memory of about 160 MB); a request beyond is answered 503 at once.
+pub const MAX_RUNS: usize = 4;
 /// Longest wait for a run's answer; the run is answered 503 then (it finishes in the
 /// background, bounded by the work checks, and its slot is freed when it ends).
 pub const TIMEOUT: Duration = Duration::from_secs(30);
