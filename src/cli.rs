@@ -105,6 +105,8 @@ pub enum Command {
     StickStateMachine(chapters::stick_state_machine::Args),
     /// Ch. 7 (all sections): speed versus accuracy of the numerical methods.
     SpeedVsAccuracy(chapters::speed_vs_accuracy::Args),
+    /// The live lab: a local web page (127.0.0.1) where sliders drive chapter 6's simulator.
+    Lab(crate::lab::Args),
 }
 
 impl Cli {
@@ -237,7 +239,7 @@ fn exploring(m: &clap::ArgMatches) -> bool {
 
 /// Whether a subcommand runs chapters (and may write figures).
 fn computes(c: &Command) -> bool {
-    !matches!(c, Command::List | Command::Render { .. })
+    !matches!(c, Command::List | Command::Render { .. } | Command::Lab(_))
 }
 
 /// Clap's message as one line: its first paragraph (the error, naming the flag and the
@@ -323,6 +325,7 @@ fn refuse_unused(cli: &Cli, given: &[&str]) -> error::Result<()> {
     let (what, allowed): (&str, &[&str]) = match cli.command {
         Command::List => ("list", &["json"]),
         Command::Render { .. } => ("render", &[]),
+        Command::Lab(_) => ("lab", &[]),
         Command::StickStateMachine(_) => return Ok(()),
         Command::All => ("all", &["quick", "json", "figures", "no_figures", "g_mps2"]),
         _ => (
@@ -412,6 +415,7 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
         }
         Command::All => return run_all(cli, &ctx, out),
         Command::Render { check, dir } => return render::render(dir, *check, out),
+        Command::Lab(a) => return crate::lab::run(a, out),
         Command::LocomotionDefinition(a) => chapters::locomotion_definition::run(a, &ctx)?,
         Command::EffectiveMass(a) => chapters::effective_mass::run(a, &ctx)?,
         Command::HorizontalShaking(a) => chapters::horizontal_shaking::run(a, &ctx)?,

@@ -32,7 +32,7 @@ pub fn draw(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<
 }
 
 /// The late mean speed of C (m/s) of one run, NaN unless the run completed.
-fn late_speed(p: &StickParams, opts: &Options, quick: bool) -> f64 {
+pub(super) fn late_speed(p: &StickParams, opts: &Options, quick: bool) -> f64 {
     let t = p.period_s();
     let (cycles, skip) = if quick {
         (CYCLES.1, SKIP.1)

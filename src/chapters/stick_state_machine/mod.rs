@@ -10,6 +10,7 @@ mod evidence;
 mod figures;
 mod gait;
 mod impulse;
+pub mod main_run;
 mod maps;
 mod mutations;
 mod printed_table;
@@ -22,7 +23,7 @@ use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
 use crate::physics::stick::printed::{simulate_printed, Printed};
 use crate::physics::stick::run::{
-    authors_code_state, initial_state, simulate_stick, Recording, RunSummary, StickOutcome,
+    authors_code_state, initial_state, simulate_stick, Recording, RunSummary,
 };
 use crate::physics::stick::{
     authors_scene, jamming_scene, CollisionAngle, Mode, StickModel, StickParams,
@@ -473,120 +474,28 @@ pub fn round(x: f64, d: i32) -> f64 {
 pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     let (p, dur, opts) = setup(args, ctx)?;
     let mut r = super::info(ID).expect("registered").report();
-    r.param("scene", format!("{:?}", args.scene).to_lowercase());
-    r.param("length_m", p.length_m);
-    r.param("mass_kg", p.mass_kg);
-    r.param("stiffness_nm_per_rad", p.stiffness_nm_per_rad);
-    r.param("damping_nms_per_rad", p.damping_nms_per_rad);
-    r.param("mu", p.mu);
-    r.param("theta0_rad", round(p.theta0_rad, 10));
-    r.param("gamma", p.gamma_accel());
-    r.param("frequency_hz", p.frequency_hz());
-    r.param("g_mps2", p.g_mps2);
-    r.param("duration_s", dur);
-    r.param(
-        "collision_angle",
-        format!("{:?}", p.collision_angle).to_lowercase(),
-    );
-    r.param("rtol", args.rtol);
-    r.param("method", args.method.method().name());
-
-    let rec = Recording {
-        // with --events every switch is kept, up to EVENTS_CAP (then the cut is reported)
-        sequence_cap: if args.events.is_some() {
-            EVENTS_CAP
-        } else {
-            4000
-        },
-        trace_dt_s: 0.0,
-        check_invariants: true,
-    };
-    r.param("rules", format!("{:?}", args.rules).to_lowercase());
-    r.param(
-        "start",
-        if args.start == Start::Static {
-            "static"
-        } else {
-            "authors-code"
-        },
-    );
+    for (key, value) in main_run::params(args, &p, dur) {
+        r.param(key, value);
+    }
     // The events file is checked before the run (an unwritable path fails at once) but
     // written only after it, whole (a refused or interrupted run leaves it as it was).
     if let Some(path) = &args.events {
         crate::output::probe_file(path).map_err(|e| events_error(args, &e.to_string()))?;
     }
-    let cycles = dur * p.frequency_hz(); // formula: work = drive cycles f t
-    let est = crate::sweep::check_budget(
-        "--duration-s",
-        cycles,
-        "drive cycles",
-        SECONDS_PER_CYCLE,
-        ctx.allow_long_runs,
-    )?;
+    let est = main_run::check_work(&p, dur, ctx.allow_long_runs)?;
     let bar = crate::sweep::spinner("stick-state-machine: main run", est);
-    let physical = run_scene_from(&p, args.start, dur, &opts, rec);
     // the claims are judged on the physical run; --rules printed reports the printed one
-    let (mut main, fired) = match args.rules {
-        Rules::Physical => (physical.clone(), Default::default()),
-        Rules::Printed => run_printed_from(&p, Printed::AS_PRINTED, args.start, dur, &opts, rec),
-    };
+    let mut rec = main_run::recording(0.0);
+    if args.events.is_some() {
+        rec.sequence_cap = EVENTS_CAP; // every switch, up to the cap (then the cut is said)
+    }
+    let (physical, mut main, fired) = main_run::run_main(args, &p, dur, &opts, rec);
     bar.finish_and_clear();
     if let Some(path) = &args.events {
         write_events(&mut r, path, &main).map_err(|e| events_error(args, &e))?;
     }
-    let b = main.budget;
-    let finite = [
-        main.mean_velocity_mps,
-        main.end_time_s,
-        b.plate_work_j,
-        b.delta_mechanical_j,
-        b.friction_j,
-        b.damper_j,
-        b.impact_j,
-    ]
-    .iter()
-    .all(|x| x.is_finite());
-    if !finite {
-        // A NaN escaped the model (seen with the rod leaning less than ~1e-3 rad, where
-        // the slide equations divide by sin(theta)): the run ends `invalid`, and its
-        // non-finite numbers are left out of the results, never printed.
-        main.outcome = StickOutcome::Invalid(format!(
-            "non-finite state by t = {} s: the integration produced NaN (rod near the vertical)",
-            round(main.end_time_s, 6)
-        ));
-    }
-    let reason = match &main.outcome {
-        StickOutcome::Invalid(why) | StickOutcome::Aborted(why) => why.clone(),
-        _ => String::new(),
-    };
-    r.result("outcome", main.outcome.label());
-    r.result("outcome_reason", reason);
-    if finite {
-        r.result("end_time_s", round(main.end_time_s, 9));
-        // a run stopped within its first drive cycle has no mean speed: 0 (see outcome)
-        let v = if main.end_time_s - main.start_time_s >= p.period_s() {
-            main.mean_velocity_mps
-        } else {
-            0.0
-        };
-        r.result("mean_velocity_mps", round(v, 6));
-    }
-    r.result("phase_fractions", phase_fractions(&main));
-    r.result("event_counts", event_counts(&main));
-    r.result("hops", main.hops as u64);
-    r.result("printed_rules_fired", json!(fired));
-    if finite {
-        r.result(
-            "energy_budget_j",
-            json!({
-                "plate_work": round(b.plate_work_j, 6),
-                "delta_mechanical": round(b.delta_mechanical_j, 6),
-                "friction": round(b.friction_j, 6),
-                "damper": round(b.damper_j, 6),
-                "impact": round(b.impact_j, 6),
-                "relative_residual_below_1e-5": b.relative_residual() < 1e-5,
-            }),
-        );
+    for (key, value) in main_run::results(&mut main, &p, &fired) {
+        r.result(key, value);
     }
 
     // The evidence runs are the document's two scenes with the document's values, g

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Browser test of `workbook lab` (book/lab-test.mjs): starts the lab on a free loopback
+# port, drives the page in headless Chromium (slider, animation, an invalid value, a click
+# on the speed map, a comparison) and compares the page's numbers and error line with the
+# CLI's. Reports the slider-to-redraw latency. Screenshots land in target/lab-screenshots/.
+# Uses the dev build (what `cargo test` builds); LAB_PROFILE=release tests the release
+# binary (the latency a reader sees with `cargo run --release -- lab`).
+# Installs the Debian package chromium when it is missing (apt-get, about 20 s).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+if ! command -v chromium >/dev/null; then
+  echo "+ apt-get install chromium" >&2
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null
+fi
+profile="${LAB_PROFILE:-dev}"
+if [ "$profile" = release ]; then
+  cargo build --release --locked --bin workbook
+  bin=target/release/workbook
+else
+  cargo build --locked --bin workbook
+  bin=target/debug/workbook
+fi
+node_flags=()
+if node --experimental-websocket -e '' 2>/dev/null && ! node -e 'WebSocket' 2>/dev/null; then
+  node_flags=(--experimental-websocket)
+fi
+node "${node_flags[@]}" book/lab-test.mjs "$(command -v chromium)" "$bin"

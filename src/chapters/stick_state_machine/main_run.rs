@@ -1,0 +1,162 @@
+//! The chapter's main run (the reader's own scene, set by the flags) and its named
+//! parameters and results: one piece of code for the CLI's `run` and for `workbook lab`,
+//! so that the lab shows the CLI's numbers (tests/lab.rs compares them).
+
+use super::{event_counts, phase_fractions, round, run_printed_from, run_scene_from, Args};
+use super::{Rules, Start, SECONDS_PER_CYCLE};
+use crate::error::Result;
+use crate::numerics::hybrid::Options;
+use crate::physics::stick::printed::Printed;
+use crate::physics::stick::run::{Recording, RunSummary, StickOutcome};
+use crate::physics::stick::StickParams;
+use serde_json::{json, Value};
+use std::collections::BTreeMap;
+
+/// The recording of the main run: the phase sequence and the switches (4000 at most;
+/// the CLI raises the cap to `EVENTS_CAP` with `--events`), Table 1 checked at every step; `trace_dt_s` samples the trajectory
+/// (0 for the CLI, which draws no animation; the lab's frames).
+pub fn recording(trace_dt_s: f64) -> Recording {
+    Recording {
+        sequence_cap: 4000,
+        trace_dt_s,
+        check_invariants: true,
+    }
+}
+
+/// The estimated work of a run of `duration_s` (s), checked against the CLI's budget
+/// of 10 minutes (unless `allow_long_runs`); the estimate (s).
+pub fn check_work(p: &StickParams, duration_s: f64, allow_long_runs: bool) -> Result<f64> {
+    let cycles = duration_s * p.frequency_hz(); // formula: work = drive cycles f t
+    crate::sweep::check_budget(
+        "--duration-s",
+        cycles,
+        "drive cycles",
+        SECONDS_PER_CYCLE,
+        allow_long_runs,
+    )
+}
+
+/// The report's `params` of the main run, in the CLI's order.
+pub fn params(args: &Args, p: &StickParams, duration_s: f64) -> Vec<(&'static str, Value)> {
+    let start = if args.start == Start::Static {
+        "static"
+    } else {
+        "authors-code"
+    };
+    vec![
+        ("scene", json!(format!("{:?}", args.scene).to_lowercase())),
+        ("length_m", json!(p.length_m)),
+        ("mass_kg", json!(p.mass_kg)),
+        ("stiffness_nm_per_rad", json!(p.stiffness_nm_per_rad)),
+        ("damping_nms_per_rad", json!(p.damping_nms_per_rad)),
+        ("mu", json!(p.mu)),
+        ("theta0_rad", json!(round(p.theta0_rad, 10))),
+        ("gamma", json!(p.gamma_accel())),
+        ("frequency_hz", json!(p.frequency_hz())),
+        ("g_mps2", json!(p.g_mps2)),
+        ("duration_s", json!(duration_s)),
+        (
+            "collision_angle",
+            json!(format!("{:?}", p.collision_angle).to_lowercase()),
+        ),
+        ("rtol", json!(args.rtol)),
+        ("method", json!(args.method.method().name())),
+        ("rules", json!(format!("{:?}", args.rules).to_lowercase())),
+        ("start", json!(start)),
+    ]
+}
+
+/// The main run: the physical run (the claims are judged on it) and the reported one
+/// (the physical run, or with `--rules printed` the printed rules' run and the counts of
+/// the printed lines that fired).
+pub type MainRuns = (RunSummary, RunSummary, BTreeMap<&'static str, u64>);
+
+/// Runs the main run of the flags `args` with the validated `p`, `duration_s`, `opts`.
+pub fn run_main(
+    args: &Args,
+    p: &StickParams,
+    duration_s: f64,
+    opts: &Options,
+    rec: Recording,
+) -> MainRuns {
+    let physical = run_scene_from(p, args.start, duration_s, opts, rec);
+    let (main, fired) = match args.rules {
+        Rules::Physical => (physical.clone(), Default::default()),
+        Rules::Printed => {
+            run_printed_from(p, Printed::AS_PRINTED, args.start, duration_s, opts, rec)
+        }
+    };
+    (physical, main, fired)
+}
+
+/// The report's `results` of the main run, in the CLI's order. A run whose numbers are
+/// not all finite is marked `invalid` here (its non-finite numbers are left out).
+pub fn results(
+    main: &mut RunSummary,
+    p: &StickParams,
+    fired: &BTreeMap<&'static str, u64>,
+) -> Vec<(&'static str, Value)> {
+    let b = main.budget;
+    let finite = [
+        main.mean_velocity_mps,
+        main.end_time_s,
+        b.plate_work_j,
+        b.delta_mechanical_j,
+        b.friction_j,
+        b.damper_j,
+        b.impact_j,
+    ]
+    .iter()
+    .all(|x| x.is_finite());
+    if !finite {
+        // A NaN escaped the model (seen with the rod leaning less than ~1e-3 rad, where
+        // the slide equations divide by sin(theta)): the run ends `invalid`, and its
+        // non-finite numbers are left out of the results, never printed.
+        main.outcome = StickOutcome::Invalid(format!(
+            "non-finite state by t = {} s: the integration produced NaN (rod near the vertical)",
+            round(main.end_time_s, 6)
+        ));
+    }
+    let reason = match &main.outcome {
+        StickOutcome::Invalid(why) | StickOutcome::Aborted(why) => why.clone(),
+        _ => String::new(),
+    };
+    let mut out = vec![
+        ("outcome", json!(main.outcome.label())),
+        ("outcome_reason", json!(reason)),
+    ];
+    if finite {
+        out.push(("end_time_s", json!(round(main.end_time_s, 9))));
+        // a run stopped within its first drive cycle has no mean speed: 0 (see outcome)
+        let v = if main.end_time_s - main.start_time_s >= p.period_s() {
+            main.mean_velocity_mps
+        } else {
+            0.0
+        };
+        out.push(("mean_velocity_mps", json!(round(v, 6))));
+    }
+    out.push(("phase_fractions", phase_fractions(main)));
+    out.push(("event_counts", event_counts(main)));
+    out.push(("hops", json!(main.hops as u64)));
+    out.push(("printed_rules_fired", json!(fired)));
+    if finite {
+        out.push((
+            "energy_budget_j",
+            json!({
+                "plate_work": round(b.plate_work_j, 6),
+                "delta_mechanical": round(b.delta_mechanical_j, 6),
+                "friction": round(b.friction_j, 6),
+                "damper": round(b.damper_j, 6),
+                "impact": round(b.impact_j, 6),
+                "relative_residual_below_1e-5": b.relative_residual() < 1e-5,
+            }),
+        ));
+    }
+    out
+}
+
+/// The late mean speed of C (m/s) of a short run (the cells of the chapter's speed maps),
+/// NaN unless the run completed: what the lab's map shows.
+pub fn map_cell_speed(p: &StickParams, opts: &Options) -> f64 {
+    super::maps::late_speed(p, opts, true)
+}

@@ -1,0 +1,265 @@
+//! The lab's request: a JSON object of parameters, turned into the flags of
+//! `workbook stick-state-machine` and validated by the CLI's own clap definitions and
+//! range checks ([`crate::chapters::stick_state_machine::setup`]), so that a value the
+//! CLI refuses is refused here with the CLI's own one-line reason. Anything else wrong
+//! with a request (malformed JSON, a missing or unknown field, a value of the wrong
+//! type, a body too large) is an [`ApiError`] with HTTP status 400 or 413 and one line
+//! saying why; nothing here panics on any input.
+
+use crate::chapters::stick_state_machine::{self as ssm, main_run};
+use crate::cli::{Cli, Command};
+use crate::numerics::hybrid::Options;
+use crate::physics::stick::StickParams;
+use clap::FromArgMatches;
+use serde_json::Value;
+
+/// Largest request body accepted (bytes): a full parameter set is about 300 bytes.
+pub const MAX_BODY_BYTES: usize = 16 * 1024;
+
+/// Longest text accepted for one field (characters): enough for any number or name.
+const MAX_FIELD_CHARS: usize = 64;
+
+/// Most drive cycles `f t` one lab run may simulate: the lab animates every run, and
+/// keeps its trajectory in memory (one sample per integration step, about 16 a cycle at
+/// the default rtol and some 350 with DOPRI5 at 1e-14, 112 bytes each) while it thins it
+/// to frames: at most about 40 MB a run. 1000 cycles are 33 s at 30 Hz, a fraction of a
+/// second of work at the default rtol. Longer runs: the CLI.
+pub const MAX_CYCLES: f64 = 1000.0;
+
+/// The request's fields: JSON key, the CLI flag it becomes, and whether it is required.
+/// Every physical parameter is required, so that a page never runs on a value it did
+/// not show; the run's options may be left to the CLI's defaults.
+pub const FIELDS: [(&str, &str, bool); 16] = [
+    ("scene", "--scene", true),
+    ("theta0_rad", "--theta0-rad", true),
+    ("mu", "--mu", true),
+    ("gamma", "--gamma", true),
+    ("frequency_hz", "--frequency-hz", true),
+    ("stiffness", "--stiffness", true),
+    ("damping", "--damping", true),
+    ("length_m", "--length-m", true),
+    ("mass_kg", "--mass-kg", true),
+    ("duration_s", "--duration-s", true),
+    ("rtol", "--rtol", false),
+    ("method", "--method", false),
+    ("collision_angle", "--collision-angle", false),
+    ("rules", "--rules", false),
+    ("start", "--start", false),
+    ("g_mps2", "--g-mps2", false),
+];
+
+/// The lab's own field: a sequence number chosen by the page, echoed in the answer so
+/// that the page can drop the answer to a request it has since superseded.
+pub const SEQ_FIELD: &str = "seq";
+
+/// A refused request: the HTTP status and one line saying why.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ApiError {
+    /// HTTP status (400 bad request, 413 too large, 503 busy or too slow, 500 a defect).
+    pub status: u16,
+    /// One line: the CLI's own reason where the CLI would refuse the same value.
+    pub reason: String,
+}
+
+impl ApiError {
+    /// A 400 with `reason`, which starts `error: ` as the CLI's lines do.
+    pub fn bad(reason: impl Into<String>) -> Self {
+        let reason: String = reason.into();
+        ApiError {
+            status: 400,
+            reason: if reason.starts_with("error: ") {
+                reason
+            } else {
+                format!("error: {reason}")
+            },
+        }
+    }
+}
+
+/// A validated run request.
+#[derive(Debug, Clone)]
+pub struct RunRequest {
+    /// The subcommand's flags as the CLI parsed them.
+    pub args: ssm::Args,
+    /// The validated parameters.
+    pub params: StickParams,
+    /// The validated simulated time (s).
+    pub duration_s: f64,
+    /// The integrator's options.
+    pub opts: Options,
+    /// The page's sequence number, if any.
+    pub seq: Option<u64>,
+    /// The argument vector the request became (for messages and tests).
+    pub argv: Vec<String>,
+}
+
+/// The flags of a request body: `["workbook", "stick-state-machine", "--mu=0.4", ...]`,
+/// and the sequence number. Each value goes in as `--flag=value`, so that no value can be
+/// read as another flag.
+pub fn to_argv(body: &[u8]) -> Result<(Vec<String>, Option<u64>), ApiError> {
+    let v: Value =
+        serde_json::from_slice(body).map_err(|e| ApiError::bad(format!("malformed JSON: {e}")))?;
+    let Value::Object(obj) = v else {
+        return Err(ApiError::bad(
+            "the body must be a JSON object of parameters, as {\"mu\": 0.4, ...}",
+        ));
+    };
+    let mut seq = None;
+    let mut argv = vec!["workbook".to_string(), ssm::ID.to_string()];
+    for (key, value) in &obj {
+        if key == SEQ_FIELD {
+            seq = Some(value.as_u64().ok_or_else(|| {
+                ApiError::bad(format!("field `seq`: {value} is not a whole number >= 0"))
+            })?);
+            continue;
+        }
+        let Some((_, flag, _)) = FIELDS.iter().find(|(k, _, _)| k == key) else {
+            let known: Vec<&str> = FIELDS.iter().map(|f| f.0).collect();
+            return Err(ApiError::bad(format!(
+                "unknown field `{}`: the fields are {}, seq",
+                clip(key),
+                known.join(", ")
+            )));
+        };
+        argv.push(format!("{flag}={}", field_text(key, value)?));
+    }
+    if let Some((key, flag, _)) = FIELDS
+        .iter()
+        .find(|(k, _, req)| *req && !obj.contains_key(*k))
+    {
+        return Err(ApiError::bad(format!(
+            "missing field `{key}` (the flag {flag} of workbook {})",
+            ssm::ID
+        )));
+    }
+    Ok((argv, seq))
+}
+
+/// A field's value as the text of its flag: a JSON number as written, or a string (a
+/// scene's or method's name, or a number typed into a field, which the CLI then parses).
+fn field_text(key: &str, value: &Value) -> Result<String, ApiError> {
+    let text = match value {
+        Value::Number(n) => n.to_string(),
+        Value::String(s) => s.trim().to_string(),
+        other => {
+            return Err(ApiError::bad(format!(
+                "field `{key}`: {} is not a number or a name",
+                clip(&other.to_string())
+            )))
+        }
+    };
+    if text.chars().count() > MAX_FIELD_CHARS || text.chars().any(char::is_control) {
+        return Err(ApiError::bad(format!(
+            "field `{key}`: \"{}\" is not a number or a name (at most {MAX_FIELD_CHARS} printable characters)",
+            clip(&text)
+        )));
+    }
+    Ok(text)
+}
+
+/// At most 40 characters of `s`, control characters escaped, for one-line messages.
+fn clip(s: &str) -> String {
+    let mut out: String = s
+        .chars()
+        .take(40)
+        .collect::<String>()
+        .escape_debug()
+        .to_string();
+    if s.chars().count() > 40 {
+        out.push_str("...");
+    }
+    out
+}
+
+/// The one line the CLI prints for a clap error (its first line, and a pointer to
+/// `--help`): the same text as `workbook` on stderr.
+pub fn clap_line(e: &clap::Error) -> String {
+    let text = e.render().to_string();
+    let first = text
+        .lines()
+        .find(|l| !l.trim().is_empty())
+        .unwrap_or("error: bad arguments");
+    format!("{first} (see --help)")
+}
+
+/// Parses and validates a request body: the CLI's parser, the chapter's `setup` (its
+/// ranges), the CLI's work budget, and the lab's own bound on drive cycles.
+pub fn parse_run(body: &[u8]) -> Result<RunRequest, ApiError> {
+    if body.len() > MAX_BODY_BYTES {
+        return Err(too_large(body.len()));
+    }
+    let (argv, seq) = to_argv(body)?;
+    let matches = crate::cli::command()
+        .try_get_matches_from(&argv)
+        .map_err(|e| ApiError::bad(clap_line(&e)))?;
+    let cli = Cli::from_arg_matches(&matches).map_err(|e| ApiError::bad(clap_line(&e)))?;
+    let Command::StickStateMachine(args) = &cli.command else {
+        return Err(internal("the request did not parse as stick-state-machine"));
+    };
+    let ctx = cli.context().map_err(|e| ApiError::bad(e.to_string()))?;
+    let (params, duration_s, opts) =
+        ssm::setup(args, &ctx).map_err(|e| ApiError::bad(e.to_string()))?;
+    main_run::check_work(&params, duration_s, false).map_err(|e| ApiError::bad(e.to_string()))?;
+    let cycles = duration_s * params.frequency_hz(); // formula: drive cycles f t
+    if cycles > MAX_CYCLES {
+        return Err(ApiError::bad(format!(
+            "error: invalid value {} for --duration-s: the lab runs at most {MAX_CYCLES} drive cycles f t (here {} Hz x {} s = {} cycles); longer runs: workbook {}",
+            crate::error::num(duration_s),
+            crate::error::num(params.frequency_hz()),
+            crate::error::num(duration_s),
+            crate::error::num(cycles.round()),
+            ssm::ID
+        )));
+    }
+    Ok(RunRequest {
+        args: args.clone(),
+        params,
+        duration_s,
+        opts,
+        seq,
+        argv,
+    })
+}
+
+/// The 413 answer to a body of `n` bytes.
+pub fn too_large(n: usize) -> ApiError {
+    ApiError {
+        status: 413,
+        reason: format!(
+            "error: the request body has {n} bytes, more than the lab's limit of {MAX_BODY_BYTES}"
+        ),
+    }
+}
+
+/// A 500: a defect of the lab (never a user's input).
+pub fn internal(why: &str) -> ApiError {
+    ApiError {
+        status: 500,
+        reason: format!("error: internal error of the lab: {why}"),
+    }
+}
+
+/// The scenes' values as request fields (`{"jamming": {...}, "authors": {...}}`): the
+/// page's presets, taken from the chapter's own scenes.
+pub fn scenes() -> Value {
+    use ssm::Scene;
+    let one = |scene: Scene, name: &str| {
+        let p = ssm::scene_params(scene, None);
+        serde_json::json!({
+            "scene": name,
+            "theta0_rad": ssm::round(p.theta0_rad, 10),
+            "mu": p.mu,
+            "gamma": ssm::round(p.gamma_accel(), 12),
+            "frequency_hz": ssm::round(p.frequency_hz(), 12),
+            "stiffness": p.stiffness_nm_per_rad,
+            "damping": p.damping_nms_per_rad,
+            "length_m": p.length_m,
+            "mass_kg": p.mass_kg,
+            "g_mps2": p.g_mps2,
+        })
+    };
+    serde_json::json!({
+        "jamming": one(Scene::Jamming, "jamming"),
+        "authors": one(Scene::Authors, "authors"),
+    })
+}
