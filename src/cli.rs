@@ -160,7 +160,7 @@ where
                     2
                 }
                 _ => {
-                    let _ = writeln!(err, "{} (see --help)", one_line(&e.render().to_string()));
+                    let _ = writeln!(err, "{}", clap_error_line(&e));
                     2
                 }
             };
@@ -242,20 +242,25 @@ fn computes(c: &Command) -> bool {
     !matches!(c, Command::List | Command::Render { .. } | Command::Lab(_))
 }
 
-/// Clap's message as one line: its first paragraph (the error, naming the flag and the
-/// value), with a line break inside the value shown as `\n`.
-fn one_line(rendered: &str) -> String {
-    let first = rendered
-        .trim_start()
-        .split("\n\n")
-        .next()
-        .unwrap_or("error: bad arguments");
-    let line = first.trim_end().replace('\r', "\\r").replace('\n', "\\n");
-    if line.is_empty() {
-        "error: bad arguments".into()
-    } else {
-        line
+/// The one line the CLI prints for a clap error: clap's first paragraph (the error,
+/// naming the flag and the value), its indented continuation lines (such as
+/// `[possible values: ...]`) joined with a space, a line break inside the value shown as
+/// `\n`, and a pointer to `--help`. The lab answers with the same line.
+pub fn clap_error_line(e: &clap::Error) -> String {
+    let rendered = e.render().to_string();
+    let first = rendered.trim_start().split("\n\n").next().unwrap_or("");
+    let mut line = String::new();
+    for (i, l) in first.trim_end().lines().enumerate() {
+        if i > 0 {
+            let continuation = l.starts_with(' ') || l.starts_with('\t');
+            line.push_str(if continuation { " " } else { "\\n" });
+        }
+        line.push_str(if i > 0 { l.trim_start() } else { l });
     }
+    if line.is_empty() {
+        line = "error: bad arguments".into();
+    }
+    format!("{} (see --help)", line.replace('\r', "\\r"))
 }
 
 /// The error line for an argument that is not UTF-8, naming its flag (`--x VALUE` or

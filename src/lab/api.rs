@@ -171,15 +171,9 @@ fn clip(s: &str) -> String {
     out
 }
 
-/// The one line the CLI prints for a clap error (its first line, and a pointer to
-/// `--help`): the same text as `workbook` on stderr.
+/// The one line the CLI prints for a clap error: the same text as `workbook` on stderr.
 pub fn clap_line(e: &clap::Error) -> String {
-    let text = e.render().to_string();
-    let first = text
-        .lines()
-        .find(|l| !l.trim().is_empty())
-        .unwrap_or("error: bad arguments");
-    format!("{first} (see --help)")
+    crate::cli::clap_error_line(e)
 }
 
 /// Parses and validates a request body: the CLI's parser, the chapter's `setup` (its
