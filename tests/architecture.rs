@@ -26,7 +26,6 @@ const KNOWN_CYCLES: &[(&str, &[&str])] = &[
         "stick_state_machine",
         &["claims", "rule_claims", "slide_rules"],
     ),
-    ("stick_state_machine", &["figures", "maps"]),
     ("vertical_shaking", &["claims", "doc"]),
 ];
 

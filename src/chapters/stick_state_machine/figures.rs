@@ -204,23 +204,6 @@ fn mean_speed(s: &RunSummary) -> f64 {
     }
 }
 
-/// The stick of `base` on a plate of peak acceleration `gamma_accel` (over g) at
-/// `frequency_hz` (Hz), built by [`StickParams::new`] (its collision angle is `new`'s
-/// default, not `base`'s).
-pub(super) fn with_drive(base: &StickParams, gamma_accel: f64, frequency_hz: f64) -> StickParams {
-    StickParams::new(
-        base.length_m,
-        base.mass_kg,
-        base.stiffness_nm_per_rad,
-        base.damping_nms_per_rad,
-        base.mu,
-        base.theta0_rad,
-        base.g_mps2,
-        gamma_accel,
-        frequency_hz,
-    )
-}
-
 fn speed_sweeps(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
     let n = if ctx.quick { 5 } else { 23 };
     let dur = if ctx.quick { 1.0 } else { 3.0 };
@@ -237,9 +220,9 @@ fn speed_sweeps(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Res
     }
     let speeds = par_map(&items, "stick speed sweeps", |&(_, kind, v, b)| {
         let p = if kind == 0 {
-            with_drive(&b, v, b.frequency_hz())
+            b.with_drive(v, b.frequency_hz())
         } else {
-            with_drive(&b, b.gamma_accel(), v)
+            b.with_drive(b.gamma_accel(), v)
         };
         mean_speed(&run_scene(&p, dur, opts, Recording::default()))
     });

@@ -114,7 +114,7 @@ fn gamma_f(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<V
         .flat_map(|&f| gammas.iter().map(move |&g| (g, f)))
         .collect();
     let speeds = par_map(&items, "stick (Γ, f) map", |&(g, f)| {
-        let p = super::figures::with_drive(&base, g, f);
+        let p = base.with_drive(g, f);
         late_speed(&p, opts, ctx.quick)
     });
     let h = HeatMap::new(

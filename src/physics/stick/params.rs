@@ -37,6 +37,23 @@ pub struct StickParams {
 }
 
 impl StickParams {
+    /// The same stick on a plate of peak acceleration `gamma_accel` (over g) at
+    /// `frequency_hz` (Hz), built by [`StickParams::new`] (its collision angle is `new`'s
+    /// default, not `self`'s).
+    pub fn with_drive(&self, gamma_accel: f64, frequency_hz: f64) -> StickParams {
+        StickParams::new(
+            self.length_m,
+            self.mass_kg,
+            self.stiffness_nm_per_rad,
+            self.damping_nms_per_rad,
+            self.mu,
+            self.theta0_rad,
+            self.g_mps2,
+            gamma_accel,
+            frequency_hz,
+        )
+    }
+
     /// Parameters with the plate given by its peak acceleration over g (`gamma_accel`,
     /// `Gamma = delta omega^2 / g`) and frequency (Hz).
     #[allow(clippy::too_many_arguments)]
