@@ -29,7 +29,7 @@ const $ = (id) => document.getElementById(id);
 
 const lab = {
   scene: "jamming", values: {}, scenes: null, run: null, cmp: null, map: null,
-  seq: 0, inFlight: false, pending: false, inputStamp: null, latencies: [],
+  seq: 0, inFlight: false, pending: false, inputStamp: null, latencies: [], timings: [],
   simT: 0, frame: 0, frameCount: 0, playing: true, lastWall: null, mapSeq: 0, mapTimer: null,
 };
 window.__lab = lab; // read by the browser test
@@ -145,8 +145,9 @@ async function sendRun() {
   document.body.classList.add("waiting");
   try {
     const { ok, j } = await post("/api/run", body());
+    const answered = performance.now();
     if (!ok) showError(j.error);
-    else if (j.seq === lab.seq) { hideError(); applyRun(j, stamp); }
+    else if (j.seq === lab.seq) { hideError(); applyRun(j, stamp, answered); }
   } catch (e) {
     showError(`the lab does not answer: is \`workbook lab\` still running? (${e.message})`);
   }
@@ -195,7 +196,7 @@ async function sendMap() {
 }
 
 // ---------- a run ----------
-function applyRun(j, stamp) {
+function applyRun(j, stamp, answered) {
   const old = lab.run;
   lab.run = j;
   const fr = j.frames;
@@ -220,8 +221,13 @@ function applyRun(j, stamp) {
   drawTimeline();
   drawMap();
   if (stamp !== null) {
+    const applied = performance.now();
     requestAnimationFrame(() => {
-      lab.latencies.push(performance.now() - stamp);
+      const now = performance.now();
+      lab.latencies.push(now - stamp);
+      // where the time goes: the answer (server run + transfer + JSON), the page's
+      // redraw of numbers, timeline and map, and the wait for the next frame
+      lab.timings.push({ answer: answered - stamp, server: j.compute_ms, redraw: applied - answered, frame: now - applied });
     });
   }
 }
@@ -334,7 +340,7 @@ function drawAnim() {
     g.lineTo(cx + r * Math.sin(a), cy - r * Math.cos(a));
     g.closePath(); g.fill(); g.stroke();
     const f = Math.hypot(cur.fx, cur.fz) / sc.weight_n;
-    const len = Math.min(140, 90 * f); // 90 px per weight m g
+    const len = Math.min(150, 150 * f); // 150 px per weight m g
     if (len > 1) arrow(g, cx, cy, cx + (len * cur.fx) / (f * sc.weight_n), cy - (len * cur.fz) / (f * sc.weight_n), "#c53030");
   }
   drawRod(g, cx, cy, cur.th, s * sc.length_m, mode.color, 9);
@@ -397,10 +403,13 @@ function drawTimeline() {
   if (n === 0) return;
   const tEnd = Math.max(f.t_s[n - 1], lab.cmp ? lab.cmp.frames.t_s[lab.cmp.frames.t_s.length - 1] : 0);
   const X = (t) => TL.left + ((W - TL.left - TL.right) * t) / (tEnd || 1);
-  for (let i = 0; i < n; i++) {
+  for (let i = 0; i < n;) {
+    let k = i + 1; // one rectangle per stretch of one mode
+    while (k < n && f.mode[k] === f.mode[i]) k++;
     g.fillStyle = (MODES[f.mode[i]] || MODES.F).color;
-    const x0 = X(f.t_s[i]), x1 = i + 1 < n ? X(f.t_s[i + 1]) : x0 + 1;
+    const x0 = X(f.t_s[i]), x1 = k < n ? X(f.t_s[k]) : X(f.t_s[n - 1]) + 1;
     g.fillRect(x0, TL.top, Math.max(1, x1 - x0 + 0.5), TL.strip);
+    i = k;
   }
   g.fillStyle = "#444"; g.font = "11px system-ui, sans-serif";
   g.fillText("mode", 6, TL.top + 12);
