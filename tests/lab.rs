@@ -382,3 +382,25 @@ fn no_request_body_panics_the_endpoint() {
     }
     assert!(ran > 25 && refused > 1000, "{ran} ran, {refused} refused");
 }
+
+#[test]
+fn the_lab_subcommand_refuses_bad_flags_in_one_line() {
+    for (args, why) in [
+        (&["lab", "--json"][..], "--json"),
+        (&["lab", "--port", "99999"][..], "--port"),
+        (&["lab", "--host", "nope"][..], "--host"),
+        (&["lab", "--g-mps2", "9"][..], "--g-mps2"),
+    ] {
+        let argv: Vec<String> = std::iter::once("workbook")
+            .chain(args.iter().copied())
+            .map(String::from)
+            .collect();
+        let (code, out, err) = cli(&argv);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?}: {out}");
+        assert!(
+            err.contains(why) && err.trim_end().lines().count() == 1,
+            "{args:?}: {err}"
+        );
+    }
+}
