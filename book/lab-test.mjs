@@ -261,6 +261,10 @@ async function main() {
       okm(`map click at (${target}) set theta0_rad ${got[0]}, mu ${got[1]} and ran them`);
     } else fail(`map click: wanted ${target}, got ${JSON.stringify(got)}`);
     await sleep(800);
+    const search = await ev(`location.search`);
+    const q = new URLSearchParams(search);
+    if (Number(q.get("theta0_rad")) === got[0] && Number(q.get("mu")) === got[1]) okm(`the address carries the parameters: ${search.slice(0, 60)}...`);
+    else fail(`address bar not updated: ${search}`);
     await shot("lab-map-click");
 
     // 8. comparison overlay: keep this run, change gamma

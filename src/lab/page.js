@@ -110,13 +110,23 @@ function changed() {
   if (!lab.inFlight) sendRun();
 }
 
+// The address bar carries the parameters (a link reproduces the run); written at most
+// every 300 ms, since browsers limit history.replaceState (Safari: 100 calls in 30 s).
 function writeUrl() {
+  if (lab.urlTimer) return;
+  lab.urlTimer = setTimeout(() => {
+    lab.urlTimer = null;
+    try { history.replaceState(null, "", `?${query()}`); } catch (e) { /* the address bar is a convenience */ }
+  }, 300);
+}
+
+function query() {
   const q = new URLSearchParams();
   q.set("scene", lab.scene);
   for (const p of PARAMS) q.set(p.key, lab.values[p.key]);
   q.set("method", lab.values.method);
   q.set("rtol", lab.values.rtol);
-  history.replaceState(null, "", `?${q}`);
+  return q;
 }
 
 function readUrl() {
@@ -142,7 +152,6 @@ async function sendRun() {
   lab.seq += 1;
   const stamp = lab.inputStamp;
   lab.inputStamp = null;
-  document.body.classList.add("waiting");
   try {
     const { ok, j } = await post("/api/run", body());
     const answered = performance.now();
