@@ -10,8 +10,11 @@ const JS: &str = include_str!("page.js");
 const DRAW_JS: &str = include_str!("page-draw.js");
 
 static PAGE: LazyLock<String> = LazyLock::new(|| {
-    HTML.replacen("/*LAB-STYLE*/", CSS, 1)
-        .replacen("//LAB-SCRIPT", &format!("{JS}\n{DRAW_JS}\nstart();\n"), 1)
+    HTML.replacen("/*LAB-STYLE*/", CSS, 1).replacen(
+        "//LAB-SCRIPT",
+        &format!("{JS}\n{DRAW_JS}\nstart();\n"),
+        1,
+    )
 });
 
 /// The page, self-contained.
