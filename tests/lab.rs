@@ -404,3 +404,18 @@ fn the_lab_subcommand_refuses_bad_flags_in_one_line() {
         );
     }
 }
+
+#[test]
+fn the_events_download_is_the_clis_events_file() {
+    let b = body(json!({"scene": "authors", "theta0_rad": 0.4280861692, "gamma": 10}));
+    let lab = lab_run(&b).expect("a run");
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let path = dir.path().join("events.csv");
+    let mut argv = flags(&b);
+    argv.extend(["--events".to_string(), path.display().to_string()]);
+    let (code, _, err) = cli(&argv);
+    assert_eq!(code, 0, "{err}");
+    let file = std::fs::read_to_string(&path).expect("the CLI's events file");
+    assert!(file.lines().count() > 50, "{file}");
+    assert_eq!(lab["events_csv"].as_str().expect("csv"), file);
+}
