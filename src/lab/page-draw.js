@@ -81,7 +81,7 @@ function drawAnim() {
   const mode = MODES[cur.mode] || MODES.F;
   // friction cone and contact force at C
   if (cur.mode !== "F") {
-    const a = Math.atan(sc.mu), r = 70;
+    const a = Math.atan(sc.mu), r = 130; // as long as the longest force arrow
     g.fillStyle = "rgba(72,187,120,0.13)";
     g.strokeStyle = "rgba(47,133,90,0.5)";
     g.beginPath(); g.moveTo(cx, cy);
@@ -89,7 +89,7 @@ function drawAnim() {
     g.lineTo(cx + r * Math.sin(a), cy - r * Math.cos(a));
     g.closePath(); g.fill(); g.stroke();
     const f = Math.hypot(cur.fx, cur.fz) / sc.weight_n;
-    const len = Math.min(150, 150 * f); // 150 px per weight m g
+    const len = Math.min(130, 150 * f); // 150 px per weight m g, at most the cone
     if (len > 1) arrow(g, cx, cy, cx + (len * cur.fx) / (f * sc.weight_n), cy - (len * cur.fz) / (f * sc.weight_n), "#c53030");
   }
   drawRod(g, cx, cy, cur.th, s * sc.length_m, mode.color, 9);
