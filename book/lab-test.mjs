@@ -220,14 +220,20 @@ async function main() {
 
     // 5. latency: slider input to the first frame drawn with the new run
     const lat = [];
+    await ev(`__lab.timings.length = 0`);
     for (const v of ["0.45", "0.5", "0.38", "0.42", "0.47", "0.36", "0.41", "0.44"]) {
       await ev(`__lab.latencies.length = 0`);
+      await sleep(100);
       await ev(`(() => { const el = document.getElementById("s-mu"); el.value = "${v}"; el.dispatchEvent(new Event("input")); })()`);
       await waitFor(`__lab.latencies.length > 0 && ${idle}`, "the latency probe");
       lat.push(await ev(`__lab.latencies[0]`));
     }
     lat.sort((x, y) => x - y);
     const med = lat[Math.floor(lat.length / 2)];
+    const tm = await ev(`__lab.timings`);
+    const median = (xs) => xs.slice().sort((x, y) => x - y)[Math.floor(xs.length / 2)];
+    const parts = ["answer", "server", "redraw", "frame"].map((k) => `${k} ${median(tm.map((t) => t[k])).toFixed(1)}`);
+    console.log(`latency parts, medians in ms (answer: input to parsed answer, of which server: the run; redraw: numbers, timeline, map; frame: wait for the animation frame): ${parts.join(", ")}`);
     console.log(`latency slider -> redrawn animation (2 s simulated, ${lat.length} moves): median ${med.toFixed(1)} ms, min ${lat[0].toFixed(1)} ms, max ${lat[lat.length - 1].toFixed(1)} ms`);
     writeFileSync(join(shotDir, "latency.txt"), `${lat.map((x) => x.toFixed(1)).join(" ")}\n`);
 
@@ -255,6 +261,10 @@ async function main() {
       okm(`map click at (${target}) set theta0_rad ${got[0]}, mu ${got[1]} and ran them`);
     } else fail(`map click: wanted ${target}, got ${JSON.stringify(got)}`);
     await sleep(800);
+    const search = await ev(`location.search`);
+    const q = new URLSearchParams(search);
+    if (Number(q.get("theta0_rad")) === got[0] && Number(q.get("mu")) === got[1]) okm(`the address carries the parameters: ${search.slice(0, 60)}...`);
+    else fail(`address bar not updated: ${search}`);
     await shot("lab-map-click");
 
     // 8. comparison overlay: keep this run, change gamma

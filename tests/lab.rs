@@ -315,7 +315,7 @@ fn no_request_body_panics_the_endpoint() {
         json!(1e-320),
         json!(1e300),
         json!(-1e300),
-        json!(1.5707963267948966),
+        json!(std::f64::consts::FRAC_PI_2),
         json!(2),
         json!(50),
         json!(1000),
@@ -381,4 +381,41 @@ fn no_request_body_panics_the_endpoint() {
         }
     }
     assert!(ran > 25 && refused > 1000, "{ran} ran, {refused} refused");
+}
+
+#[test]
+fn the_lab_subcommand_refuses_bad_flags_in_one_line() {
+    for (args, why) in [
+        (&["lab", "--json"][..], "--json"),
+        (&["lab", "--port", "99999"][..], "--port"),
+        (&["lab", "--host", "nope"][..], "--host"),
+        (&["lab", "--g-mps2", "9"][..], "--g-mps2"),
+    ] {
+        let argv: Vec<String> = std::iter::once("workbook")
+            .chain(args.iter().copied())
+            .map(String::from)
+            .collect();
+        let (code, out, err) = cli(&argv);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?}: {out}");
+        assert!(
+            err.contains(why) && err.trim_end().lines().count() == 1,
+            "{args:?}: {err}"
+        );
+    }
+}
+
+#[test]
+fn the_events_download_is_the_clis_events_file() {
+    let b = body(json!({"scene": "authors", "theta0_rad": 0.4280861692, "gamma": 10}));
+    let lab = lab_run(&b).expect("a run");
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let path = dir.path().join("events.csv");
+    let mut argv = flags(&b);
+    argv.extend(["--events".to_string(), path.display().to_string()]);
+    let (code, _, err) = cli(&argv);
+    assert_eq!(code, 0, "{err}");
+    let file = std::fs::read_to_string(&path).expect("the CLI's events file");
+    assert!(file.lines().count() > 50, "{file}");
+    assert_eq!(lab["events_csv"].as_str().expect("csv"), file);
 }

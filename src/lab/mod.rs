@@ -26,7 +26,7 @@ pub const DEFAULT_PORT: u16 = 8023;
 /// Flags of `workbook lab`.
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// TCP port to listen on (0: any free port; the address is printed) [default: 8023].
+    /// TCP port to listen on (0: any free port; the address is printed).
     #[arg(long, default_value_t = DEFAULT_PORT)]
     pub port: u16,
     /// IP address to bind. The default, 127.0.0.1, lets only this computer in; any
