@@ -12,6 +12,7 @@ mod gait;
 mod impulse;
 mod maps;
 mod mutations;
+pub mod poincare;
 mod printed_table;
 mod rule_claims;
 mod slide_rules;
