@@ -306,38 +306,3 @@ pub fn static_start(model: &StickModel) -> Option<Point> {
         Next::Stop(_) => None,
     }
 }
-
-#[cfg(test)]
-mod explore {
-    use super::*;
-    use crate::numerics::ode::{Method, StepControl};
-    use crate::physics::stick::{authors_scene, jamming_scene};
-
-    #[test]
-    #[ignore]
-    fn explore() {
-        for (name, p) in [("jamming", jamming_scene(9.81)), ("authors", authors_scene(10.0))] {
-            let m = StickModel::new(p);
-            for rtol in [1e-10, 1e-12] {
-                let opts = Options {
-                    method: Method::Dop853,
-                    control: StepControl::tol(rtol, rtol),
-                    ..Options::default()
-                };
-                let x0 = static_start(&m).unwrap();
-                let mut x = x0.clone();
-                for k in 0..600 { let r = strobe(&m, &opts, &x, 1); match r { Ok(q) => { if k % 40 == 0 { println!("  {k} d {:e} {q:?}", distance(&m, &q, &x)); } x = q }, Err(e) => { println!("{e:?}"); break } } }
-                let g = settle(&m, &opts, &x0, (600, 8, 1e-6));
-                println!("{name} rtol {rtol}: {g:?}");
-                let Gait::Periodic(n, x) = g else { continue };
-                let (fp, res) = newton(&m, &opts, &x, n, (1e-5, 1e-11, 8)).unwrap();
-                println!("  fixed point {fp:?} residual {res:e}");
-                for h in [1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 1e-6, 1e-7] {
-                    let j = jacobian(&m, &opts, &fp, n, h, Difference::Central).unwrap();
-                    let jf = jacobian(&m, &opts, &fp, n, h, Difference::Forward).unwrap();
-                    println!("  h {h:e}: central {:?} forward {:?}", multipliers(&j), multipliers(&jf));
-                }
-            }
-        }
-    }
-}
