@@ -4,8 +4,8 @@
 //! workbook's statements ([`Statements`]).
 
 use super::limit_cycle::{
-    eigen_condition, leading, max_difference, spectral_radius, Analysis, DECAY_PERIODS, DISPLACEMENT,
-    H_FINE, LADDER, NEWTON_TOL, RTOL,
+    eigen_condition, leading, max_difference, spectral_radius, Analysis, DECAY_PERIODS,
+    DISPLACEMENT, H_FINE, LADDER, NEWTON_TOL, RTOL,
 };
 use crate::report::{Check, Claim, Verdict};
 use serde_json::json;
@@ -148,7 +148,11 @@ fn saltation(st: &Statements, sc: &Scenes) -> Claim {
             .map_or(f64::INFINITY, |m| max_difference(&fd, m));
         diffs.push(d);
         tols.push(difference_error(a));
-        radii.push(other.as_ref().map_or(f64::NAN, |m| round(spectral_radius(m))));
+        radii.push(
+            other
+                .as_ref()
+                .map_or(f64::NAN, |m| round(spectral_radius(m))),
+        );
     }
     let holds = diffs.iter().zip(&tols).all(|(d, t)| d <= t);
     let how = if st.saltation {
@@ -164,7 +168,10 @@ fn saltation(st: &Statements, sc: &Scenes) -> Claim {
         SECTION,
         &text,
         json!([0, 0]),
-        json!(diffs.iter().map(|d| super::round(*d, 3)).collect::<Vec<_>>()),
+        json!(diffs
+            .iter()
+            .map(|d| super::round(*d, 3))
+            .collect::<Vec<_>>()),
         json!(tols.iter().map(|d| super::round(*d, 3)).collect::<Vec<_>>()),
         holds,
         Verdict::Confirmed,
@@ -179,7 +186,10 @@ fn stability(st: &Statements, sc: &Scenes) -> Claim {
     let mut tols = Vec::new();
     let mut holds = true;
     for (_, a) in sc {
-        let rho = a.saltation.as_ref().map_or(f64::NAN, |m| spectral_radius(m));
+        let rho = a
+            .saltation
+            .as_ref()
+            .map_or(f64::NAN, |m| spectral_radius(m));
         let stated = st.rate_factor * rho;
         let rate = a.decay_rate.unwrap_or(f64::NAN);
         let k = DECAY_PERIODS as i32;
@@ -206,30 +216,4 @@ fn stability(st: &Statements, sc: &Scenes) -> Claim {
         Verdict::Confirmed,
     )
     .with_check(Check::Simulation)
-}
-
-#[cfg(test)]
-mod explore {
-    use super::*;
-    use crate::physics::stick::{authors_scene, jamming_scene};
-
-    #[test]
-    #[ignore]
-    fn claims_numbers() {
-        let t = std::time::Instant::now();
-        let a = super::super::limit_cycle::analyse(&authors_scene(10.0));
-        let j = super::super::limit_cycle::analyse(&jamming_scene(9.81));
-        println!("analyse: {:?}", t.elapsed());
-        for (n, x) in [("a", &a), ("j", &j)] {
-            println!("run_error {:e} difference_error {:e}", x.run_error, difference_error(x));
-            println!("{n}: gait {:?}\n fixed {:?}\n central {:?}\n forward {:?}\n salt {:?}\n flows {:?}\n rate {:?} curv {} kappa {}", x.gait.label(), x.fixed, x.central, x.forward, x.saltation, x.flows_only, x.decay_rate, x.curvature, x.monodromy.as_ref().map(eigen_condition).unwrap_or(0.0));
-        }
-        let sc: Scenes = [("authors", &a), ("self-locking", &j)];
-        for st in [WORKBOOK, Statements { central: false, ..WORKBOOK }, Statements { saltation: false, ..WORKBOOK }, Statements { rate_factor: 1.1, ..WORKBOOK }] {
-            for c in all(&st, &sc) {
-                println!("{} {:?}: exp {} comp {} tol {}", c.id, c.verdict, c.expected, c.computed, c.tolerance);
-            }
-            println!();
-        }
-    }
 }

@@ -108,7 +108,10 @@ pub fn analyse(p: &StickParams) -> Analysis {
         js.push(jac(h, Difference::Central));
     }
     a.central = js.iter().flatten().map(multipliers).collect();
-    let fwd: Vec<_> = LADDER.iter().map(|&h| jac(h, Difference::Forward)).collect();
+    let fwd: Vec<_> = LADDER
+        .iter()
+        .map(|&h| jac(h, Difference::Forward))
+        .collect();
     a.forward = fwd.iter().flatten().map(multipliers).collect();
     if let (Some(jf), Some(jc)) = (&fwd[0], &js[0]) {
         a.curvature = 2.0 * (jf - jc).abs().max() / LADDER[0]; // formula: J_f - J_c = (h/2) P'' + O(h^2)
@@ -129,12 +132,8 @@ fn find_fixed(model: &StickModel, opts: &Options, gait: &Gait) -> Option<(Point,
     let settings = (H_FINE, NEWTON_TOL, 20);
     match gait {
         Gait::Periodic(n, x) => newton(model, opts, x, *n, settings).map(|(p, r)| (p, *n, r)),
-        Gait::NotSettled => {
-            let mut x = static_start(model)?;
-            for _ in 0..TRANSIENT {
-                x = strobe(model, opts, &x, 1).ok()?;
-            }
-            (1..=2).find_map(|n| newton(model, opts, &x, n, settings).map(|(p, r)| (p, n, r)))
+        Gait::NotSettled(x) => {
+            (1..=2).find_map(|n| newton(model, opts, x, n, settings).map(|(p, r)| (p, n, r)))
         }
         _ => None,
     }
@@ -162,8 +161,12 @@ fn decay_rate(
         *s += DISPLACEMENT * dir[k] * sc[k];
     }
     let coord = |p: &Point| -> Option<f64> {
-        let d = DVector::from_iterator(p.s.len(), (0..p.s.len()).map(|k| (p.s[k] - x.s[k]) / sc[k]));
-        let w = invert_basis(&scaled)?.row(lead).transpose().dot(&d.map(|e| Complex::new(e, 0.0)));
+        let d =
+            DVector::from_iterator(p.s.len(), (0..p.s.len()).map(|k| (p.s[k] - x.s[k]) / sc[k]));
+        let w = invert_basis(&scaled)?
+            .row(lead)
+            .transpose()
+            .dot(&d.map(|e| Complex::new(e, 0.0)));
         Some(w.norm())
     };
     let w0 = coord(&y)?;
@@ -237,7 +240,9 @@ pub fn max_difference(a: &[(f64, f64)], b: &[(f64, f64)]) -> f64 {
     let key = |v: &[(f64, f64)]| {
         let mut v = v.to_vec();
         v.sort_by(|x, y| {
-            let m = (y.0.hypot(y.1) * 1e6).round().total_cmp(&(x.0.hypot(x.1) * 1e6).round());
+            let m = (y.0.hypot(y.1) * 1e6)
+                .round()
+                .total_cmp(&(x.0.hypot(x.1) * 1e6).round());
             m.then(y.1.total_cmp(&x.1))
         });
         v

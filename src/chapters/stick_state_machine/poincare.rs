@@ -166,9 +166,7 @@ pub fn jacobian(
         let shifted = |sign: f64| {
             let mut p = x.clone();
             p.s[c] += sign * step;
-            strobe(model, opts, &p, n)
-                .ok()
-                .filter(|q| q.mode == x.mode)
+            strobe(model, opts, &p, n).ok().filter(|q| q.mode == x.mode)
         };
         let plus = shifted(1.0)?;
         let (minus, width) = match &centre {
@@ -237,8 +235,9 @@ pub enum Gait {
     /// A periodic gait of this many drive periods (1: period-1), with its section point.
     Periodic(usize, Point),
     /// Still no period up to the largest tried after the transient: chaotic, quasi-
-    /// periodic or a slow transient (the section cannot tell them apart at this length).
-    NotSettled,
+    /// periodic or a slow transient (the section cannot tell them apart at this length);
+    /// the orbit's last point.
+    NotSettled(Point),
     /// The stick fell.
     Fell,
     /// The run stopped otherwise (invalid state, Zeno): the outcome's label.
@@ -250,7 +249,7 @@ impl Gait {
     pub fn label(&self) -> String {
         match self {
             Gait::Periodic(n, _) => format!("period-{n}"),
-            Gait::NotSettled => "not settled".into(),
+            Gait::NotSettled(_) => "not settled".into(),
             Gait::Fell => "fell".into(),
             Gait::Stopped(why) => (*why).into(),
         }
@@ -281,7 +280,7 @@ pub fn settle(
             return Gait::Periodic(n, orbit[last].clone());
         }
     }
-    Gait::NotSettled
+    Gait::NotSettled(orbit[last].clone())
 }
 
 /// The section point of the static start (at rest at the static angle, or at `theta_0`

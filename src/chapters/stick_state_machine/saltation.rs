@@ -111,7 +111,12 @@ impl Variational<'_> {
     }
 
     /// The saltation matrix of the switch `(mode, i)` at `(t, y-)` into `(to, y+)`.
-    fn jump(&self, (mode, i, to): (Mode, usize, Mode), t: f64, y: (&State, &State)) -> Matrix3<f64> {
+    fn jump(
+        &self,
+        (mode, i, to): (Mode, usize, Mode),
+        t: f64,
+        y: (&State, &State),
+    ) -> Matrix3<f64> {
         let dr = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 0.0)); // formula: x_c' <- 0
         if !self.saltation {
             return dr;
@@ -148,7 +153,13 @@ impl HybridSystem<NV> for Variational<'_> {
         self.model.direction(mode, i)
     }
 
-    fn on_event(&self, mode: Mode, i: usize, t: f64, y: &[f64; NV]) -> Transition<Mode, StickStop, NV> {
+    fn on_event(
+        &self,
+        mode: Mode,
+        i: usize,
+        t: f64,
+        y: &[f64; NV],
+    ) -> Transition<Mode, StickStop, NV> {
         let s = head(y);
         let covered = matches!((mode, i), (Mode::Pivot, 1 | 2)) || (mode != Mode::Pivot && i == 2);
         match self.model.on_event(mode, i, t, &s) {
