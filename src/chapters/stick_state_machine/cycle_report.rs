@@ -120,6 +120,13 @@ pub fn results(a: &Analysis) -> Vec<(&'static str, Value)> {
             "central differences",
         ),
     };
+    if m.is_empty() || m.iter().any(|z| !z.0.is_finite() || !z.1.is_finite()) {
+        out.push((
+            "floquet_method",
+            json!("none (the perturbed runs leave the mode)"),
+        ));
+        return out;
+    }
     // a multiplier at rounding level is the exact zero of the slip stop (shown as 0)
     let abs: Vec<f64> = moduli(&m)
         .iter()

@@ -161,6 +161,9 @@ fn decay_rate(
         *s += DISPLACEMENT * dir[k] * sc[k];
     }
     let coord = |p: &Point| -> Option<f64> {
+        if p.mode != x.mode {
+            return None; // the displaced run left the gait's mode: no linear picture
+        }
         let d =
             DVector::from_iterator(p.s.len(), (0..p.s.len()).map(|k| (p.s[k] - x.s[k]) / sc[k]));
         let w = invert_basis(&scaled)?

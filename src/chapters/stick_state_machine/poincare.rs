@@ -212,6 +212,9 @@ pub fn newton(
     let d = x.s.len();
     for _ in 0..iters {
         let px = strobe(model, opts, &x, n).ok()?;
+        if px.mode != x.mode {
+            return None; // P^n leaves the mode: not near a fixed point of this mode
+        }
         let res = distance(model, &px, &x);
         if res < tol {
             return Some((x, res));

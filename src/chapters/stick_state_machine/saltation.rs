@@ -83,8 +83,8 @@ impl Variational<'_> {
     fn a(&self, mode: Mode, t: f64, y: &State) -> Matrix3<f64> {
         let sc = scales(self.model, Mode::SlideRight);
         let mut a = Matrix3::zeros();
-        for j in 0..3 {
-            let h = Self::H * sc[j];
+        for (j, &scale) in sc.iter().enumerate() {
+            let h = Self::H * scale;
             let dz = Vector3::ith(j, h);
             let fp = self.field(mode, t, &with_z(y, z_of(y) + dz));
             let fm = self.field(mode, t, &with_z(y, z_of(y) - dz));
@@ -100,8 +100,8 @@ impl Variational<'_> {
         let g = |t: f64, z: Vector3<f64>| m.guard(mode, i, t, &with_z(y, z));
         let z = z_of(y);
         let mut grad = RowVector3::zeros();
-        for j in 0..3 {
-            let h = Self::H * sc[j];
+        for (j, &scale) in sc.iter().enumerate() {
+            let h = Self::H * scale;
             let dz = Vector3::ith(j, h);
             grad[j] = (g(t, z + dz) - g(t, z - dz)) / (2.0 * h); // formula: dg/dz_j
         }
