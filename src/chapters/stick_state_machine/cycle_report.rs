@@ -101,7 +101,12 @@ pub fn results(a: &Analysis) -> Vec<(&'static str, Value)> {
         return out;
     };
     out.push(("gait_period", json!(n)));
-    let names = ["theta_rad", "theta_dot_rad_s", "x_c_dot_mps", "z_c_dot_mps"];
+    let names = [
+        "angle_rad",
+        "angle_rate_rad_s",
+        "x_c_dot_mps",
+        "z_c_dot_mps",
+    ];
     let mut fp = serde_json::Map::new();
     fp.insert("mode".into(), json!(x.mode.name()));
     for (k, v) in x.s.iter().enumerate() {
@@ -179,9 +184,9 @@ pub fn mutations() -> Vec<Mutation> {
         ),
         mutation(
             "floquet-difference-order",
-            "stated order 2 -> 2.2",
+            "stated order 2 -> 3 (as if the differences were Richardson-extrapolated)",
             Statements {
-                order: 2.2,
+                order: 3.0,
                 ..WORKBOOK
             },
         ),
@@ -195,7 +200,7 @@ pub fn mutations() -> Vec<Mutation> {
         ),
         mutation(
             "gait-stability",
-            "stated rate |lambda|max -> 1.1 |lambda|max",
+            "stated rate |λ|max -> 1.1 |λ|max",
             Statements {
                 rate_factor: 1.1,
                 ..WORKBOOK
@@ -203,7 +208,7 @@ pub fn mutations() -> Vec<Mutation> {
         ),
         mutation(
             "gait-stability",
-            "stated rate |lambda|max -> 0.9 |lambda|max",
+            "stated rate |λ|max -> 0.9 |λ|max",
             Statements {
                 rate_factor: 0.9,
                 ..WORKBOOK
