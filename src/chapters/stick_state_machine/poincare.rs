@@ -308,3 +308,45 @@ pub fn static_start(model: &StickModel) -> Option<Point> {
         Next::Stop(_) => None,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::stick::jamming_scene;
+
+    #[test]
+    fn coordinates_round_trip_through_the_state_in_every_mode() {
+        let m = StickModel::new(jamming_scene(9.81));
+        let cases = [
+            (Mode::Pivot, vec![0.35, -0.4]),
+            (Mode::SlideRight, vec![0.35, -0.4, 0.3]),
+            (Mode::SlideLeft, vec![0.35, 0.2, -0.1]),
+            (Mode::Flight, vec![0.31, 1e-4, 0.2, 0.05]),
+        ];
+        for (mode, s) in cases {
+            let x = Point { mode, s };
+            let y = embed(&m, &x);
+            let back = coords(&m, mode, 0.0, &y);
+            assert_eq!(back.len(), dim(mode));
+            for (a, b) in back.iter().zip(&x.s) {
+                assert!((a - b).abs() < 1e-15, "{mode:?}: {back:?} vs {:?}", x.s);
+            }
+            // C on the plate in contact modes; in flight theta' follows C.3
+            if mode == Mode::Flight {
+                let w = -m.rate * (x.s[0] - m.p.theta0_rad);
+                assert!((y[OM] - w).abs() < 1e-12);
+            } else {
+                assert_eq!(m.h_c(0.0, &y), 0.0);
+            }
+        }
+        let a = Point {
+            mode: Mode::Pivot,
+            s: vec![0.3, 0.0],
+        };
+        let b = Point {
+            mode: Mode::SlideRight,
+            s: vec![0.3, 0.0, 0.0],
+        };
+        assert!(distance(&m, &a, &b).is_infinite());
+    }
+}

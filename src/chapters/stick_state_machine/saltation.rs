@@ -213,3 +213,43 @@ pub fn monodromy(
         o => Err(format!("{o:?}")),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::stick::jamming_scene;
+
+    #[test]
+    fn the_slip_stop_saltation_is_the_closed_form_of_the_text() {
+        // S = DR + (f+ - DR f-) grad g^T / g' with DR = diag(1, 1, 0) and g = -sigma x_c'
+        // reduces to the identity on theta, a zero row for x_c' and one correction
+        // S[1][2] = (theta''_pivot - theta''_slide) / x_c''_slide (chapter 6, section 8).
+        let model = StickModel::new(jamming_scene(9.81));
+        let v = Variational {
+            model: &model,
+            saltation: true,
+        };
+        let mut y = [0.0; NSTATE];
+        y[TH] = 0.36;
+        y[OM] = -0.4;
+        let t = 0.3 * model.period_s;
+        let y = model.canonical(Mode::SlideRight, t, &y);
+        let s = v.jump((Mode::SlideRight, 2, Mode::Pivot), t, (&y, &y));
+        let (p, sl) = (model.pivot_eval(t, &y), model.slide_eval(-1.0, t, &y));
+        let expected = (p.theta_dd - sl.theta_dd) / sl.xc_dd; // formula: closed form of S_stop
+        let mut closed = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 0.0));
+        closed[(1, 2)] = expected;
+        let err = (s - closed).abs().max();
+        assert!(err < 1e-6 * (1.0 + expected.abs()), "{s} vs {closed}");
+        assert!(expected.abs() > 1e-3, "a real correction: {expected}");
+        // without the saltation term only the reset's Jacobian is left
+        let bare = Variational {
+            model: &model,
+            saltation: false,
+        };
+        assert_eq!(
+            bare.jump((Mode::SlideRight, 2, Mode::Pivot), t, (&y, &y)),
+            Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, 0.0))
+        );
+    }
+}
