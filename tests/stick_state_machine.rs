@@ -781,3 +781,29 @@ fn a_period_three_gait_is_found_as_period_three() {
         .fold(0.0, f64::max);
     assert!(r < 1.0, "{r}");
 }
+
+#[test]
+fn limit_cycle_summary_snapshot() {
+    // Gait labels and multipliers, three digits (the methods agree to 1e-8).
+    let mut out = String::new();
+    for (name, a) in ["authors", "self-locking"].iter().zip(limit_cycles()) {
+        let (x, n, _) = a.fixed.clone().unwrap();
+        let m = a.saltation.clone().unwrap();
+        let shown: Vec<String> = m
+            .iter()
+            .map(|z| {
+                let c = |v: f64| if v.abs() < 5e-4 { 0.0 } else { v }; // no "-0.000"
+                format!("{:.3}{:+.3}i", c(z.0), c(z.1))
+            })
+            .collect();
+        out.push_str(&format!(
+            "{name}: {} | fixed point of P^{n} in {} at theta = {:.3} rad | multipliers {} | |lambda|max = {:.3}\n",
+            a.gait.label(),
+            x.mode.name(),
+            x.s[0],
+            shown.join(", "),
+            spectral_radius(&m)
+        ));
+    }
+    insta::assert_snapshot!("stick_limit_cycles", out);
+}
