@@ -5,16 +5,22 @@
 //! rule of Algorithms 1 to 4 gets a claim (see `claims.rs`).
 
 mod claims;
+pub mod cycle_claims;
+mod cycle_report;
 mod doc;
 mod evidence;
 mod figures;
 mod gait;
+mod gait_map;
 mod impulse;
+pub mod limit_cycle;
 pub mod main_run;
 mod maps;
 mod mutations;
+pub mod poincare;
 mod printed_table;
 mod rule_claims;
+pub mod saltation;
 mod slide_rules;
 
 use super::Context;
@@ -511,6 +517,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
         json!({"authors": ev.params[0].g_mps2, "jamming": ev.params[1].g_mps2}),
     );
     claims::add_all(&mut r, &ev, &physical, &p);
+    cycle_report::add(&mut r, &ev, &p); // the gait as a limit cycle (course section)
     r.table("stick-scenes", evidence::scenes_table(&ev));
     r.table(
         "stick-printed-errata",
@@ -520,11 +527,15 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     if let Some(dir) = ctx.figure_dir(ID) {
         let paths = figures::draw_all(&dir, &p, &physical, &ev, ctx, &opts)?;
         r.figures.extend(paths);
+        r.figures
+            .extend(cycle_report::figure(&dir, &ev, &opts, ctx)?);
     }
     Ok(r)
 }
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    mutations::all()
+    let mut v = mutations::all();
+    v.extend(cycle_report::mutations());
+    v
 }
