@@ -78,8 +78,9 @@ function filePage(path) {
   const text = readFileSync(join(root, path), "utf8").replace(/\{\{#/g, "\\{{#");
   const longest = Math.max(2, ...(text.match(/`+/g) ?? [""]).map((r) => r.length));
   const fence = "`".repeat(longest + 1);
-  const lang = LANG[extname(path)] ?? "text";
-  return `# \`${path}\`\n\nThe file \`${path}\` of the workbook's repository, as it was when this book was built.\n\n${fence}${lang}\n${text.replace(/\n?$/, "\n")}${fence}\n`;
+  // `noplayground`: mdBook would otherwise offer to run Rust files on the (online) playground.
+  const lang = LANG[extname(path)] === "rust" ? "rust,noplayground" : LANG[extname(path)] ?? "text";
+  return `# \`${path}\`\n\nThis file of the workbook's repository, as it was when this book was built.\n\n${fence}${lang}\n${text.replace(/\n?$/, "\n")}${fence}\n`;
 }
 
 function folderPage(path) {
@@ -92,14 +93,26 @@ function folderPage(path) {
     pages.set(child + (e.isDirectory() ? "/" : ""), page);
     return `- [\`${child}${e.isDirectory() ? "/" : ""}\`](${posix.relative(`code/${path}`, page)})`;
   });
-  return `# \`${path}/\`\n\nThe folder \`${path}/\` of the workbook's repository, as it was when this book was built.\n\n${lines.join("\n")}\n`;
+  return `# \`${path}/\`\n\nThis folder of the workbook's repository, as it was when this book was built.\n\n${lines.join("\n")}\n`;
 }
 
+// The preface is the book's front page: mdBook copies the first page to index.html at the
+// book's top, where the preface's relative links must also resolve. So it is staged at
+// the top (chapters/preface.md -> preface.md), its links moved up one level, and the
+// chapters' links to it moved down.
 mkdirSync(join(out, "chapters"), { recursive: true });
 for (const f of readdirSync(join(root, "chapters")).sort()) {
   if (!f.endsWith(".md")) continue;
   const text = readFileSync(join(root, "chapters", f), "utf8");
-  writeFileSync(join(out, "chapters", f), linkPaths(text, "chapters"));
+  if (f === "preface.md") {
+    const up = text
+      .replace(/\]\(\.\.\//g, "](")
+      .replace(/\]\((?![a-z]+:|#|\/)([^)]*\.md(?:#[^)]*)?)\)/g, "](chapters/$1)");
+    writeFileSync(join(out, f), linkPaths(up, "."));
+  } else {
+    const down = text.replace(/\]\(preface\.md/g, "](../preface.md");
+    writeFileSync(join(out, "chapters", f), linkPaths(down, "chapters"));
+  }
 }
 
 // Write the pages; a folder page adds its files, which are written in the next rounds.
