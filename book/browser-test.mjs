@@ -54,33 +54,13 @@ const EXTERNAL_ALLOWED = [/^https:\/\/github\.com\/toshankarghosh\/toothpicks(\/
 // measured and printed, not failed. Remove a figure from the list once it is relaid out.
 const KNOWN_SMALL_TEXT = new Set([
   "asymmetric-shaking/drift-vs-asymmetry.svg",
-  "asymmetric-shaking/drift-vs-drive.svg",
-  "asymmetric-shaking/regime-map.svg",
-  "asymmetric-shaking/velocities.svg",
   "asymmetric-shaking/work-precision.svg",
-  "effective-mass/impulse-ratio.svg",
-  "effective-mass/impulse-sketch.svg",
-  "horizontal-shaking/booktop.svg",
-  "horizontal-shaking/error-vs-gamma.svg",
-  "horizontal-shaking/velocity.svg",
-  "horizontal-shaking/work-precision.svg",
   "locomotion-definition/convex-hull.svg",
   "speed-vs-accuracy/economy.svg",
-  "speed-vs-accuracy/economy-horizontal.svg",
-  "speed-vs-accuracy/work-precision-block-drift.svg",
-  "speed-vs-accuracy/work-precision-stick-speed.svg",
-  "speed-vs-accuracy/stick-methods.svg",
-  "speed-vs-accuracy/soft-contact-convergence.svg",
   "stick-state-machine/energy-budget.svg",
   "stick-state-machine/snapshots.svg",
-  "stick-state-machine/speed-map.svg",
-  "stick-state-machine/speed-map-drive.svg",
   "stick-state-machine/speed-sweeps.svg",
   "stick-state-machine/time-series.svg",
-  "vertical-shaking/bias-law-error.svg",
-  "vertical-shaking/bifurcation.svg",
-  "vertical-shaking/contact-fraction.svg",
-  "vertical-shaking/work-precision.svg",
 ]);
 
 // The smallest font size of an SVG file in its own units, and its width in those units.
@@ -333,7 +313,7 @@ async function main() {
         const top = await s("Page.captureScreenshot", { format: "png" });
         writeFileSync(join(shotDir, `${name}.png`), Buffer.from(top.data, "base64"));
       }
-      if (page.startsWith("chapters/")) {
+      if (page.startsWith("chapters/") || page === "preface.html") {
         const height = Math.min(info.height, 16000);
         const full = await s("Page.captureScreenshot", {
           format: "png",
@@ -387,6 +367,23 @@ async function main() {
       const { result } = await s("Runtime.evaluate", { expression: inspect, returnByValue: true });
       const info = JSON.parse(result.value);
       checkLayout(page, "390 px", info);
+      // Sections asked for by name (BOOK_SHOTS, as above), at phone width.
+      for (const want of (process.env.BOOK_SHOTS ?? "").split(",").filter((w) => w.startsWith(page + "#"))) {
+        const id = want.slice(page.length + 1);
+        const { result: at } = await s("Runtime.evaluate", {
+          expression: `(() => { const h = document.getElementById(${JSON.stringify(id)});
+            return h ? h.getBoundingClientRect().top + window.scrollY : -1; })()`,
+          returnByValue: true,
+        });
+        if (at.value < 0) continue;
+        const sec = await s("Page.captureScreenshot", {
+          format: "png",
+          captureBeyondViewport: true,
+          clip: { x: 0, y: at.value - 20, width: 390, height: 2000, scale: 1 },
+        });
+        writeFileSync(join(shotDir, `phone-${page.replace(/\//g, "_").replace(/\.html$/, "")}-${id}.png`),
+          Buffer.from(sec.data, "base64"));
+      }
       if (page.startsWith("chapters/") || page === "index.html") {
         const shot = await s("Page.captureScreenshot", { format: "png" });
         writeFileSync(join(shotDir, `phone-${page.replace(/\//g, "_").replace(/\.html$/, "")}.png`),
@@ -397,6 +394,9 @@ async function main() {
     await s("Emulation.setDeviceMetricsOverride", { width: 1280, height: 1600, deviceScaleFactor: 1, mobile: false });
     for (const [file, px] of [...smallText].sort()) {
       console.log(`note: ${file}: smallest text ${px.toFixed(1)} px at book width (known, issue 24 point 5)`);
+    }
+    for (const file of KNOWN_SMALL_TEXT) {
+      if (!smallText.has(file)) failures.push(`${file}: listed in KNOWN_SMALL_TEXT but not shown with small text: update the list`);
     }
     // External links: only the authors' repository (the book is read offline).
     for (const { page, href } of allLinks) {

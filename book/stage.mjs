@@ -96,6 +96,21 @@ function folderPage(path) {
   return `# \`${path}/\`\n\nThis folder of the workbook's repository, as it was when this book was built.\n\n${lines.join("\n")}\n`;
 }
 
+// A table row with more unescaped `|` than its header loses its last cells silently (a
+// tolerance "|x| <= 1" once showed as an empty cell): the build fails instead.
+function checkTables(text, name) {
+  const bad = [];
+  const lines = text.split("\n");
+  let header = -1;
+  lines.forEach((line, i) => {
+    if (!line.startsWith("|")) return void (header = -1);
+    const pipes = (line.match(/(?<!\\)\|/g) ?? []).length;
+    if (header < 0) header = pipes;
+    else if (pipes !== header) bad.push(`${name}:${i + 1}: ${pipes - 1} cells in a table of ${header - 1} columns (an unescaped |?)`);
+  });
+  return bad;
+}
+
 // The preface is the book's front page: mdBook copies the first page to index.html at the
 // book's top, where the preface's relative links must also resolve. So it is staged at
 // the top (chapters/preface.md -> preface.md), its links moved up one level, and the
@@ -104,6 +119,11 @@ mkdirSync(join(out, "chapters"), { recursive: true });
 for (const f of readdirSync(join(root, "chapters")).sort()) {
   if (!f.endsWith(".md")) continue;
   const text = readFileSync(join(root, "chapters", f), "utf8");
+  const bad = checkTables(text, `chapters/${f}`);
+  if (bad.length > 0) {
+    console.error(bad.join("\n"));
+    process.exit(1);
+  }
   if (f === "preface.md") {
     const up = text
       .replace(/\]\(\.\.\//g, "](")
