@@ -130,7 +130,11 @@ for (const f of readdirSync(join(root, "chapters")).sort()) {
       .replace(/\]\((?![a-z]+:|#|\/)([^)]*\.md(?:#[^)]*)?)\)/g, "](chapters/$1)");
     writeFileSync(join(out, f), linkPaths(up, "."));
   } else {
-    const down = text.replace(/\]\(preface\.md/g, "](../preface.md");
+    // `{{#include ../src/...}}` is written relative to chapters/ in the repository;
+    // staged, the chapter sits two folders deeper (target/book-src/chapters/).
+    const down = text
+      .replace(/\]\(preface\.md/g, "](../preface.md")
+      .replace(/\{\{#include \.\.\//g, "{{#include ../../../");
     writeFileSync(join(out, "chapters", f), linkPaths(down, "chapters"));
   }
 }
