@@ -69,7 +69,11 @@ fn check_1_5<E: Exercises>() {
             for j in -4..=12 {
                 let v = [0.5 * f64::from(i), 0.5 * f64::from(j)];
                 let want = is_locomotion(v, media);
-                assert_eq!(E::is_outside_hull(v, media), want, "v = {v:?}, media = {media:?}: locomotion is {want}");
+                assert_eq!(
+                    E::is_outside_hull(v, media),
+                    want,
+                    "v = {v:?}, media = {media:?}: locomotion is {want}"
+                );
             }
         }
     }
@@ -81,7 +85,10 @@ fn check_2_5<E: Exercises>() {
         let q = theta.tan();
         let want = 3.0 * q / (4.0 + q * q); // formula: J_l/J_v = 3q/(4 + q^2)
         let got = E::rod_impulse_ratio(theta);
-        assert!((got - want).abs() <= 1e-12 * want.max(1.0), "{deg} deg: {got}, closed form {want}");
+        assert!(
+            (got - want).abs() <= 1e-12 * want.max(1.0),
+            "{deg} deg: {got}, closed form {want}"
+        );
     }
 }
 
@@ -90,13 +97,19 @@ fn check_3_5<E: Exercises>() {
         let u = f64::from(k) / 20.0;
         let want = -2.0 / PI * u.asin(); // formula: <F>/(mu m g) = -(2/pi) arcsin(v/V)
         let got = E::mean_friction(u);
-        assert!((got - want).abs() <= 1e-3, "u = {u}: mean friction {got}, closed form {want}");
+        assert!(
+            (got - want).abs() <= 1e-3,
+            "u = {u}: mean friction {got}, closed form {want}"
+        );
     }
     for k in 1..20 {
         let b = f64::from(k) / 20.0;
         let want = (PI * b / 2.0).sin(); // formula: v = V sin(pi b/2)
         let got = E::dither_drift(b);
-        assert!((got - want).abs() <= 1e-3, "b = {b}: drift {got} V, closed form {want} V");
+        assert!(
+            (got - want).abs() <= 1e-3,
+            "b = {b}: drift {got} V, closed form {want} V"
+        );
     }
 }
 
@@ -112,27 +125,48 @@ fn check_4_5<E: Exercises>() {
         let p0 = (1.0 / gn).asin();
         let got = E::landing_phase(gn, p0);
         let want = p0 + 2.0 * PI * f64::from(n);
-        assert!((got - want).abs() <= 1e-9, "Gamma_{n}: landing at {got}, a flight of {n} periods lands at {want}");
+        assert!(
+            (got - want).abs() <= 1e-9,
+            "Gamma_{n}: landing at {got}, a flight of {n} periods lands at {want}"
+        );
     }
     for gamma in [1.2f64, 1.5, 2.0, 2.5, 3.0, 4.5, 7.0] {
         let p0 = (1.0 / gamma).asin();
         let land = E::landing_phase(gamma, p0);
-        assert!(land > p0 + 1e-6 && gap(gamma, p0, land).abs() <= 1e-9, "Gamma = {gamma}: no landing at {land}");
+        assert!(
+            land > p0 + 1e-6 && gap(gamma, p0, land).abs() <= 1e-9,
+            "Gamma = {gamma}: no landing at {land}"
+        );
         for i in 1..10_000 {
             let p = p0 + 1e-3 + (land - p0 - 2e-3) * f64::from(i) / 10_000.0;
-            assert!(gap(gamma, p0, p) > 0.0, "Gamma = {gamma}: the block meets the plate at {p}, before {land}");
+            assert!(
+                gap(gamma, p0, p) > 0.0,
+                "Gamma = {gamma}: the block meets the plate at {p}, before {land}"
+            );
         }
     }
 }
 
 fn check_5_5<E: Exercises>() {
     // (v_slow, v_fast, T_slow, mu g): sticking in the slow stroke, and in both strokes.
-    for (vs, vf, ts, mg) in [(0.1, 0.3, 0.3, 0.5), (0.2, 0.5, 0.1, 2.0), (0.1, 0.15, 0.2, 1.0), (0.1, 0.2, 0.5, 9.0)] {
+    for (vs, vf, ts, mg) in [
+        (0.1, 0.3, 0.3, 0.5),
+        (0.2, 0.5, 0.1, 2.0),
+        (0.1, 0.15, 0.2, 1.0),
+        (0.1, 0.2, 0.5, 9.0),
+    ] {
         let tf = vs * ts / vf;
         let t = ts + tf;
-        let want = if mg * tf < vs + vf { vs - mg * tf * tf / t } else { 0.0 }; // formula: v_d = v_slow - mu g T_fast^2/T
+        let want = if mg * tf < vs + vf {
+            vs - mg * tf * tf / t
+        } else {
+            0.0
+        }; // formula: v_d = v_slow - mu g T_fast^2/T
         let got = E::sawtooth_drift(vs, vf, ts, mg);
-        assert!((got - want).abs() <= 1e-9 * vs, "({vs}, {vf}, {ts}, {mg}): drift {got}, closed form {want}");
+        assert!(
+            (got - want).abs() <= 1e-9 * vs,
+            "({vs}, {vf}, {ts}, {mg}): drift {got}, closed form {want}"
+        );
     }
 }
 
@@ -146,8 +180,19 @@ fn check_6_5<E: Exercises>() {
         g_mps2: 9.81,
     };
     let (gamma, f_hz) = (3.0, 30.0);
-    let model = StickModel::new(StickParams::new(0.15, 1.0, 10.0, 0.01, 0.4, 0.3, 9.81, gamma, f_hz));
-    for (i, (theta, w)) in [(0.35, 0.0), (0.3, 2.0), (0.5, -3.0), (-0.2, 1.0), (1.2, 0.5)].into_iter().enumerate() {
+    let model = StickModel::new(StickParams::new(
+        0.15, 1.0, 10.0, 0.01, 0.4, 0.3, 9.81, gamma, f_hz,
+    ));
+    for (i, (theta, w)) in [
+        (0.35, 0.0),
+        (0.3, 2.0),
+        (0.5, -3.0),
+        (-0.2, 1.0),
+        (1.2, 0.5),
+    ]
+    .into_iter()
+    .enumerate()
+    {
         let t = 0.0071 * i as f64;
         let a_s = -gamma * 9.81 * (2.0 * PI * f_hz * t).cos(); // the plate z_s = delta cos(omega t)
         let mut y = [0.0; NSTATE];
@@ -155,7 +200,11 @@ fn check_6_5<E: Exercises>() {
         let e = model.pivot_eval(t, &y);
         let got = E::pivot_reaction(&p, theta, w, a_s);
         for (g, want) in got.iter().zip([e.fx, e.fz]) {
-            assert!((g - want).abs() <= 1e-9 * 9.81, "theta = {theta}, theta' = {w}: F = {got:?}, the workbook's {:?}", [e.fx, e.fz]);
+            assert!(
+                (g - want).abs() <= 1e-9 * 9.81,
+                "theta = {theta}, theta' = {w}: F = {got:?}, the workbook's {:?}",
+                [e.fx, e.fz]
+            );
         }
     }
 }
@@ -163,9 +212,15 @@ fn check_6_5<E: Exercises>() {
 fn check_7_5<E: Exercises>() {
     let decay = |_t: f64, y: f64| -y;
     let r1 = E::rk4_step(&decay, 0.0, 1.0, 1.0);
-    assert!((r1 - 0.375).abs() <= 1e-15, "R(1) = {r1}, 1 - 1 + 1/2 - 1/6 + 1/24 = 0.375");
+    assert!(
+        (r1 - 0.375).abs() <= 1e-15,
+        "R(1) = {r1}, 1 - 1 + 1/2 - 1/6 + 1/24 = 0.375"
+    );
     let r = E::rk4_step(&decay, 0.0, 1.0, 2.785);
-    assert!((r - 1.0).abs() <= 1e-3, "R(2.785) = {r}: the stability bound of exercise 7.1");
+    assert!(
+        (r - 1.0).abs() <= 1e-3,
+        "R(2.785) = {r}: the stability bound of exercise 7.1"
+    );
     // y' = y cos t, y(0) = 1: y = exp(sin t). Error at t = 2 for 20, 40, 80 steps.
     let f = |t: f64, y: f64| y * t.cos();
     let err = |n: u32| {
@@ -176,7 +231,10 @@ fn check_7_5<E: Exercises>() {
     let (e20, e40, e80) = (err(20), err(40), err(80));
     for (a, b) in [(e20, e40), (e40, e80)] {
         let p = (a / b).log2();
-        assert!((p - 4.0).abs() <= 0.3, "observed order {p} (errors {e20:e}, {e40:e}, {e80:e}): RK4 has order 4");
+        assert!(
+            (p - 4.0).abs() <= 0.3,
+            "observed order {p} (errors {e20:e}, {e40:e}, {e80:e}): RK4 has order 4"
+        );
     }
 }
 

@@ -49,8 +49,11 @@ impl Exercises for Reference {
         let (m, i_g) = (1.0, 1.0 / 12.0);
         let r = [-0.5 * theta_rad.sin(), -0.5 * theta_rad.cos()];
         let p = [-r[1], r[0]]; // r turned by 90 degrees in the x-z plane
-        // formula: W = Id/m + p p^T / I_G
-        let w = [[1.0 / m + p[0] * p[0] / i_g, p[0] * p[1] / i_g], [p[1] * p[0] / i_g, 1.0 / m + p[1] * p[1] / i_g]];
+                               // formula: W = Id/m + p p^T / I_G
+        let w = [
+            [1.0 / m + p[0] * p[0] / i_g, p[0] * p[1] / i_g],
+            [p[1] * p[0] / i_g, 1.0 / m + p[1] * p[1] / i_g],
+        ];
         let det = w[0][0] * w[1][1] - w[0][1] * w[1][0];
         // formula: M = W^-1; J = M (0, dv): J_l/J_v = M_xz/M_zz
         let (m_xz, m_zz) = (-w[0][1] / det, w[0][0] / det);
