@@ -196,10 +196,11 @@ fn render_errata_appendix(
                     .map(|f| f.to_string_lossy().to_string())
             })
             .unwrap_or_default();
-        let _ = writeln!(body, "## {}. [{}]({file})\n", n + 1, r.title);
+        let _ = writeln!(body, "## {}. {}\n", n + 1, r.title);
         let _ = writeln!(
             body,
-            "Section {} of the document, `workbook {}`: {} claims, {} confirmed (+{} consistency checks), {} errata, {} approximations, {} failed.\n",
+            "[Chapter {}]({file}), section {} of the document, `workbook {}`: {} claims, {} confirmed (+{} consistency checks), {} errata, {} approximations, {} failed.\n",
+            n + 1,
             r.section,
             r.chapter,
             r.claims.len(),
