@@ -141,34 +141,6 @@ fn refresh(path: &Path, text: &str, new: &str, check: bool, out: &mut dyn Write)
     Ok(0)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn blocks_are_replaced_and_idempotent() {
-        let text = "intro\n<!-- BEGIN generated:a -->\nold\n<!-- END -->\nmid\n<!-- BEGIN generated:b -->\n<!-- END -->\nend\n";
-        let f = |n: &str| Some(format!("table {n}"));
-        let once = fill_blocks(text, &f).unwrap();
-        assert_eq!(
-            once,
-            "intro\n<!-- BEGIN generated:a -->\ntable a\n<!-- END -->\nmid\n<!-- BEGIN generated:b -->\ntable b\n<!-- END -->\nend\n"
-        );
-        assert_eq!(fill_blocks(&once, &f).unwrap(), once);
-        assert_eq!(block_names(text), ["a", "b"]);
-    }
-
-    #[test]
-    fn unknown_and_unterminated_blocks_are_errors() {
-        let none = |_: &str| None;
-        assert!(fill_blocks("<!-- BEGIN generated:x -->\n<!-- END -->", &none).is_err());
-        assert!(fill_blocks("<!-- BEGIN generated:x -->\nno end", &|_| Some(
-            String::new()
-        ))
-        .is_err());
-    }
-}
-
 /// Refreshes (or with `check` verifies) the block `errata` of the course's appendix
 /// `dir/errata.md`, when the file exists: per chapter, its verdict counts and every claim
 /// that is an erratum or an approximation, with its statement (which states the
@@ -234,4 +206,32 @@ fn render_errata_appendix(
     let new = fill_blocks(&text, &|n| (n == "errata").then(|| body.clone()))
         .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
     refresh(&path, &text, &new, check, out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn blocks_are_replaced_and_idempotent() {
+        let text = "intro\n<!-- BEGIN generated:a -->\nold\n<!-- END -->\nmid\n<!-- BEGIN generated:b -->\n<!-- END -->\nend\n";
+        let f = |n: &str| Some(format!("table {n}"));
+        let once = fill_blocks(text, &f).unwrap();
+        assert_eq!(
+            once,
+            "intro\n<!-- BEGIN generated:a -->\ntable a\n<!-- END -->\nmid\n<!-- BEGIN generated:b -->\ntable b\n<!-- END -->\nend\n"
+        );
+        assert_eq!(fill_blocks(&once, &f).unwrap(), once);
+        assert_eq!(block_names(text), ["a", "b"]);
+    }
+
+    #[test]
+    fn unknown_and_unterminated_blocks_are_errors() {
+        let none = |_: &str| None;
+        assert!(fill_blocks("<!-- BEGIN generated:x -->\n<!-- END -->", &none).is_err());
+        assert!(fill_blocks("<!-- BEGIN generated:x -->\nno end", &|_| Some(
+            String::new()
+        ))
+        .is_err());
+    }
 }
