@@ -1,13 +1,26 @@
 // Opens every page of the built book (target/book) in headless Chromium over the DevTools
 // protocol and fails on: a broken image, a dead internal link or anchor, a KaTeX error
 // element, raw `$` math left in the text, a console error or a failed resource load (a
-// KaTeX font, say). Saves a screenshot of the top of every page and a full-page one of
-// every chapter under target/book-screenshots/.
+// KaTeX font, say). Also, on every page, at desktop width (1280 px) and at phone width
+// (390 px):
+// - a table, image or SVG wider than the content column, or reaching past its right edge
+//   (a table must fit without scrolling: its scrollWidth fits the column too);
+// - smart punctuation inside code (curly quotes, en or em dashes in `code`/`pre`), and a
+//   flag whose `--` was turned into a dash in the text (`–g-mps2`);
+// - a repository path (src/, docs/, tests/, benches/, examples/) in the text that is not a
+//   link, and an external link other than the authors' repository (the book is read
+//   offline: every other link must stay inside the book);
+// - an SVG figure whose smallest text, as displayed, is under 11 px, unless the figure is
+//   listed in KNOWN_SMALL_TEXT (the plotted two-panel figures, issue 24 point 5; their
+//   sizes are printed);
+// and on the front page: the stick-model figure loaded, at least 600 px wide, and a link to
+// the authors' repository. Saves a screenshot of the top of every course page and a
+// full-page one of every chapter under target/book-screenshots/ (phone-width ones too).
 //
 // Usage: node --experimental-websocket book/browser-test.mjs [chromium binary]
 // (Node 20 needs the flag for its built-in WebSocket; Node 22 has it by default.)
 import { spawn } from "node:child_process";
-import { existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, writeFileSync } from "node:fs";
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { fileURLToPath, pathToFileURL } from "node:url";
@@ -21,7 +34,44 @@ function pages() {
   for (const f of readdirSync(join(bookDir, "chapters")).sort()) {
     if (f.endsWith(".html")) list.push(`chapters/${f}`);
   }
+  // The pages of repository files the course links to (book/stage.mjs).
+  const walk = (dir) =>
+    readdirSync(join(bookDir, dir))
+      .sort()
+      .flatMap((f) => {
+        const p = `${dir}/${f}`;
+        if (statSync(join(bookDir, p)).isDirectory()) return walk(p);
+        return p.endsWith(".html") ? [p] : [];
+      });
+  if (existsSync(join(bookDir, "code"))) list.push(...walk("code"));
   return list.filter((p) => existsSync(join(bookDir, p)));
+}
+
+// The only external links the book may hold: the authors' repository (the book is read
+// offline; everything else links inside the book).
+const EXTERNAL_ALLOWED = [/^https:\/\/github\.com\/toshankarghosh\/toothpicks(\/|$)/];
+// Plotted figures whose labels are still under 11 px at book width (issue 24 point 5):
+// measured and printed, not failed. Remove a figure from the list once it is relaid out.
+const KNOWN_SMALL_TEXT = new Set([
+  "asymmetric-shaking/drift-vs-asymmetry.svg",
+  "asymmetric-shaking/work-precision.svg",
+  "locomotion-definition/convex-hull.svg",
+  "speed-vs-accuracy/economy.svg",
+  "stick-state-machine/energy-budget.svg",
+  "stick-state-machine/snapshots.svg",
+  "stick-state-machine/speed-sweeps.svg",
+  "stick-state-machine/time-series.svg",
+]);
+
+// The smallest font size of an SVG file in its own units, and its width in those units.
+function svgText(path) {
+  const text = readFileSync(path, "utf8");
+  const head = /<svg[^>]*>/.exec(text)?.[0] ?? "";
+  const vb = /viewBox="\s*[-\d.]+[\s,]+[-\d.]+[\s,]+([\d.]+)/.exec(head);
+  const w = /\swidth="([\d.]+)/.exec(head);
+  const width = Number(vb?.[1] ?? w?.[1] ?? NaN);
+  const sizes = [...text.matchAll(/font-size(?:="|:\s*)([\d.]+)/g)].map((m) => Number(m[1]));
+  return { width, smallest: sizes.length ? Math.min(...sizes) : Infinity };
 }
 
 function launch() {
@@ -120,9 +170,47 @@ const inspect = `(() => {
   const links = [...document.querySelectorAll("a[href]")].map((a) => a.href);
   const ids = [...document.querySelectorAll("[id]")].map((e) => e.id)
     .concat([...document.querySelectorAll("a[name]")].map((e) => e.name));
+  const column = (document.querySelector("main") || document.body).getBoundingClientRect();
+  const tooWide = [];
+  for (const el of main.querySelectorAll("table, img, svg, figure, video")) {
+    if (el.closest(".katex, pre")) continue;
+    const r = el.getBoundingClientRect();
+    if (r.width === 0) continue;
+    const scroll = el.tagName === "TABLE" ? el.scrollWidth : r.width;
+    if (r.width > column.width + 1 || r.right > column.right + 1 || scroll > column.width + 1) {
+      const what = el.tagName === "IMG" ? el.getAttribute("src") :
+        el.tagName + " " + (el.innerText || "").replace(/\\s+/g, " ").slice(0, 60);
+      tooWide.push(what + ": " + Math.round(Math.max(r.width, scroll)) + " px in a " + Math.round(column.width) + " px column");
+    }
+  }
+  const pageOverflow = document.documentElement.scrollWidth > window.innerWidth + 1
+    ? "page " + document.documentElement.scrollWidth + " px wide in a " + window.innerWidth + " px window" : "";
+  const smartInCode = [...main.querySelectorAll("code, pre")]
+    .filter((e) => !e.closest(".katex"))
+    .map((e) => e.textContent)
+    .filter((s) => /[\\u2018\\u2019\\u201c\\u201d\\u2013\\u2014]/.test(s))
+    .map((s) => s.trim().slice(0, 80));
+  const dashedFlags = [];
+  const unlinkedPaths = [];
+  const pathRe = /(^|[\\s(,;:"'])((?:src|docs|tests|benches|examples)\\/[A-Za-z0-9_.\\/-]*[A-Za-z0-9_\\/])/;
+  const w2 = document.createTreeWalker(main, NodeFilter.SHOW_TEXT);
+  for (let n = w2.nextNode(); n; n = w2.nextNode()) {
+    const el = n.parentElement;
+    if (el.closest(".katex, script, style")) continue;
+    const s = n.textContent;
+    const flag = /(^|[\\s(])[\\u2013\\u2014][a-z][a-z0-9]*(-[a-z0-9]+)*/.exec(s);
+    if (flag) dashedFlags.push(s.slice(Math.max(0, flag.index - 30), flag.index + 40).trim());
+    if (el.closest("pre, a, h1")) continue;
+    const p = pathRe.exec(s);
+    if (p) unlinkedPaths.push(p[2]);
+  }
+  const images = [...main.querySelectorAll("img")].map((i) => ({
+    src: i.getAttribute("src"), url: i.src, width: i.getBoundingClientRect().width,
+    natural: i.naturalWidth }));
   const katexCount = document.querySelectorAll(".katex").length;
   const katexFont = getComputedStyle(document.querySelector(".katex") || document.body).fontFamily;
   return JSON.stringify({ brokenImages, katexErrors, rawMath, links, ids, katexCount, katexFont,
+    tooWide, pageOverflow, smartInCode, dashedFlags, unlinkedPaths, images,
     height: document.documentElement.scrollHeight });
 })()`;
 
@@ -162,6 +250,43 @@ async function main() {
     await s("Emulation.setDeviceMetricsOverride", { width: 1280, height: 1600, deviceScaleFactor: 1, mobile: false });
     const seen = new Map();
     const allLinks = [];
+    const smallText = new Map();
+    const checkLayout = (page, width, info) => {
+      for (const w of info.tooWide) failures.push(`${page} (${width}): wider than the column: ${w}`);
+      if (info.pageOverflow) failures.push(`${page} (${width}): ${info.pageOverflow}`);
+      if (!page.startsWith("code/")) {
+        // (A repository file's page shows the file as it is: its own dashes are no artefact.)
+        for (const c of info.smartInCode) failures.push(`${page}: smart punctuation in code: ${c}`);
+        for (const c of info.dashedFlags) failures.push(`${page}: a flag's -- turned into a dash: ${c}`);
+        for (const p of info.unlinkedPaths) failures.push(`${page}: repository path not a link: ${p}`);
+      }
+    };
+    // An SVG figure's smallest text as displayed: its smallest font size times the scale
+    // at which the page shows it (displayed width over the SVG's own width).
+    const checkFigures = (page, info) => {
+      for (const img of info.images) {
+        if (!img.url.startsWith("file:") || !/\.svg$/.test(img.url) || img.width === 0) continue;
+        if (!existsSync(fileURLToPath(img.url))) continue; // reported as a broken image
+        const { width, smallest } = svgText(fileURLToPath(img.url));
+        const px = (smallest * img.width) / width;
+        const rel = img.url.replace(/^.*\/figures\//, "");
+        if (!(px >= 11)) {
+          if (KNOWN_SMALL_TEXT.has(rel)) smallText.set(rel, px);
+          else failures.push(`${page}: ${rel}: smallest text ${px.toFixed(1)} px at book width (at least 11)`);
+        }
+      }
+    };
+    const checkFrontDoor = (page, info) => {
+      const fig = info.images.find((i) => /figures\/course\/stick-model\.svg$/.test(i.src ?? ""));
+      if (!fig || fig.natural === 0) failures.push(`${page}: the stick-model figure is missing`);
+      else if (fig.width < 600) failures.push(`${page}: the stick-model figure is ${fig.width} px wide (at least 600)`);
+      if (!info.links.some((h) => /^https:\/\/github\.com\/toshankarghosh\/toothpicks\/?$/.test(h))) {
+        failures.push(`${page}: no link to the authors' repository`);
+      }
+      if (!info.images.some((i) => /\.gif$/.test(i.src ?? "") && i.natural > 0)) {
+        failures.push(`${page}: no animation`);
+      }
+    };
     for (const page of list) {
       current = page;
       const url = pathToFileURL(join(bookDir, page)).href;
@@ -180,10 +305,15 @@ async function main() {
         failures.push(`${page}: math not in KaTeX fonts (font-family ${info.katexFont})`);
       }
       for (const href of info.links) allLinks.push({ page, href });
+      checkLayout(page, "desktop", info);
+      checkFigures(page, info);
+      if (page === "index.html" || page === "preface.html") checkFrontDoor(page, info);
       const name = page.replace(/\//g, "_").replace(/\.html$/, "");
-      const top = await s("Page.captureScreenshot", { format: "png" });
-      writeFileSync(join(shotDir, `${name}.png`), Buffer.from(top.data, "base64"));
-      if (page.startsWith("chapters/")) {
+      if (!page.startsWith("code/")) {
+        const top = await s("Page.captureScreenshot", { format: "png" });
+        writeFileSync(join(shotDir, `${name}.png`), Buffer.from(top.data, "base64"));
+      }
+      if (page.startsWith("chapters/") || page === "preface.html") {
         const height = Math.min(info.height, 16000);
         const full = await s("Page.captureScreenshot", {
           format: "png",
@@ -224,6 +354,55 @@ async function main() {
         }
       }
       console.log(`ok ${page}: ${info.katexCount} formulas, ${info.links.length} links`);
+    }
+    // Phone width: every page again at 390 px (mdBook hides the sidebar), the same layout
+    // checks; a screenshot of the top of each course page.
+    await s("Emulation.setDeviceMetricsOverride", { width: 390, height: 844, deviceScaleFactor: 1, mobile: true });
+    for (const page of list) {
+      current = `${page} (390 px)`;
+      const loaded = cdp.once("Page.loadEventFired", 30000);
+      await s("Page.navigate", { url: pathToFileURL(join(bookDir, page)).href });
+      await loaded;
+      await new Promise((r) => setTimeout(r, 150));
+      const { result } = await s("Runtime.evaluate", { expression: inspect, returnByValue: true });
+      const info = JSON.parse(result.value);
+      checkLayout(page, "390 px", info);
+      // Sections asked for by name (BOOK_SHOTS, as above), at phone width.
+      for (const want of (process.env.BOOK_SHOTS ?? "").split(",").filter((w) => w.startsWith(page + "#"))) {
+        const id = want.slice(page.length + 1);
+        const { result: at } = await s("Runtime.evaluate", {
+          expression: `(() => { const h = document.getElementById(${JSON.stringify(id)});
+            return h ? h.getBoundingClientRect().top + window.scrollY : -1; })()`,
+          returnByValue: true,
+        });
+        if (at.value < 0) continue;
+        const sec = await s("Page.captureScreenshot", {
+          format: "png",
+          captureBeyondViewport: true,
+          clip: { x: 0, y: at.value - 20, width: 390, height: 2000, scale: 1 },
+        });
+        writeFileSync(join(shotDir, `phone-${page.replace(/\//g, "_").replace(/\.html$/, "")}-${id}.png`),
+          Buffer.from(sec.data, "base64"));
+      }
+      if (page.startsWith("chapters/") || page === "index.html") {
+        const shot = await s("Page.captureScreenshot", { format: "png" });
+        writeFileSync(join(shotDir, `phone-${page.replace(/\//g, "_").replace(/\.html$/, "")}.png`),
+          Buffer.from(shot.data, "base64"));
+      }
+    }
+    console.log(`ok phone width: ${list.length} pages`);
+    await s("Emulation.setDeviceMetricsOverride", { width: 1280, height: 1600, deviceScaleFactor: 1, mobile: false });
+    for (const [file, px] of [...smallText].sort()) {
+      console.log(`note: ${file}: smallest text ${px.toFixed(1)} px at book width (known, issue 24 point 5)`);
+    }
+    for (const file of KNOWN_SMALL_TEXT) {
+      if (!smallText.has(file)) failures.push(`${file}: listed in KNOWN_SMALL_TEXT but not shown with small text: update the list`);
+    }
+    // External links: only the authors' repository (the book is read offline).
+    for (const { page, href } of allLinks) {
+      if (/^https?:/.test(href) && !EXTERNAL_ALLOWED.some((re) => re.test(href))) {
+        failures.push(`${page}: external link ${href} (only the authors' repository may be linked)`);
+      }
     }
     // Equations need no JavaScript: a chapter loaded with scripts disabled still has its
     // KaTeX elements, laid out in KaTeX's fonts.

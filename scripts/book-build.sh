@@ -31,25 +31,20 @@ if ! [ -f book/node_modules/katex/package.json ] ||
   (cd book && npm ci --no-audit --no-fund --loglevel=error)
 fi
 
-# Stage the book's source: mdbook copies only files under its src folder.
+# Stage the book's source: mdbook copies only files under its src folder. book/stage.mjs
+# copies the chapters and the summary, and turns every repository path the chapters name
+# (src/..., docs/..., tests/..., benches/...) into a link to a page of the book that shows
+# the file (see the comment at its top for why the book links to its own copies).
 src=target/book-src
 rm -rf "$src"
-mkdir -p "$src/chapters"
+mkdir -p "$src"
 rm -rf target/book-katex
 mkdir -p target/book-katex
-cp book/SUMMARY.md "$src/"
-cp chapters/*.md "$src/chapters/"
+node book/stage.mjs "$root" "$src"
 # The figures keep their repository paths, so the chapters' ../figures/... links resolve.
 (cd figures && find . -type f \( -name '*.svg' -o -name '*.png' -o -name '*.gif' \) -print0 |
   while IFS= read -r -d '' f; do mkdir -p "$root/$src/figures/$(dirname "$f")"; cp "$f" "$root/$src/figures/$f"; done)
 cp book/node_modules/katex/dist/katex.min.css target/book-katex/
-# The preface is the README; links to files outside the book become plain text.
-node -e '
-  const fs = require("fs");
-  let t = fs.readFileSync("README.md", "utf8");
-  t = t.replace(/\[([^\]]*)\]\((?!chapters\/[^)]*\.md|https?:|#)[^)]*\)/g, "$1");
-  fs.writeFileSync(process.argv[1], t);
-' "$src/preface.md"
 
 "$mdbook" build
 # mdbook copies the stylesheet (additional-css in book.toml) to the same relative path with

@@ -100,13 +100,14 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
     let readme = std::fs::read_to_string(&readme_path)
         .ok()
         .filter(|t| !block_names(t).is_empty());
+    let errata = dir.join("errata.md").is_file();
     let ctx = Context::headless(false);
     let mut stale = 0;
     let mut reports = Vec::new();
     for info in CHAPTERS.iter() {
         let text = texts.iter().find(|(p, _)| *p == chapter_path(dir, info));
-        if text.is_none() && readme.is_none() {
-            continue; // neither its text nor the README's findings need this chapter
+        if text.is_none() && readme.is_none() && !errata {
+            continue; // neither its text, the README's findings nor the errata need it
         }
         let report = chapters::run_default(info.id, &ctx)?;
         if let Some((path, text)) = text {
@@ -122,6 +123,7 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
             .map_err(|e| WorkbookError::Io(format!("{}: {e}", readme_path.display())))?;
         stale += refresh(&readme_path, &text, &new, check, out)?;
     }
+    stale += render_errata_appendix(dir, &reports, check, out)?;
     Ok(if stale > 0 { STALE_EXIT } else { 0 })
 }
 
@@ -176,6 +178,73 @@ fn refresh(path: &Path, text: &str, new: &str, check: bool, out: &mut dyn Write)
     crate::output::write_atomic(path, new.as_bytes()).map_err(WorkbookError::Io)?;
     writeln!(out, "updated: {}", path.display())?;
     Ok(0)
+}
+
+/// Refreshes (or with `check` verifies) the block `errata` of the course's appendix
+/// `dir/errata.md`, when the file exists: per chapter, its verdict counts and every claim
+/// that is an erratum or an approximation, with its statement (which states the
+/// correction or the limit). Returns 1 when `check` finds it stale, else 0.
+fn render_errata_appendix(
+    dir: &Path,
+    reports: &[ChapterReport],
+    check: bool,
+    out: &mut dyn Write,
+) -> Result<i32> {
+    use crate::report::Verdict;
+    use std::fmt::Write as _;
+    let path = dir.join("errata.md");
+    let Ok(text) = std::fs::read_to_string(&path) else {
+        return Ok(0);
+    };
+    let mut body = String::new();
+    for (n, r) in reports.iter().enumerate() {
+        let file = CHAPTERS
+            .iter()
+            .find(|i| i.id == r.chapter)
+            .and_then(|i| {
+                i.markdown_path()
+                    .file_name()
+                    .map(|f| f.to_string_lossy().to_string())
+            })
+            .unwrap_or_default();
+        let _ = writeln!(body, "## {}. {}\n", n + 1, r.title);
+        let _ = writeln!(
+            body,
+            "[Chapter {}]({file}), section {} of the document, `workbook {}`: {} claims, {} confirmed (+{} consistency checks), {} errata, {} approximations, {} failed.\n",
+            n + 1,
+            r.section,
+            r.chapter,
+            r.claims.len(),
+            r.confirmed(),
+            r.consistency_checks(),
+            r.count(Verdict::Erratum),
+            r.count(Verdict::Approximation),
+            r.count(Verdict::Failed)
+        );
+        let mut listed = 0;
+        for (verdict, label) in [
+            (Verdict::Erratum, "erratum"),
+            (Verdict::Approximation, "approximation"),
+        ] {
+            for c in r.claims.iter().filter(|c| c.verdict == verdict) {
+                listed += 1;
+                let _ = writeln!(
+                    body,
+                    "- **{}** ({label}; section {}; evidence: {}): {}",
+                    c.id,
+                    c.section,
+                    c.check.as_str(),
+                    c.statement
+                );
+            }
+        }
+        if listed > 0 {
+            body.push('\n');
+        }
+    }
+    let new = fill_blocks(&text, &|n| (n == "errata").then(|| body.clone()))
+        .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
+    refresh(&path, &text, &new, check, out)
 }
 
 #[cfg(test)]

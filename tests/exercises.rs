@@ -1,6 +1,7 @@
 //! The course's exercises: every answer the book states is computed here by the workbook
 //! (the command line in-process, or the library) and compared with the text, so that the
-//! book cannot drift from the code.
+//! book cannot drift from the code. The build exercises (the student writes a function)
+//! are in `exercises/build.rs`.
 //!
 //! An answer is marked in the Markdown as `<b class="answer" data-answer="ID">VALUE</b>`.
 //! A number printed with `d` decimals must equal the computed value rounded to `d`
@@ -10,6 +11,16 @@
 //! book (`every_answer_is_checked_and_every_check_has_an_answer`).
 
 mod common;
+
+// The build exercises (exercise N.5 of each chapter): the student's code in
+// tests/exercises/student.rs, the reference solutions in tests/exercises/solutions.rs,
+// the checks in tests/exercises/build.rs.
+#[path = "exercises/build.rs"]
+mod build;
+#[path = "exercises/solutions.rs"]
+mod solutions;
+#[path = "exercises/student.rs"]
+mod student;
 
 use std::collections::BTreeMap;
 

@@ -148,6 +148,7 @@ pub enum Position {
     Interior,
 }
 
+// ANCHOR: classify
 /// Classifies `v` against a hull, exactly.
 pub fn classify(h: &Hull, v: V2) -> Position {
     let v = [v[0] + 0.0, v[1] + 0.0];
@@ -184,12 +185,15 @@ pub fn classify(h: &Hull, v: V2) -> Position {
         }
     }
 }
+// ANCHOR_END: classify
 
+// ANCHOR: is_locomotion
 /// The document's test: locomotion iff the object's velocity is strictly outside the
 /// convex hull of the media velocities.
 pub fn is_locomotion(object: V2, media: &[V2]) -> bool {
     classify(&hull(media), object) == Position::Outside
 }
+// ANCHOR_END: is_locomotion
 
 fn fmt_v(v: V2) -> String {
     format!("({}, {})", v[0] + 0.0, v[1] + 0.0)

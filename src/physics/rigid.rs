@@ -62,6 +62,7 @@ pub fn cross(r: Vector2<f64>, j: Vector2<f64>) -> f64 {
     r.x * j.y - r.y * j.x
 }
 
+// ANCHOR: mobility
 /// Mobility W of the point at `r = C - G` (m/s per N s); `None` when `I_G = 0`
 /// (infinite mobility across `r`).
 pub fn mobility(body: &RigidBody, r: Vector2<f64>) -> Option<Matrix2<f64>> {
@@ -72,7 +73,9 @@ pub fn mobility(body: &RigidBody, r: Vector2<f64>) -> Option<Matrix2<f64>> {
     Some(Matrix2::identity() / body.mass_kg + p * p.transpose() / body.inertia_kgm2)
     // formula: W = I/m + r_perp r_perp^T / I_G
 }
+// ANCHOR_END: mobility
 
+// ANCHOR: effective_mass
 /// Effective mass matrix `M = W^-1` of the point at `r = C - G` in world
 /// coordinates (kg); for `I_G = 0` the rank-one limit `m r^ r^T` (a force at C can
 /// only act along the line through G).
@@ -85,6 +88,7 @@ pub fn effective_mass(body: &RigidBody, r: Vector2<f64>) -> Matrix2<f64> {
         }
     }
 }
+// ANCHOR_END: effective_mass
 
 /// A world-frame 2x2 tensor in stick coordinates (x' along, z' across): `R^T M R`.
 pub fn in_stick_frame(m: &Matrix2<f64>, theta_rad: f64) -> Matrix2<f64> {

@@ -445,7 +445,7 @@ impl ChapterReport {
                 c.check.as_str(),
                 fmt_value(&c.expected).replace('|', "\\|"),
                 fmt_value(&c.computed).replace('|', "\\|"),
-                fmt_value(&c.tolerance)
+                fmt_value(&c.tolerance).replace('|', "\\|")
             );
         }
         s

@@ -113,7 +113,7 @@ fn mass_matrix(theta: f64, doc: &Doc) -> Vec<Claim> {
     out.push(Claim::close(
         "derivation-a-c-g",
         sec,
-        "a_C/G = dω/dt L/2 (m/s² for F = 1 N); the workbook evaluates dω/dt k x r (consistency).",
+        "a_C/G = dω/dt L/2 (m/s² for F = 1 N); the workbook evaluates dω/dt r^⊥, r turned by 90° in the x-z plane (consistency).",
         wd * LENGTH_M / 2.0,
         a_cg,
         rel(wd),

@@ -107,6 +107,7 @@ fn shrink((a, b, fa, fb): (f64, f64, f64, f64), c: f64, fc: f64) -> (f64, f64, f
     }
 }
 
+// ANCHOR: illinois
 /// The Illinois iteration on the bracket `(a, b, fa, fb)`, `evals` evaluations spent.
 fn illinois_loop(
     mut f: impl FnMut(f64) -> f64,
@@ -157,6 +158,7 @@ fn illinois_loop(
     }
     (b, evals)
 }
+// ANCHOR_END: illinois
 
 /// A guard's value and rate (s^-1 times its unit) at one time.
 #[derive(Debug, Clone, Copy, PartialEq)]

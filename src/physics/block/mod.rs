@@ -187,6 +187,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
         }
     }
 
+    // ANCHOR: contact_needs
     /// Normal force per unit mass the plate must supply to carry the block (m/s^2).
     pub fn normal(&self, t: f64) -> f64 {
         self.params.g_mps2 + self.plate.az_mps2(t) // formula: n = g + a_zp
@@ -196,6 +197,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
     pub fn needed_friction(&self, t: f64) -> f64 {
         self.plate.ax_mps2(t) - self.params.bias_mps2 // formula: f_need = a_xp - b
     }
+    // ANCHOR_END: contact_needs
 
     /// Absolute `[x, v_x, z, v_z]` (m, m/s) of a relative state at `t`.
     pub fn absolute(&self, t: f64, y: &[f64; 4]) -> [f64; 4] {
@@ -336,6 +338,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
         }
     }
 
+    // ANCHOR: impact
     /// The impact map: relative velocities `(w, vh)` just before (with `vh < 0`) to the
     /// mode and state just after.
     pub fn impact(&self, t: f64, u: f64, w: f64, vh: f64) -> Transition<BlockMode, BlockStop, 4> {
@@ -358,6 +361,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
             self.continue_in_contact(t, u, w_after)
         }
     }
+    // ANCHOR_END: impact
 
     /// Ballistic flight in relative coordinates from `(t0, y0)` to `t`.
     fn flight_exact(&self, t0: f64, y0: &[f64; 4], t: f64) -> [f64; 4] {
@@ -376,6 +380,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
         ]
     }
 
+    // ANCHOR: slip_exact
     /// Coulomb slip (sign `sg`) in closed form from `(t0, y0)` to `t`.
     fn slip_exact(&self, sg: f64, t0: f64, y0: &[f64; 4], t: f64) -> [f64; 4] {
         let p = self.plate;
@@ -392,6 +397,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
             - (p.x_m(t) - p.x_m(t0) - vxp0 * s);
         [u, w, 0.0, 0.0]
     }
+    // ANCHOR_END: slip_exact
 
     /// The sampling step, shortened so that a guard dipping towards zero and back (a
     /// grazing take-off at Gamma just above 1, a grazing landing, a velocity that just

@@ -42,6 +42,7 @@ impl StickModel {
     /// The pivot equations with the plate's acceleration `a_s` (m/s^2) and `(s, c) =
     /// (sin theta, cos theta)` given.
     #[inline]
+    // ANCHOR: pivot
     fn pivot_eval_with(&self, a_s: f64, s: f64, c: f64, y: &State) -> ContactEval {
         let p = &self.p;
         let (m, l, g) = (p.mass_kg, p.length_m, p.g_mps2);
@@ -57,6 +58,7 @@ impl StickModel {
             fz: m * (az + g),
         } // formula: F = m (a_P + g e_z)
     }
+    // ANCHOR_END: pivot
 
     /// Denominator of the slide's normal force, `L (sin(theta) - sigma mu cos(theta))`
     /// (C.9 for sigma = +1, C.11 for sigma = -1): zero on the edge of the self-locking
@@ -86,6 +88,7 @@ impl StickModel {
 
     /// The slide equations with `a_s` (m/s^2) and `(s, c) = (sin theta, cos theta)` given.
     #[inline]
+    // ANCHOR: slide
     fn slide_eval_with(&self, sigma: f64, a_s: f64, s: f64, c: f64, y: &State) -> ContactEval {
         let p = &self.p;
         let (l, g, mu) = (p.length_m, p.g_mps2, p.mu);
@@ -108,6 +111,7 @@ impl StickModel {
             fz,
         }
     }
+    // ANCHOR_END: slide
 
     /// The evaluation of a contact mode (`None` in flight).
     #[inline]
