@@ -1,0 +1,115 @@
+//! The claims: pure functions of the statements and the evidence.
+
+use super::evidence::Evidence;
+use super::statements::Statements;
+use crate::report::{Check, Claim};
+
+/// Largest relative deviation of `measured` from `expected(q, alpha)` over the drops.
+fn worst(drops: &[(f64, f64, f64)], expected: impl Fn(f64, f64) -> f64) -> f64 {
+    drops
+        .iter()
+        .map(|&(q, r, a)| {
+            let e = expected(q, a);
+            (r - e).abs() / e.abs()
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Tolerance of the impulse ratios: the impact is solved exactly (piecewise linear in
+/// the normal impulse), so only rounding of a 2x2 solve and of the landing state remain.
+pub const RATIO_TOL: f64 = 1e-9;
+/// Tolerance of the near-massless ratio: `m_r = 1e-10 m` leaves `(1 + q^2)/alpha`,
+/// below 2e-9 at q = 2.
+pub const MASSLESS_TOL: f64 = 1e-8;
+/// Tolerance of the Painleve boundary: the bisection stops at 1e-12 relative.
+pub const BOUNDARY_TOL: f64 = 1e-9;
+/// Tolerance of the least boundary's value (golden search to 1e-7 rad on a quadratic
+/// minimum: 1e-14, plus the bisections' 1e-12).
+pub const MIN_TOL: f64 = 1e-9;
+/// Tolerance of its angle (rad): golden-section search to 1e-7 rad, but the bisection's
+/// rounding (1e-12 of mu) blurs a quadratic minimum of curvature ~5 to ~1e-6 rad.
+pub const MIN_ANGLE_TOL: f64 = 1e-5;
+
+/// All claims.
+pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> Vec<Claim> {
+    let uniform = worst(&ev.uniform, |q, _| doc.uniform_ratio(q));
+    let massless = worst(&ev.massless, |q, _| doc.massless_ratio(q));
+    let between = worst(&ev.between, |q, a| doc.between_ratio(q, a));
+    let boundary = ev
+        .boundaries
+        .iter()
+        .map(|&(th, a, mu)| (mu - doc.mu_painleve(th, a)).abs() / mu)
+        .fold(0.0, f64::max);
+    let (th_min, mu_min) = ev.uniform_min;
+    let (gain, scale, n) = impact_gain;
+    vec![
+        Claim::close(
+            "impulse-ratio-uniform",
+            "2",
+            "A uniform stick (m = 0) landing without slip takes a sideways impulse J_l/J_v = 3q/(4+q^2), q = tan(theta). Simulated drops at q = 0.5, 1, 2; largest relative deviation.",
+            0.0,
+            uniform,
+            RATIO_TOL,
+        )
+        .with_check(Check::Simulation),
+        Claim::close(
+            "impulse-ratio-massless",
+            "2",
+            "A massless rod with a tip mass (m_r -> 0) takes J_l/J_v = q: the impulse runs along the rod. Simulated drops with m_r = 1e-10 m at q = 0.5, 1, 2; largest relative deviation.",
+            0.0,
+            massless,
+            MASSLESS_TOL,
+        )
+        .with_check(Check::Simulation),
+        Claim::close(
+            "impulse-ratio-between",
+            "2 (derived)",
+            "A rod with alpha = M l_G^2 / I_G takes J_l/J_v = alpha q/(1 + alpha + q^2) (3q/(4+q^2) at alpha = 3, q as alpha -> infinity). Simulated drops of m_r = m (alpha = 6) and m_r = m/10 at q = 0.5, 1, 2; largest relative deviation.",
+            0.0,
+            between,
+            RATIO_TOL,
+        )
+        .with_check(Check::Simulation),
+        Claim::close(
+            "painleve-boundary",
+            "2, 4 (derived)",
+            "A rod sliding with its foot moving away from the side it leans to has no unique normal force (a Painleve case) once mu > mu_P(theta) = tan(theta) + 1/(alpha sin(theta) cos(theta)). Bisection in mu on the simulated sliding rod at theta = 0.3, 0.6, 1.0 rad for alpha = 3, 6, 17.3; largest relative deviation.",
+            0.0,
+            boundary,
+            BOUNDARY_TOL,
+        )
+        .with_check(Check::Simulation),
+        Claim::close(
+            "painleve-minimum-uniform",
+            "2, 4 (derived)",
+            "For the uniform rod the least mu_P is 4/3 (golden-section search over theta of the bisected boundary).",
+            doc.painleve_min,
+            mu_min,
+            MIN_TOL,
+        )
+        .with_check(Check::Simulation),
+        Claim::close(
+            "painleve-minimum-angle",
+            "2, 4 (derived)",
+            "... reached at theta = atan(1/2) = 0.4636 rad (rad).",
+            doc.painleve_min_tan.atan(),
+            th_min,
+            MIN_ANGLE_TOL,
+        )
+        .with_check(Check::Simulation),
+        Claim::judged(
+            "impacts-dissipate",
+            "4 (impact law)",
+            &format!(
+                "No impact creates energy: kinetic energy change minus the plate's impulse work, from the states before and after, at most 1e-12 of the largest loss, over {n} simulated landings with restitution e = {} (slipping, sticking, reversing).",
+                doc.restitution_max
+            ),
+            0.0,
+            gain,
+            1e-12 * scale,
+            gain <= 1e-12 * scale && n > 0,
+            crate::report::Verdict::Confirmed,
+        )
+        .with_check(Check::Simulation),
+    ]
+}

@@ -1,0 +1,39 @@
+//! The chapter's figures: the Painleve boundary (closed form and bisected points).
+
+use super::evidence::Evidence;
+use crate::error::Result;
+use crate::physics::stick_inertia::painleve::mu_painleve;
+use crate::plot::{save_chart, Chart, Legend};
+use std::path::Path;
+
+/// `painleve-boundary`: mu_P(theta) for the three rods, with the bisected points.
+pub fn painleve_boundary(ev: &Evidence, dir: &Path) -> Result<Vec<String>> {
+    let mut chart = Chart::new(
+        "Painleve boundary of the sliding rod",
+        "lean angle theta (rad)",
+        "mu_P (1)",
+    )
+    .y_range(0.0, 4.0)
+    .legend(Legend::UpperRight);
+    let mut alphas: Vec<f64> = ev.boundaries.iter().map(|b| b.1).collect();
+    alphas.dedup();
+    for a in alphas {
+        let curve = (1..150)
+            .map(|i| {
+                let th = 1.5 * i as f64 / 150.0;
+                (th, mu_painleve(th, a))
+            })
+            .filter(|p| p.1 < 4.0)
+            .collect();
+        chart = chart.line(&format!("alpha = {a:.3}"), curve);
+    }
+    let tan = (1..150)
+        .map(|i| 1.3 * i as f64 / 150.0)
+        .map(|th: f64| (th, th.tan()))
+        .filter(|p| p.1 < 4.0)
+        .collect();
+    chart = chart.dashed("tan(theta): alpha -> infinity (chapter 6's edge)", tan);
+    let pts = ev.boundaries.iter().map(|b| (b.0, b.2)).collect();
+    chart = chart.points("bisection on the simulated slide", pts);
+    save_chart(&chart, dir, "painleve-boundary")
+}
