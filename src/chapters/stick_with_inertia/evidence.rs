@@ -179,6 +179,8 @@ pub struct Evidence {
     pub boundaries: Vec<(f64, f64, f64)>,
     /// The uniform rod's least boundary: (theta, mu).
     pub uniform_min: (f64, f64),
+    /// The massless-limit ladders on chapter 6's self-locking and authors' scenes.
+    pub ladders: [Vec<Rung>; 2],
 }
 
 /// Angles of the drops, as `q = tan(theta)`.
@@ -187,6 +189,9 @@ pub const DROP_Q: [f64; 3] = [0.5, 1.0, 2.0];
 pub const RODS: [(f64, f64); 3] = [(0.1, 0.0), (0.05, 0.05), (0.01, 0.1)];
 /// Angles of the Painleve bisections (rad).
 pub const BOUNDARY_THETAS: [f64; 3] = [0.3, 0.6, 1.0];
+
+/// Duration of the ladder's runs (s): 300 drive cycles.
+pub const LADDER_S: f64 = 10.0;
 
 /// Computes the evidence.
 pub fn gather() -> Evidence {
@@ -214,5 +219,77 @@ pub fn gather() -> Evidence {
         between,
         boundaries,
         uniform_min: painleve_min(0.1, 0.0),
+        ladders: [
+            ladder(&crate::physics::stick::jamming_scene(9.81), LADDER_S),
+            ladder(&crate::physics::stick::authors_scene(10.0), LADDER_S),
+        ],
     }
+}
+
+/// Rod masses of the massless-limit ladder (kg), on a 1 kg tip mass.
+pub const LADDER_KG: [f64; 6] = [1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1.0];
+
+/// One rung of the ladder: the dimensionless rod inertia and both mean speeds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rung {
+    /// Rod mass (kg).
+    pub rod_mass_kg: f64,
+    /// `I_P k / gamma^2` (1).
+    pub inertia_ratio: f64,
+    /// `alpha` (1).
+    pub alpha: f64,
+    /// Mean speed with inertia (m/s).
+    pub speed_mps: f64,
+    /// Chapter 6's (m/s).
+    pub massless_mps: f64,
+    /// Outcome label.
+    pub outcome: &'static str,
+}
+
+impl Rung {
+    /// Relative error of the massless model (1).
+    pub fn error(&self) -> f64 {
+        (self.massless_mps - self.speed_mps) / self.speed_mps.abs().max(1e-12)
+    }
+}
+
+/// The ladder on scene `base` (its `mass_kg` is the tip mass), runs of `duration_s`.
+pub fn ladder(base: &StickParams, duration_s: f64) -> Vec<Rung> {
+    LADDER_KG
+        .iter()
+        .map(|&m_r| {
+            let p = InertiaParams {
+                base: *base,
+                rod_mass_kg: m_r,
+                restitution: 0.0,
+            };
+            let run = scene_run(&p, duration_s, 1e-10, 0.0);
+            Rung {
+                rod_mass_kg: m_r,
+                inertia_ratio: p.inertia_ratio(),
+                alpha: p.geometry().alpha(),
+                speed_mps: run.mean_velocity_mps,
+                massless_mps: massless_speed(&p, duration_s, 1e-10),
+                outcome: run.outcome.label(),
+            }
+        })
+        .collect()
+}
+
+/// Least-squares slope of `log|error|` against `log(inertia_ratio)` over the rungs with
+/// `lo <= inertia_ratio <= hi` (the asymptotic range).
+pub fn fitted_order(rungs: &[Rung], lo: f64, hi: f64) -> f64 {
+    let pts: Vec<(f64, f64)> = rungs
+        .iter()
+        .filter(|r| (lo..=hi).contains(&r.inertia_ratio))
+        .map(|r| (r.inertia_ratio.ln(), r.error().abs().ln()))
+        .collect();
+    let n = pts.len() as f64;
+    let (mx, my) = (
+        pts.iter().map(|p| p.0).sum::<f64>() / n,
+        pts.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    sxy / sxx // formula: least-squares slope
 }

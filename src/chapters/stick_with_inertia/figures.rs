@@ -37,3 +37,28 @@ pub fn painleve_boundary(ev: &Evidence, dir: &Path) -> Result<Vec<String>> {
     chart = chart.points("bisection on the simulated slide", pts);
     save_chart(&chart, dir, "painleve-boundary")
 }
+
+/// `validity-map`: the massless model's relative speed error against `I_P k / gamma^2`.
+pub fn validity_map(ev: &Evidence, dir: &Path) -> Result<Vec<String>> {
+    let mut chart = Chart::new(
+        "Error of the massless model (chapter 6) against the rod's inertia",
+        "I_P k / gamma^2 (1)",
+        "|mean-speed error| (1)",
+    )
+    .log_x()
+    .log_y()
+    .hline(0.01, "1 %")
+    .hline(0.1, "10 %")
+    .legend(Legend::UpperLeft);
+    for (name, l) in ["self-locking scene", "authors' scene"]
+        .iter()
+        .zip(&ev.ladders)
+    {
+        let pts = l
+            .iter()
+            .map(|r| (r.inertia_ratio, r.error().abs()))
+            .collect();
+        chart = chart.line_points(name, pts);
+    }
+    save_chart(&chart, dir, "validity-map")
+}

@@ -6,6 +6,7 @@
 //! Shape: `statements.rs` (the statements as data), `evidence.rs` (the runs, once),
 //! `claims.rs` (pure functions of both), `figures.rs`; this file: flags and orchestration.
 
+mod answers;
 mod claims;
 mod evidence;
 mod figures;
@@ -253,21 +254,29 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
         );
     }
     r.result("massless_mean_velocity_mps", massless);
+    r.table("validity-map", answers::validity_table(&ev.ladders));
+    let tooth = answers::toothpicks(if ctx.quick { 2.0 } else { 10.0 });
+    if let Some(t) = tooth.iter().find(|t| t.spring && t.scene == "self-locking") {
+        r.result("toothpick_mean_velocity_mps", t.speed_mps);
+    }
+    r.table("toothpick", answers::toothpick_table(&tooth));
     if let Some(dir) = ctx.figure_dir(ID) {
         r.figures.extend(figures::painleve_boundary(&ev, &dir)?);
+        r.figures.extend(figures::validity_map(&ev, &dir)?);
     }
     Ok(r)
 }
 
 /// The claim `id` judged against the statements `doc` (quick, headless, default flags).
 fn judge(id: &str, doc: &Statements) -> crate::report::Claim {
-    let ev = evidence::gather();
+    static EVIDENCE: std::sync::OnceLock<evidence::Evidence> = std::sync::OnceLock::new();
+    let ev = EVIDENCE.get_or_init(evidence::gather);
     let gain = if id == "impacts-dissipate" {
         evidence::impact_energy(doc.restitution_max)
     } else {
         (0.0, 1.0, 1)
     };
-    claims::all(doc, &ev, gain)
+    claims::all(doc, ev, gain)
         .into_iter()
         .find(|c| c.id == id)
         .expect("claim id of this chapter")
