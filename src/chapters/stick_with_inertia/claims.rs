@@ -79,7 +79,7 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
         Claim::close(
             "impulse-ratio-between",
             "2 (derived)",
-            "A rod with alpha = M l_G^2 / I_G takes J_l/J_v = alpha q/(1 + alpha + q^2) (3q/(4+q^2) at alpha = 3, q as alpha -> infinity). Simulated drops of m_r = m (alpha = 6) and m_r = m/10 at q = 0.5, 1, 2; largest relative deviation.",
+            "A rod with alpha = M l_G^2 / I_G takes J_l/J_v = alpha q/(1 + alpha + q^2) (3q/(4+q^2) at alpha = 3, q as alpha -> infinity). Simulated drops of m_r = m (alpha = 27/5) and m_r = m/10 (alpha = 32.27) at q = 0.5, 1, 2; largest relative deviation.",
             0.0,
             between,
             RATIO_TOL,
@@ -88,7 +88,7 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
         Claim::close(
             "painleve-boundary",
             "2, 4 (derived)",
-            "A rod sliding with its foot moving away from the side it leans to has no unique normal force (a Painleve case) once mu > mu_P(theta) = tan(theta) + 1/(alpha sin(theta) cos(theta)). Bisection in mu on the simulated sliding rod at theta = 0.3, 0.6, 1.0 rad for alpha = 3, 6, 17.3; largest relative deviation.",
+            "A rod sliding with its foot moving away from the side it leans to has no unique normal force (a Painleve case) once mu > mu_P(theta) = tan(theta) + 1/(alpha sin(theta) cos(theta)). Bisection in mu on the simulated sliding rod at theta = 0.3, 0.6, 1.0 rad for alpha = 3 (uniform), 27/5 (m_r = m), 32.27 (m_r = m/10); largest relative deviation.",
             0.0,
             boundary,
             BOUNDARY_TOL,

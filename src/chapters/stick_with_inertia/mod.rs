@@ -308,6 +308,9 @@ pub fn mutations() -> Vec<Mutation> {
         ("impacts-dissipate", "e <= 1 -> e = 1.1", |d| {
             d.restitution_max = 1.1
         }),
+        ("massless-limit", "order 1 -> 1.1", |d| {
+            d.massless_order = 1.1
+        }),
     ];
     Mutation::from_edits(PRINTED, edits, judge)
 }
