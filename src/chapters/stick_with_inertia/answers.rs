@@ -93,3 +93,71 @@ pub fn toothpick_table(t: &[Toothpick]) -> String {
     }
     s
 }
+
+/// One cell of the Painleve map.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MapCell {
+    /// Spring rest angle (rad).
+    pub theta0_rad: f64,
+    /// Friction coefficient (1).
+    pub mu: f64,
+    /// Painleve events in the run.
+    pub events: usize,
+    /// The run ended by a fall.
+    pub fell: bool,
+}
+
+/// Mass distributions of the map: (label, tip mass kg, rod mass kg).
+pub const MAP_RODS: [(&str, f64, f64); 3] = [
+    ("uniform stick (alpha = 3)", 0.0, 1.0),
+    ("equal masses (alpha = 5.4)", 1.0, 1.0),
+    ("1 % rod (alpha = 302)", 1.0, 0.01),
+];
+
+/// The Painleve map on the self-locking scene's plate: for each mass distribution, runs
+/// of `duration_s` over an `n x n` grid of `(theta_0, mu)` in `[0.05, 1.0] x [0.1, 2.0]`.
+pub fn painleve_map(n: usize, duration_s: f64) -> Vec<Vec<MapCell>> {
+    MAP_RODS
+        .iter()
+        .map(|&(_, m, m_r)| {
+            let mut cells = Vec::new();
+            for i in 0..n {
+                for j in 0..n {
+                    let th0 = 0.05 + 0.95 * i as f64 / (n - 1) as f64;
+                    let mu = 0.1 + 1.9 * j as f64 / (n - 1) as f64;
+                    let mut b = jamming_scene(9.81);
+                    b.mass_kg = m;
+                    b.theta0_rad = th0;
+                    b.mu = mu;
+                    let p = InertiaParams { base: b, rod_mass_kg: m_r, restitution: 0.0 };
+                    let r = scene_run(&p, duration_s, 1e-10, 0.0);
+                    cells.push(MapCell {
+                        theta0_rad: th0,
+                        mu,
+                        events: r.painleve.len(),
+                        fell: r.outcome.label() == "fell",
+                    });
+                }
+            }
+            cells
+        })
+        .collect()
+}
+
+/// The map's summary as a Markdown table.
+pub fn map_table(map: &[Vec<MapCell>]) -> String {
+    let mut s = String::from("| rod | runs | runs with Painlevé events | events | smallest mu with an event | runs that fell |\n|---|---|---|---|---|---|\n");
+    for ((label, ..), cells) in MAP_RODS.iter().zip(map) {
+        let with: Vec<_> = cells.iter().filter(|c| c.events > 0).collect();
+        let min_mu = with.iter().map(|c| c.mu).fold(f64::INFINITY, f64::min);
+        s.push_str(&format!(
+            "| {label} | {} | {} | {} | {} | {} |\n",
+            cells.len(),
+            with.len(),
+            cells.iter().map(|c| c.events).sum::<usize>(),
+            if min_mu.is_finite() { format!("{min_mu:.3}") } else { "none".into() },
+            cells.iter().filter(|c| c.fell).count()
+        ));
+    }
+    s
+}

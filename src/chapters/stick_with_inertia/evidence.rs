@@ -179,6 +179,10 @@ pub struct Evidence {
     pub boundaries: Vec<(f64, f64, f64)>,
     /// The uniform rod's least boundary: (theta, mu).
     pub uniform_min: (f64, f64),
+    /// The compliant limit of an impact without collision (uniform rod, theta = 0.6,
+    /// mu = 1.6, slip 0.1 m/s left): the rigid rule's normal impulse and normal
+    /// velocity at the slip stop, and the compliant runs' `(K, P_n, u_n)`.
+    pub compliant: ((f64, f64), Vec<(f64, f64, f64)>),
     /// The massless-limit ladders on chapter 6's self-locking and authors' scenes.
     pub ladders: [Vec<Rung>; 2],
 }
@@ -219,6 +223,7 @@ pub fn gather() -> Evidence {
         between,
         boundaries,
         uniform_min: painleve_min(0.1, 0.0),
+        compliant: compliant_ladder(),
         ladders: [
             ladder(&crate::physics::stick::jamming_scene(9.81), LADDER_S),
             ladder(&crate::physics::stick::authors_scene(10.0), LADDER_S),
@@ -292,4 +297,23 @@ pub fn fitted_order(rungs: &[Rung], lo: f64, hi: f64) -> f64 {
     let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
     let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
     sxy / sxx // formula: least-squares slope
+}
+
+/// Stiffnesses of the compliant ladder (N/m).
+pub const COMPLIANT_K: [f64; 4] = [1e5, 1e6, 1e7, 1e8];
+
+/// The compliant comparison (see [`Evidence::compliant`]).
+pub fn compliant_ladder() -> ((f64, f64), Vec<(f64, f64, f64)>) {
+    use crate::physics::stick_inertia::compliant::{rigid_slip_stop, slip_stop};
+    let (th, mu, u_t) = (0.6, 1.6, -0.1);
+    let md = rig(0.1, 0.0, th, mu, 0.0);
+    let rigid = rigid_slip_stop(&md, th, u_t);
+    let soft = COMPLIANT_K
+        .iter()
+        .map(|&k| {
+            let (_, p_n, u_n) = slip_stop(&md, th, u_t, k, 1.0).unwrap_or((f64::NAN, f64::NAN, f64::NAN));
+            (k, p_n, u_n)
+        })
+        .collect();
+    (rigid, soft)
 }

@@ -62,3 +62,35 @@ pub fn validity_map(ev: &Evidence, dir: &Path) -> Result<Vec<String>> {
     }
     save_chart(&chart, dir, "validity-map")
 }
+
+/// `painleve-map`: the cells of the (theta_0, mu) map whose gait met a Painleve case.
+pub fn painleve_map(map: &[Vec<super::answers::MapCell>], dir: &Path) -> Result<Vec<String>> {
+    let mut chart = Chart::new(
+        "Where the gait meets Painleve cases (self-locking scene's plate)",
+        "spring rest angle theta_0 (rad)",
+        "friction mu (1)",
+    )
+    .x_range(0.0, 1.05)
+    .y_range(0.0, 2.1)
+    .legend(Legend::LowerRight);
+    for (i, ((label, ..), cells)) in super::answers::MAP_RODS.iter().zip(map).enumerate() {
+        let pts: Vec<(f64, f64)> = cells
+            .iter()
+            .filter(|c| c.events > 0)
+            // offset each distribution a little so that shared cells stay visible
+            .map(|c| (c.theta0_rad + 0.012 * (i as f64 - 1.0), c.mu))
+            .collect();
+        chart = chart.series(crate::plot::Series::points(label, pts).color(i));
+    }
+    for (i, a) in [3.0, 5.4].iter().enumerate() {
+        let curve = (1..100)
+            .map(|k| 1.05 * k as f64 / 100.0)
+            .map(|th: f64| (th, mu_painleve(th, *a)))
+            .filter(|p| p.1 < 2.1)
+            .collect();
+        chart = chart.series(crate::plot::Series::dashed(&format!("mu_P at the rest angle, alpha = {a}"), curve).color(i));
+    }
+    let tan = (1..100).map(|k| 1.05 * k as f64 / 100.0).map(|th: f64| (th, th.tan())).filter(|p| p.1 < 2.1).collect();
+    chart = chart.series(crate::plot::Series::dashed("tan(theta_0)", tan).color(2));
+    save_chart(&chart, dir, "painleve-map")
+}

@@ -22,6 +22,9 @@ pub struct Statements {
     pub painleve_min_tan: f64,
     /// The massless model's error vanishes like (I_P k/gamma^2)^order, order 1.
     pub massless_order: f64,
+    /// The impact without collision is the compliant limit: its normal impulse at the
+    /// slip stop times this factor (1).
+    pub iwc_scale: f64,
     /// Impacts with restitution up to this value never create energy (1).
     pub restitution_max: f64,
 }
@@ -36,6 +39,7 @@ pub const PRINTED: Statements = Statements {
     painleve_min: 4.0 / 3.0,
     painleve_min_tan: 0.5,
     massless_order: 1.0,
+    iwc_scale: 1.0,
     restitution_max: 1.0,
 };
 

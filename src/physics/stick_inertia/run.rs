@@ -196,9 +196,7 @@ pub fn simulate_inertia(
                 state[D_IMPACT],
             ];
             let mut s = state;
-            for k in W_PLATE..=D_IMPACT {
-                s[k] = 0.0;
-            }
+            s[W_PLATE..=D_IMPACT].fill(0.0);
             let run = simulate(model, mode, t0, s, t_end, &opts, &mut w);
             let out = match run.outcome {
                 Outcome::Completed => InertiaOutcome::Completed,

@@ -61,27 +61,12 @@ impl HybridSystem<NSTATE> for InertiaModel {
     }
 
     fn guard(&self, mode: Mode, i: usize, t: f64, y: &State) -> f64 {
-        let mu = self.p.base.mu;
-        let fell = FRAC_PI_2 - y[TH].abs();
-        match mode {
-            Mode::Flight => {
-                let h = self.h_c(t, y);
-                [if h == 0.0 { f64::MIN_POSITIVE } else { h }, fell][i]
-            }
-            Mode::Pivot => {
-                let e = self.pivot_eval(t, y);
-                [e.fz, mu * e.fz - e.fx, mu * e.fz + e.fx, fell][i]
-            }
-            _ => {
-                let e = self.slide_eval(mode.sigma(), t, y);
-                [
-                    e.d,
-                    e.n * e.d.signum(),
-                    -mode.sigma() * y[VXC] + 1e-12,
-                    fell,
-                ][i]
-            }
-        }
+        self.with_guards(mode, t, y, |g| g[i])
+    }
+
+    fn guards(&self, mode: Mode, t: f64, y: &State, out: &mut Vec<f64>) {
+        out.clear();
+        self.with_guards(mode, t, y, |g| out.extend_from_slice(g));
     }
 
     fn direction(&self, mode: Mode, i: usize) -> Direction {
@@ -117,6 +102,28 @@ impl HybridSystem<NSTATE> for InertiaModel {
 }
 
 impl InertiaModel {
+    /// All guards of `mode` at `(t, y)` (the module's order), handed to `f`: one force
+    /// evaluation serves them all.
+    fn with_guards<R>(&self, mode: Mode, t: f64, y: &State, f: impl FnOnce(&[f64]) -> R) -> R {
+        let mu = self.p.base.mu;
+        let fell = FRAC_PI_2 - y[TH].abs();
+        match mode {
+            Mode::Flight => {
+                let h = self.h_c(t, y);
+                // a flight that starts on the plate starts its guard at zero: count it as above
+                f(&[if h == 0.0 { f64::MIN_POSITIVE } else { h }, fell])
+            }
+            Mode::Pivot => {
+                let e = self.pivot_eval(t, y);
+                f(&[e.fz, mu * e.fz - e.fx, mu * e.fz + e.fx, fell])
+            }
+            _ => {
+                let e = self.slide_eval(mode.sigma(), t, y);
+                f(&[e.d, e.n * e.d.signum(), -mode.sigma() * y[VXC] + 1e-12, fell])
+            }
+        }
+    }
+
     /// Energy accumulators restart at zero in every mode; the new state carries only
     /// what the reset added (the run's observer sums them).
     fn restart_accumulators(&self, next: Next, y: &State) -> Next {
