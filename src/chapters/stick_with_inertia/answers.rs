@@ -114,7 +114,7 @@ pub const MAP_RODS: [(&str, f64, f64); 3] = [
     ("1 % rod (alpha = 302)", 1.0, 0.01),
 ];
 
-/// The Painleve map on the self-locking scene's plate: for each mass distribution, runs
+/// The Painleve map on the authors' plate (Gamma = 10, 30 Hz, g = 10 m/s^2): for each mass distribution, runs
 /// of `duration_s` over an `n x n` grid of `(theta_0, mu)` in `[0.05, 1.0] x [0.1, 2.0]`.
 pub fn painleve_map(n: usize, duration_s: f64) -> Vec<Vec<MapCell>> {
     MAP_RODS
@@ -125,11 +125,15 @@ pub fn painleve_map(n: usize, duration_s: f64) -> Vec<Vec<MapCell>> {
                 for j in 0..n {
                     let th0 = 0.05 + 0.95 * i as f64 / (n - 1) as f64;
                     let mu = 0.1 + 1.9 * j as f64 / (n - 1) as f64;
-                    let mut b = jamming_scene(9.81);
+                    let mut b = authors_scene(10.0);
                     b.mass_kg = m;
                     b.theta0_rad = th0;
                     b.mu = mu;
-                    let p = InertiaParams { base: b, rod_mass_kg: m_r, restitution: 0.0 };
+                    let p = InertiaParams {
+                        base: b,
+                        rod_mass_kg: m_r,
+                        restitution: 0.0,
+                    };
                     let r = scene_run(&p, duration_s, 1e-10, 0.0);
                     cells.push(MapCell {
                         theta0_rad: th0,
@@ -155,7 +159,11 @@ pub fn map_table(map: &[Vec<MapCell>]) -> String {
             cells.len(),
             with.len(),
             cells.iter().map(|c| c.events).sum::<usize>(),
-            if min_mu.is_finite() { format!("{min_mu:.3}") } else { "none".into() },
+            if min_mu.is_finite() {
+                format!("{min_mu:.3}")
+            } else {
+                "none".into()
+            },
             cells.iter().filter(|c| c.fell).count()
         ));
     }

@@ -63,7 +63,10 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
         .map(|o| (o - doc.massless_order).abs())
         .fold(0.0, f64::max);
     let ((rigid_pn, _), soft) = &ev.compliant;
-    let soft_dev: Vec<f64> = soft.iter().map(|s| (s.1 - doc.iwc_scale * rigid_pn).abs() / rigid_pn).collect();
+    let soft_dev: Vec<f64> = soft
+        .iter()
+        .map(|s| (s.1 - doc.iwc_scale * rigid_pn).abs() / rigid_pn)
+        .collect();
     let shrinking = soft_dev.windows(2).all(|w| w[1] < w[0]);
     let stiffest = *soft_dev.last().unwrap_or(&f64::NAN);
     vec![

@@ -311,7 +311,8 @@ pub fn compliant_ladder() -> ((f64, f64), Vec<(f64, f64, f64)>) {
     let soft = COMPLIANT_K
         .iter()
         .map(|&k| {
-            let (_, p_n, u_n) = slip_stop(&md, th, u_t, k, 1.0).unwrap_or((f64::NAN, f64::NAN, f64::NAN));
+            let (_, p_n, u_n) =
+                slip_stop(&md, th, u_t, k, 1.0).unwrap_or((f64::NAN, f64::NAN, f64::NAN));
             (k, p_n, u_n)
         })
         .collect();

@@ -66,7 +66,7 @@ pub fn validity_map(ev: &Evidence, dir: &Path) -> Result<Vec<String>> {
 /// `painleve-map`: the cells of the (theta_0, mu) map whose gait met a Painleve case.
 pub fn painleve_map(map: &[Vec<super::answers::MapCell>], dir: &Path) -> Result<Vec<String>> {
     let mut chart = Chart::new(
-        "Where the gait meets Painleve cases (self-locking scene's plate)",
+        "Where the gait meets Painleve cases (the authors' plate)",
         "spring rest angle theta_0 (rad)",
         "friction mu (1)",
     )
@@ -88,9 +88,16 @@ pub fn painleve_map(map: &[Vec<super::answers::MapCell>], dir: &Path) -> Result<
             .map(|th: f64| (th, mu_painleve(th, *a)))
             .filter(|p| p.1 < 2.1)
             .collect();
-        chart = chart.series(crate::plot::Series::dashed(&format!("mu_P at the rest angle, alpha = {a}"), curve).color(i));
+        chart = chart.series(
+            crate::plot::Series::dashed(&format!("mu_P at the rest angle, alpha = {a}"), curve)
+                .color(i),
+        );
     }
-    let tan = (1..100).map(|k| 1.05 * k as f64 / 100.0).map(|th: f64| (th, th.tan())).filter(|p| p.1 < 2.1).collect();
+    let tan = (1..100)
+        .map(|k| 1.05 * k as f64 / 100.0)
+        .map(|th: f64| (th, th.tan()))
+        .filter(|p| p.1 < 2.1)
+        .collect();
     chart = chart.series(crate::plot::Series::dashed("tan(theta_0)", tan).color(2));
     save_chart(&chart, dir, "painleve-map")
 }

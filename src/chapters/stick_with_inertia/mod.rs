@@ -260,7 +260,10 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
         r.result("toothpick_mean_velocity_mps", t.speed_mps);
     }
     r.table("toothpick", answers::toothpick_table(&tooth));
-    let map = answers::painleve_map(if ctx.quick { 5 } else { 12 }, if ctx.quick { 0.5 } else { 1.0 });
+    let map = answers::painleve_map(
+        if ctx.quick { 5 } else { 12 },
+        if ctx.quick { 0.5 } else { 1.0 },
+    );
     r.table("painleve-map", answers::map_table(&map));
     if let Some(dir) = ctx.figure_dir(ID) {
         r.figures.extend(figures::painleve_boundary(&ev, &dir)?);
