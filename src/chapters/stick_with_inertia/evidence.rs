@@ -182,7 +182,7 @@ pub struct Evidence {
     /// The compliant limit of an impact without collision (uniform rod, theta = 0.6,
     /// mu = 1.6, slip 0.1 m/s left): the rigid rule's normal impulse and normal
     /// velocity at the slip stop, and the compliant runs' `(K, P_n, u_n)`.
-    pub compliant: ((f64, f64), Vec<(f64, f64, f64)>),
+    pub compliant: Compliant,
     /// The massless-limit ladders on chapter 6's self-locking and authors' scenes.
     pub ladders: [Vec<Rung>; 2],
 }
@@ -299,11 +299,14 @@ pub fn fitted_order(rungs: &[Rung], lo: f64, hi: f64) -> f64 {
     sxy / sxx // formula: least-squares slope
 }
 
+/// The rigid rule's `(P_n, u_n)` at the slip stop and the compliant runs' `(K, P_n, u_n)`.
+pub type Compliant = ((f64, f64), Vec<(f64, f64, f64)>);
+
 /// Stiffnesses of the compliant ladder (N/m).
 pub const COMPLIANT_K: [f64; 4] = [1e5, 1e6, 1e7, 1e8];
 
 /// The compliant comparison (see [`Evidence::compliant`]).
-pub fn compliant_ladder() -> ((f64, f64), Vec<(f64, f64, f64)>) {
+pub fn compliant_ladder() -> Compliant {
     use crate::physics::stick_inertia::compliant::{rigid_slip_stop, slip_stop};
     let (th, mu, u_t) = (0.6, 1.6, -0.1);
     let md = rig(0.1, 0.0, th, mu, 0.0);

@@ -26,7 +26,11 @@ impl Soft<'_> {
         let (s, c) = y[2].sin_cos();
         let h = -(y[1] - l * c); // formula: penetration h = -z_C, z_C = z_G - l_G cos
         let hd = -(y[4] + l * y[5] * s); // formula: h' = -vz_C, vz_C = vz_G + l_G theta' sin
-        let fn_ = if h > 0.0 { (self.k * h + self.c * hd).max(0.0) } else { 0.0 };
+        let fn_ = if h > 0.0 {
+            (self.k * h + self.c * hd).max(0.0)
+        } else {
+            0.0
+        };
         (-self.sign * self.md.p.base.mu * fn_, fn_)
     }
 }
@@ -41,8 +45,8 @@ impl OdeSystem<8> for Soft<'_> {
             y[3],
             y[4],
             y[5],
-            ft / g.total_kg,                                   // formula: M a_Gx = F_t
-            fn_ / g.total_kg - self.md.p.base.g_mps2,          // formula: M a_Gz = F_n - M g
+            ft / g.total_kg,                          // formula: M a_Gx = F_t
+            fn_ / g.total_kg - self.md.p.base.g_mps2, // formula: M a_Gz = F_n - M g
             th_dd,
             ft,
             fn_,
@@ -54,10 +58,21 @@ impl OdeSystem<8> for Soft<'_> {
 /// plate, from exact contact at rest vertically, with stiffness `k` (N/m): the impulse
 /// `(P_t, P_n)` (N s) and C's normal velocity (m/s) when the slip stops; `None` if it
 /// has not stopped within `t_max_s`.
-pub fn slip_stop(md: &InertiaModel, theta: f64, u_t: f64, k: f64, t_max_s: f64) -> Option<(f64, f64, f64)> {
+pub fn slip_stop(
+    md: &InertiaModel,
+    theta: f64,
+    u_t: f64,
+    k: f64,
+    t_max_s: f64,
+) -> Option<(f64, f64, f64)> {
     let g = &md.geo;
     let c = theta.cos();
-    let sys = Soft { md, k, c: 2.0 * (k * g.total_kg).sqrt(), sign: u_t.signum() };
+    let sys = Soft {
+        md,
+        k,
+        c: 2.0 * (k * g.total_kg).sqrt(),
+        sign: u_t.signum(),
+    };
     // C at rest vertically on the plate, slipping at u_t, no rotation
     let y0 = [0.0, g.l_g_m * c, theta, u_t, 0.0, 0.0, 0.0, 0.0];
     let slip = |y: &[f64; 8]| y[3] - g.l_g_m * y[5] * y[2].cos(); // formula: u_t = vx_G - l_G theta' cos

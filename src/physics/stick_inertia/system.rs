@@ -119,7 +119,12 @@ impl InertiaModel {
             }
             _ => {
                 let e = self.slide_eval(mode.sigma(), t, y);
-                f(&[e.d, e.n * e.d.signum(), -mode.sigma() * y[VXC] + 1e-12, fell])
+                f(&[
+                    e.d,
+                    e.n * e.d.signum(),
+                    -mode.sigma() * y[VXC] + 1e-12,
+                    fell,
+                ])
             }
         }
     }
