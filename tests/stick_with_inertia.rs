@@ -22,7 +22,7 @@ fn opts() -> Options {
 fn claims_pass_and_falsification_mutations_flip_every_claim() {
     let r = chapters::run_default("stick-with-inertia", &Context::headless(true)).unwrap();
     assert!(!r.has_failures(), "{:?}", r.claims);
-    assert_eq!(r.claims.len(), 9);
+    assert_eq!(r.claims.len(), 10);
     let muts = chapters::mutations("stick-with-inertia");
     for c in r.claims.iter().filter(|c| c.check != Check::Consistency) {
         assert!(

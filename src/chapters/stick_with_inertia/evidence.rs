@@ -183,6 +183,9 @@ pub struct Evidence {
     /// mu = 1.6, slip 0.1 m/s left): the rigid rule's normal impulse and normal
     /// velocity at the slip stop, and the compliant runs' `(K, P_n, u_n)`.
     pub compliant: Compliant,
+    /// Moreau-Jean on the default scene (3 s): the event-driven mean speed and the
+    /// time-stepping ones at steps `T/n` for [`MJ_STEPS`].
+    pub moreau_jean: (f64, Vec<(f64, f64)>),
     /// The massless-limit ladders on chapter 6's self-locking and authors' scenes.
     pub ladders: [Vec<Rung>; 2],
 }
@@ -224,6 +227,7 @@ pub fn gather() -> Evidence {
         boundaries,
         uniform_min: painleve_min(0.1, 0.0),
         compliant: compliant_ladder(),
+        moreau_jean: moreau_jean(),
         ladders: [
             ladder(&crate::physics::stick::jamming_scene(9.81), LADDER_S),
             ladder(&crate::physics::stick::authors_scene(10.0), LADDER_S),
@@ -320,4 +324,33 @@ pub fn compliant_ladder() -> Compliant {
         })
         .collect();
     (rigid, soft)
+}
+
+/// Steps per drive period of the Moreau-Jean ladder.
+pub const MJ_STEPS: [f64; 5] = [200.0, 400.0, 800.0, 1600.0, 3200.0];
+
+/// Moreau-Jean beside the event-driven run on the default scene (1 kg tip, 10 g rod,
+/// 3 s): `(event-driven speed, [(n, speed at h = T/n)])` (m/s).
+pub fn moreau_jean() -> (f64, Vec<(f64, f64)>) {
+    use crate::physics::stick_inertia::run::initial_state;
+    use crate::physics::stick_inertia::timestepping::mj_mean_speed;
+    let p = InertiaParams {
+        base: crate::physics::stick::jamming_scene(9.81),
+        rod_mass_kg: 0.01,
+        restitution: 0.0,
+    };
+    let md = InertiaModel::new(p);
+    let dur = 3.0;
+    let ev = run_from_rest(&md, dur, &options(1e-10), 0.0).mean_velocity_mps;
+    let y0 = initial_state(&md, 0.0, p.static_angle().unwrap_or(p.base.theta0_rad));
+    let mj = MJ_STEPS
+        .iter()
+        .map(|&n| {
+            (
+                n,
+                mj_mean_speed(&md, &y0, dur, md.period_s / n).unwrap_or(f64::NAN),
+            )
+        })
+        .collect();
+    (ev, mj)
 }

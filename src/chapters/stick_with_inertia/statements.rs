@@ -25,6 +25,8 @@ pub struct Statements {
     /// The impact without collision is the compliant limit: its normal impulse at the
     /// slip stop times this factor (1).
     pub iwc_scale: f64,
+    /// Moreau-Jean converges to the event-driven speed at this order (1).
+    pub mj_order: f64,
     /// Impacts with restitution up to this value never create energy (1).
     pub restitution_max: f64,
 }
@@ -40,6 +42,7 @@ pub const PRINTED: Statements = Statements {
     painleve_min_tan: 0.5,
     massless_order: 1.0,
     iwc_scale: 1.0,
+    mj_order: 1.0,
     restitution_max: 1.0,
 };
 

@@ -33,6 +33,7 @@ pub mod painleve;
 pub mod params;
 pub mod run;
 pub mod system;
+pub mod timestepping;
 
 pub use painleve::{PainleveCase, PainleveEvent};
 pub use params::{InertiaParams, MassGeometry};
