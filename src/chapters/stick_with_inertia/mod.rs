@@ -317,6 +317,10 @@ pub fn mutations() -> Vec<Mutation> {
         ("massless-limit", "order 1 -> 1.1", |d| {
             d.massless_order = 1.1
         }),
+        ("moreau-jean", "order 1 -> 1.1", |d| d.mj_order = 1.1),
+        ("painleve-compliant-limit", "rule's impulse -> 1.1 x", |d| {
+            d.iwc_scale = 1.1
+        }),
     ];
     Mutation::from_edits(PRINTED, edits, judge)
 }
