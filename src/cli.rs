@@ -105,6 +105,8 @@ pub enum Command {
     StickStateMachine(chapters::stick_state_machine::Args),
     /// Ch. 7 (all sections): speed versus accuracy of the numerical methods.
     SpeedVsAccuracy(chapters::speed_vs_accuracy::Args),
+    /// Ch. 8 (sections 2, 4): the stick with inertia (rod mass, tip mass, impacts with friction, Painleve cases).
+    StickWithInertia(chapters::stick_with_inertia::Args),
     /// The live lab: a local web page (127.0.0.1) where sliders drive chapter 6's simulator.
     Lab(crate::lab::Args),
 }
@@ -428,6 +430,7 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
         Command::AsymmetricShaking(a) => chapters::asymmetric_shaking::run(a, &ctx)?,
         Command::StickStateMachine(a) => chapters::stick_state_machine::run(a, &ctx)?,
         Command::SpeedVsAccuracy(a) => chapters::speed_vs_accuracy::run(a, &ctx)?,
+        Command::StickWithInertia(a) => chapters::stick_with_inertia::run(a, &ctx)?,
     };
     let report = checked(&report)?;
     if cli.json {

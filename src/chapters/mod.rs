@@ -15,6 +15,7 @@ pub mod horizontal_shaking;
 pub mod locomotion_definition;
 pub mod speed_vs_accuracy;
 pub mod stick_state_machine;
+pub mod stick_with_inertia;
 pub mod vertical_shaking;
 
 /// Sub-folder of a chapter's figure folder for the charts that plot wall time: they
@@ -50,7 +51,7 @@ impl ChapterInfo {
 }
 
 /// All chapters, in course order.
-pub const CHAPTERS: [ChapterInfo; 7] = [
+pub const CHAPTERS: [ChapterInfo; 8] = [
     ChapterInfo {
         id: "locomotion-definition",
         number: 1,
@@ -99,6 +100,13 @@ pub const CHAPTERS: [ChapterInfo; 7] = [
         title: "Speed versus accuracy of the numerical methods",
         section: "all",
         question: "Work-precision charts and the places where numerical methods fail",
+    },
+    ChapterInfo {
+        id: "stick-with-inertia",
+        number: 8,
+        title: "The stick with inertia",
+        section: "2, 4",
+        question: "Does a stick with real mass walk as the massless model says? (rod mass + tip mass, impacts with friction, Painleve cases, the massless limit)",
     },
 ];
 
@@ -212,6 +220,7 @@ pub fn run_default(id: &str, ctx: &Context) -> Result<ChapterReport> {
         "asymmetric-shaking" => asymmetric_shaking::run(&default_args(), ctx),
         "stick-state-machine" => stick_state_machine::run(&default_args(), ctx),
         "speed-vs-accuracy" => speed_vs_accuracy::run(&default_args(), ctx),
+        "stick-with-inertia" => stick_with_inertia::run(&default_args(), ctx),
         other => Err(crate::error::WorkbookError::bad_input(
             "<chapter-id>",
             other,
@@ -246,6 +255,7 @@ pub fn mutations(id: &str) -> Vec<crate::report::Mutation> {
         "asymmetric-shaking" => asymmetric_shaking::mutations(),
         "stick-state-machine" => stick_state_machine::mutations(),
         "speed-vs-accuracy" => speed_vs_accuracy::mutations(),
+        "stick-with-inertia" => stick_with_inertia::mutations(),
         _ => Vec::new(),
     }
 }

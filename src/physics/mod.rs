@@ -10,3 +10,4 @@ pub mod plate;
 pub mod rigid;
 pub mod sawtooth;
 pub mod stick;
+pub mod stick_inertia;

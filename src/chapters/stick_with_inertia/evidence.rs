@@ -1,0 +1,356 @@
+//! The runs behind the claims, computed once: simulated drops (the impulse ratio),
+//! bisections in mu on a sliding rod (the Painleve boundary), simulated impacts (their
+//! energy), the scene's run beside chapter 6's massless model, and the massless limit.
+
+use crate::numerics::hybrid::Options;
+use crate::numerics::ode::{Method, StepControl};
+use crate::physics::stick::run::{initial_state as massless_initial, simulate_stick, Recording};
+use crate::physics::stick::{StickModel, StickParams};
+use crate::physics::stick_inertia::run::{run_from_rest, simulate_inertia, InertiaRun};
+use crate::physics::stick_inertia::{InertiaModel, InertiaParams, NSTATE, TH, VXC, ZC};
+
+/// Driver options of every run: DOP853 at `rtol`.
+pub fn options(rtol: f64) -> Options {
+    Options {
+        method: Method::Dop853,
+        control: StepControl::tol(rtol, rtol),
+        ..Options::default()
+    }
+}
+
+/// A test rig: a rod of length 0.15 m with rod mass `m_r` and tip mass `m` (kg) at rest
+/// over a still plate, spring at rest at `theta` (so no couple), friction `mu`.
+pub fn rig(m_r: f64, m: f64, theta: f64, mu: f64, e: f64) -> InertiaModel {
+    let mut base = StickParams::new(0.15, m, 10.0, 0.01, mu, theta, 9.81, 0.0, 30.0);
+    base.mass_kg = m;
+    InertiaModel::new(InertiaParams {
+        base,
+        rod_mass_kg: m_r,
+        restitution: e,
+    })
+}
+
+/// The simulated drop: the rod falls from 1 cm at angle `theta` without rotating, the
+/// driver locates the landing, the impact rule acts. Returns `J_t/J_n` of the first
+/// impact and `alpha`.
+pub fn drop_ratio(m_r: f64, m: f64, theta: f64) -> (f64, f64) {
+    let md = rig(m_r, m, theta, 10.0, 0.0);
+    let mut y = [0.0; NSTATE];
+    y[TH] = theta;
+    y[ZC] = 0.01;
+    let r = simulate_inertia(&md, 0.0, y, 0.05, &options(1e-10), 0.0);
+    let ratio = r.impacts.first().map_or(f64::NAN, |i| i.j_t_ns / i.j_n_ns);
+    (ratio, md.geo.alpha())
+}
+
+/// Does a rod sliding left at 0.1 m/s at `theta` (still plate, no couple) meet a
+/// Painleve case as its run starts? (The simulator's own classification.)
+pub fn painleve_at(m_r: f64, m: f64, theta: f64, mu: f64) -> bool {
+    let mut md = rig(m_r, m, theta, mu, 0.0);
+    md.p.base.stiffness_nm_per_rad = 0.0;
+    md.p.base.damping_nms_per_rad = 0.0;
+    let mut y = [0.0; NSTATE];
+    y[TH] = theta;
+    y[VXC] = -0.1 * theta.signum();
+    let r = simulate_inertia(&md, 0.0, y, 1e-4, &options(1e-10), 0.0);
+    r.painleve.first().is_some_and(|e| e.t_s == 0.0)
+}
+
+/// The Painleve boundary located by bisection in mu on the sliding rod (1).
+pub fn painleve_boundary(m_r: f64, m: f64, theta: f64) -> f64 {
+    let (mut lo, mut hi) = (0.0, 1.0);
+    while !painleve_at(m_r, m, theta, hi) {
+        lo = hi;
+        hi *= 2.0;
+        if hi > 1e6 {
+            return f64::INFINITY;
+        }
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if painleve_at(m_r, m, theta, mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+        if hi - lo < 1e-12 * hi {
+            break;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The least boundary over the angle, by golden-section search (angle rad, mu).
+pub fn painleve_min(m_r: f64, m: f64) -> (f64, f64) {
+    let f = |th: f64| painleve_boundary(m_r, m, th);
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (0.1, 1.2);
+    let (mut c, mut d) = (b - g * (b - a), a + g * (b - a));
+    let (mut fc, mut fd) = (f(c), f(d));
+    while b - a > 1e-7 {
+        if fc < fd {
+            b = d;
+            (d, fd) = (c, fc);
+            c = b - g * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            (c, fc) = (d, fd);
+            d = a + g * (b - a);
+            fd = f(d);
+        }
+    }
+    let th = 0.5 * (a + b);
+    (th, f(th))
+}
+
+/// Simulated landings with restitution `e`: the rod dropped from 1 cm at several angles,
+/// slips and frictions; the largest energy any impact created (J, from the states) and
+/// the largest loss (J, the scale).
+pub fn impact_energy(e: f64) -> (f64, f64, usize) {
+    let (mut gain, mut scale, mut n) = (f64::NEG_INFINITY, 0.0f64, 0);
+    for (m_r, m) in [(0.1, 0.0), (0.01, 1.0)] {
+        for theta in [-0.6, 0.3, 0.9] {
+            for mu in [0.2, 1.0] {
+                for vx in [-1.0, 0.0, 0.7] {
+                    let md = rig(m_r, m, theta, mu, e);
+                    let mut y = [0.0; NSTATE];
+                    y[TH] = theta;
+                    y[ZC] = 0.01;
+                    y[VXC] = vx;
+                    y[crate::physics::stick_inertia::OM] = 2.0;
+                    let r = simulate_inertia(&md, 0.0, y, 0.06, &options(1e-10), 0.0);
+                    for i in &r.impacts {
+                        gain = gain.max(i.energy_change_j);
+                        scale = scale.max(i.loss_j.abs());
+                        n += 1;
+                    }
+                }
+            }
+        }
+    }
+    (gain, scale, n)
+}
+
+/// The massless model of the same stick (chapter 6): its whole mass at P.
+pub fn massless_params(p: &InertiaParams) -> StickParams {
+    let mut b = p.base;
+    b.mass_kg = p.base.mass_kg + p.rod_mass_kg;
+    b
+}
+
+/// Chapter 6's mean speed on the same scene (m/s), from its static angle.
+pub fn massless_speed(p: &InertiaParams, duration_s: f64, rtol: f64) -> f64 {
+    let b = massless_params(p);
+    let md = StickModel::new(b);
+    let y0 = massless_initial(&md, 0.0, b.static_angle().unwrap_or(b.theta0_rad));
+    simulate_stick(
+        &md,
+        0.0,
+        y0,
+        duration_s,
+        &options(rtol),
+        Recording::default(),
+    )
+    .mean_velocity_mps
+}
+
+/// The scene's run with inertia.
+pub fn scene_run(p: &InertiaParams, duration_s: f64, rtol: f64, trace_dt_s: f64) -> InertiaRun {
+    run_from_rest(
+        &InertiaModel::new(*p),
+        duration_s,
+        &options(rtol),
+        trace_dt_s,
+    )
+}
+
+/// The evidence of the claims (independent of the statements).
+#[derive(Debug, Clone)]
+pub struct Evidence {
+    /// Drops: (q, measured ratio, alpha) of the uniform rod, the near-massless rod
+    /// (`m_r = 1e-9 m`) and two rods in between.
+    pub uniform: Vec<(f64, f64, f64)>,
+    /// See `uniform`.
+    pub massless: Vec<(f64, f64, f64)>,
+    /// See `uniform`.
+    pub between: Vec<(f64, f64, f64)>,
+    /// Painleve boundaries: (theta, alpha, bisection mu).
+    pub boundaries: Vec<(f64, f64, f64)>,
+    /// The uniform rod's least boundary: (theta, mu).
+    pub uniform_min: (f64, f64),
+    /// The compliant limit of an impact without collision (uniform rod, theta = 0.6,
+    /// mu = 1.6, slip 0.1 m/s left): the rigid rule's normal impulse and normal
+    /// velocity at the slip stop, and the compliant runs' `(K, P_n, u_n)`.
+    pub compliant: Compliant,
+    /// Moreau-Jean on the default scene (3 s): the event-driven mean speed and the
+    /// time-stepping ones at steps `T/n` for [`MJ_STEPS`].
+    pub moreau_jean: (f64, Vec<(f64, f64)>),
+    /// The massless-limit ladders on chapter 6's self-locking and authors' scenes.
+    pub ladders: [Vec<Rung>; 2],
+}
+
+/// Angles of the drops, as `q = tan(theta)`.
+pub const DROP_Q: [f64; 3] = [0.5, 1.0, 2.0];
+/// Rods of the Painleve bisections: (m_r, m) in kg.
+pub const RODS: [(f64, f64); 3] = [(0.1, 0.0), (0.05, 0.05), (0.01, 0.1)];
+/// Angles of the Painleve bisections (rad).
+pub const BOUNDARY_THETAS: [f64; 3] = [0.3, 0.6, 1.0];
+
+/// Duration of the ladder's runs (s): 300 drive cycles.
+pub const LADDER_S: f64 = 10.0;
+
+/// Computes the evidence.
+pub fn gather() -> Evidence {
+    let drops = |m_r: f64, m: f64| -> Vec<(f64, f64, f64)> {
+        DROP_Q
+            .iter()
+            .map(|&q| {
+                let (r, a) = drop_ratio(m_r, m, q.atan());
+                (q, r, a)
+            })
+            .collect()
+    };
+    let mut between = drops(0.05, 0.05);
+    between.extend(drops(0.01, 0.1));
+    let mut boundaries = Vec::new();
+    for (m_r, m) in RODS {
+        for th in BOUNDARY_THETAS {
+            let a = rig(m_r, m, th, 0.0, 0.0).geo.alpha();
+            boundaries.push((th, a, painleve_boundary(m_r, m, th)));
+        }
+    }
+    Evidence {
+        uniform: drops(0.1, 0.0),
+        massless: drops(1e-10, 0.1),
+        between,
+        boundaries,
+        uniform_min: painleve_min(0.1, 0.0),
+        compliant: compliant_ladder(),
+        moreau_jean: moreau_jean(),
+        ladders: [
+            ladder(&crate::physics::stick::jamming_scene(9.81), LADDER_S),
+            ladder(&crate::physics::stick::authors_scene(10.0), LADDER_S),
+        ],
+    }
+}
+
+/// Rod masses of the massless-limit ladder (kg), on a 1 kg tip mass.
+pub const LADDER_KG: [f64; 6] = [1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1.0];
+
+/// One rung of the ladder: the dimensionless rod inertia and both mean speeds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rung {
+    /// Rod mass (kg).
+    pub rod_mass_kg: f64,
+    /// `I_P k / gamma^2` (1).
+    pub inertia_ratio: f64,
+    /// `alpha` (1).
+    pub alpha: f64,
+    /// Mean speed with inertia (m/s).
+    pub speed_mps: f64,
+    /// Chapter 6's (m/s).
+    pub massless_mps: f64,
+    /// Outcome label.
+    pub outcome: &'static str,
+}
+
+impl Rung {
+    /// Relative error of the massless model (1).
+    pub fn error(&self) -> f64 {
+        (self.massless_mps - self.speed_mps) / self.speed_mps.abs().max(1e-12)
+    }
+}
+
+/// The ladder on scene `base` (its `mass_kg` is the tip mass), runs of `duration_s`.
+pub fn ladder(base: &StickParams, duration_s: f64) -> Vec<Rung> {
+    LADDER_KG
+        .iter()
+        .map(|&m_r| {
+            let p = InertiaParams {
+                base: *base,
+                rod_mass_kg: m_r,
+                restitution: 0.0,
+            };
+            let run = scene_run(&p, duration_s, 1e-10, 0.0);
+            Rung {
+                rod_mass_kg: m_r,
+                inertia_ratio: p.inertia_ratio(),
+                alpha: p.geometry().alpha(),
+                speed_mps: run.mean_velocity_mps,
+                massless_mps: massless_speed(&p, duration_s, 1e-10),
+                outcome: run.outcome.label(),
+            }
+        })
+        .collect()
+}
+
+/// Least-squares slope of `log|error|` against `log(inertia_ratio)` over the rungs with
+/// `lo <= inertia_ratio <= hi` (the asymptotic range).
+pub fn fitted_order(rungs: &[Rung], lo: f64, hi: f64) -> f64 {
+    let pts: Vec<(f64, f64)> = rungs
+        .iter()
+        .filter(|r| (lo..=hi).contains(&r.inertia_ratio))
+        .map(|r| (r.inertia_ratio.ln(), r.error().abs().ln()))
+        .collect();
+    let n = pts.len() as f64;
+    let (mx, my) = (
+        pts.iter().map(|p| p.0).sum::<f64>() / n,
+        pts.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    sxy / sxx // formula: least-squares slope
+}
+
+/// The rigid rule's `(P_n, u_n)` at the slip stop and the compliant runs' `(K, P_n, u_n)`.
+pub type Compliant = ((f64, f64), Vec<(f64, f64, f64)>);
+
+/// Stiffnesses of the compliant ladder (N/m).
+pub const COMPLIANT_K: [f64; 4] = [1e5, 1e6, 1e7, 1e8];
+
+/// The compliant comparison (see [`Evidence::compliant`]).
+pub fn compliant_ladder() -> Compliant {
+    use crate::physics::stick_inertia::compliant::{rigid_slip_stop, slip_stop};
+    let (th, mu, u_t) = (0.6, 1.6, -0.1);
+    let md = rig(0.1, 0.0, th, mu, 0.0);
+    let rigid = rigid_slip_stop(&md, th, u_t);
+    let soft = COMPLIANT_K
+        .iter()
+        .map(|&k| {
+            let (_, p_n, u_n) =
+                slip_stop(&md, th, u_t, k, 1.0).unwrap_or((f64::NAN, f64::NAN, f64::NAN));
+            (k, p_n, u_n)
+        })
+        .collect();
+    (rigid, soft)
+}
+
+/// Steps per drive period of the Moreau-Jean ladder.
+pub const MJ_STEPS: [f64; 5] = [200.0, 400.0, 800.0, 1600.0, 3200.0];
+
+/// Moreau-Jean beside the event-driven run on the default scene (1 kg tip, 10 g rod,
+/// 3 s): `(event-driven speed, [(n, speed at h = T/n)])` (m/s).
+pub fn moreau_jean() -> (f64, Vec<(f64, f64)>) {
+    use crate::physics::stick_inertia::run::initial_state;
+    use crate::physics::stick_inertia::timestepping::mj_mean_speed;
+    let p = InertiaParams {
+        base: crate::physics::stick::jamming_scene(9.81),
+        rod_mass_kg: 0.01,
+        restitution: 0.0,
+    };
+    let md = InertiaModel::new(p);
+    let dur = 3.0;
+    let ev = run_from_rest(&md, dur, &options(1e-10), 0.0).mean_velocity_mps;
+    let y0 = initial_state(&md, 0.0, p.static_angle().unwrap_or(p.base.theta0_rad));
+    let mj = MJ_STEPS
+        .iter()
+        .map(|&n| {
+            (
+                n,
+                mj_mean_speed(&md, &y0, dur, md.period_s / n).unwrap_or(f64::NAN),
+            )
+        })
+        .collect();
+    (ev, mj)
+}

@@ -1,0 +1,88 @@
+//! The stick with inertia as a Moreau-Jean system ([`crate::numerics::timestepping`]):
+//! the second method beside the event-driven run.
+//!
+//! Coordinates `q = (x_G, z_G, theta)`, velocities `v = (vx_G, vz_G, theta')`, mass
+//! matrix `diag(M, M, I_G)`. C's velocities are `u_n = vz_G + l_G theta' sin(theta)` and
+//! `u_t = vx_G - l_G theta' cos(theta)` (from `r_C = r_G - l_G e_r`), so the contact
+//! Jacobians are `w_n = (0, 1, l_G sin)`, `w_t = (1, 0, -l_G cos)`; the Delassus matrix
+//! they give is the mobility `W` of [`super::contact`]. The free update takes gravity
+//! explicitly and the damper implicitly (the rod's own time scale `I_G/gamma` may be far
+//! shorter than the step): `theta'_free = (theta' - h k (theta - theta_0)/I_G) / (1 + h gamma / I_G)`.
+
+use super::{InertiaModel, State, OM, TH};
+use crate::numerics::timestepping::ContactModel;
+
+/// The Moreau-Jean view of an [`InertiaModel`] (`I_G > 0`).
+pub struct MjStick<'a>(pub &'a InertiaModel);
+
+impl ContactModel<3> for MjStick<'_> {
+    fn inv_mass(&self, _t: f64, _q: &[f64; 3], _h: f64) -> [[f64; 3]; 3] {
+        let g = &self.0.geo;
+        [
+            [1.0 / g.total_kg, 0.0, 0.0],
+            [0.0, 1.0 / g.total_kg, 0.0],
+            [0.0, 0.0, 1.0 / g.i_g],
+        ]
+    }
+
+    fn free_velocity(&self, _t: f64, q: &[f64; 3], v: &[f64; 3], h: f64) -> [f64; 3] {
+        let b = &self.0.p.base;
+        let ig = self.0.geo.i_g;
+        let om = (v[2] - h * b.stiffness_nm_per_rad * (q[2] - b.theta0_rad) / ig)
+            / (1.0 + h * b.damping_nms_per_rad / ig); // formula: I_G (w+ - w) = -h (k (theta - theta_0) + gamma w+)
+        [v[0], v[1] - h * b.g_mps2, om] // formula: M (v+ - v) = -h M g e_z
+    }
+
+    fn gap(&self, t: f64, q: &[f64; 3]) -> f64 {
+        q[1] - self.0.geo.l_g_m * q[2].cos() - self.0.plate(t).0 // formula: z_C - z_s
+    }
+
+    fn jacobians(&self, _t: f64, q: &[f64; 3]) -> ([f64; 3], [f64; 3]) {
+        let l = self.0.geo.l_g_m;
+        let (s, c) = q[2].sin_cos();
+        ([0.0, 1.0, l * s], [1.0, 0.0, -l * c]) // formula: u_n = vz_G + l_G w sin, u_t = vx_G - l_G w cos
+    }
+
+    fn obstacle_velocity(&self, t: f64) -> (f64, f64) {
+        (self.0.plate(t).1, 0.0)
+    }
+
+    fn restitution(&self) -> f64 {
+        self.0.p.restitution
+    }
+
+    fn mu(&self) -> f64 {
+        self.0.p.base.mu
+    }
+}
+
+impl InertiaModel {
+    /// `(q, v)` of the Moreau-Jean form from a state of the event-driven form.
+    pub fn to_mj(&self, y: &State) -> ([f64; 3], [f64; 3]) {
+        let [xg, zg, vx, vz] = self.centre(y);
+        ([xg, zg, y[TH]], [vx, vz, y[OM]])
+    }
+
+    /// x of C from Moreau-Jean coordinates (m).
+    pub fn mj_xc(&self, q: &[f64; 3]) -> f64 {
+        q[0] - self.geo.l_g_m * q[2].sin()
+    }
+}
+
+/// Mean speed of C (m/s) by Moreau-Jean with step `h_s` from the static start of the
+/// event-driven run (`y0`) over `duration_s`; `None` if the run failed.
+pub fn mj_mean_speed(md: &InertiaModel, y0: &State, duration_s: f64, h_s: f64) -> Option<f64> {
+    use crate::numerics::timestepping::{simulate, MjOptions};
+    let (q0, v0) = md.to_mj(y0);
+    let run = simulate(
+        &MjStick(md),
+        0.0,
+        q0,
+        v0,
+        duration_s,
+        &MjOptions::midpoint(h_s),
+        |_| {},
+    )
+    .ok()?;
+    Some((md.mj_xc(&run.q) - md.mj_xc(&q0)) / duration_s)
+}

@@ -1,0 +1,169 @@
+//! Chapter 8 `stick-with-inertia`: claims, falsification, energy, exercises, CLI.
+
+use locomotion_workbook::chapters::{self, Context};
+use locomotion_workbook::cli::run_cli;
+use locomotion_workbook::numerics::hybrid::Options;
+use locomotion_workbook::numerics::ode::{Method, StepControl};
+use locomotion_workbook::physics::stick::{authors_scene, jamming_scene};
+use locomotion_workbook::physics::stick_inertia::painleve::{painleve_min, painleve_min_angle};
+use locomotion_workbook::physics::stick_inertia::run::run_from_rest;
+use locomotion_workbook::physics::stick_inertia::{InertiaModel, InertiaParams, MassGeometry};
+use locomotion_workbook::report::{Check, Verdict};
+
+fn opts() -> Options {
+    Options {
+        method: Method::Dop853,
+        control: StepControl::tol(1e-10, 1e-10),
+        ..Options::default()
+    }
+}
+
+#[test]
+fn claims_pass_and_falsification_mutations_flip_every_claim() {
+    let r = chapters::run_default("stick-with-inertia", &Context::headless(true)).unwrap();
+    assert!(!r.has_failures(), "{:?}", r.claims);
+    assert_eq!(r.claims.len(), 10);
+    let muts = chapters::mutations("stick-with-inertia");
+    for c in r.claims.iter().filter(|c| c.check != Check::Consistency) {
+        assert!(
+            muts.iter().any(|m| m.claim_id == c.id),
+            "no mutation for {}",
+            c.id
+        );
+    }
+    for m in muts {
+        let c = (m.run)();
+        assert_eq!(
+            c.verdict,
+            Verdict::Failed,
+            "{} ({}) did not flip: {c:?}",
+            m.claim_id,
+            m.description
+        );
+    }
+}
+
+#[test]
+fn energy_budget_closes_and_no_impact_creates_energy() {
+    for (base, m, m_r, e) in [
+        (jamming_scene(9.81), 1.0, 0.01, 0.0),
+        (authors_scene(10.0), 1.0, 0.1, 0.0),
+        (authors_scene(10.0), 0.0, 1.0, 0.5),
+        (jamming_scene(9.81), 0.0, 1.0, 1.0),
+    ] {
+        let mut b = base;
+        b.mass_kg = m;
+        let md = InertiaModel::new(InertiaParams {
+            base: b,
+            rod_mass_kg: m_r,
+            restitution: e,
+        });
+        let r = run_from_rest(&md, 2.0, &opts(), 0.0);
+        assert!(
+            r.budget.relative_residual() < 1e-7,
+            "{m} {m_r} {e}: {:?}",
+            r.budget
+        );
+        let loss = r.impacts.iter().map(|i| i.loss_j).fold(1e-9, f64::max);
+        assert!(
+            r.max_impact_energy_gain_j <= 1e-12 * loss,
+            "{m} {m_r} {e}: {}",
+            r.max_impact_energy_gain_j
+        );
+        assert!(r.impacts.iter().all(|i| i.loss_j >= -1e-12 * loss));
+    }
+}
+
+#[test]
+fn exercise_8_1_alpha_of_equal_masses() {
+    let g = MassGeometry::new(0.15, 1.0, 1.0);
+    assert!((g.l_g_m - 0.75 * 0.15).abs() < 1e-15);
+    assert!((g.i_g - 5.0 / 24.0 * 0.15 * 0.15).abs() < 1e-15);
+    assert!((g.alpha() - 5.4).abs() < 1e-12);
+}
+
+#[test]
+fn exercise_8_2_least_painleve_coefficient_of_equal_masses() {
+    assert!((painleve_min(5.4) - 0.9370).abs() < 5e-5);
+    assert!((painleve_min_angle(5.4) - 0.3764).abs() < 5e-5);
+}
+
+fn cli(args: &[&str]) -> (i32, String, String) {
+    let (mut out, mut err) = (Vec::new(), Vec::new());
+    let mut all = vec!["workbook"];
+    all.extend_from_slice(args);
+    let code = run_cli(all, &mut out, &mut err);
+    (
+        code,
+        String::from_utf8(out).unwrap(),
+        String::from_utf8(err).unwrap(),
+    )
+}
+
+#[test]
+fn cli_quick_json_has_the_results_of_the_contract() {
+    let (code, out, err) = cli(&["stick-with-inertia", "--quick", "--json", "--no-figures"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(v["chapter"], "stick-with-inertia");
+    let r = &v["results"];
+    for key in [
+        "mean_velocity_mps",
+        "outcome",
+        "painleve_events",
+        "impacts",
+        "alpha",
+        "inertia_ratio",
+        "massless_mean_velocity_mps",
+    ] {
+        assert!(!r[key].is_null(), "missing {key}");
+    }
+    assert_eq!(r["outcome"], "completed");
+    assert!(r["painleve_events"].is_array());
+    let (v8, v6) = (
+        r["mean_velocity_mps"].as_f64().unwrap(),
+        r["massless_mean_velocity_mps"].as_f64().unwrap(),
+    );
+    // 10 g rod on 1 kg: the validity map's 1 % band (2 s here)
+    assert!(v8 > 0.0 && ((v8 - v6) / v8).abs() < 0.02, "{v8} {v6}");
+}
+
+#[test]
+fn cli_rod_mass_zero_is_chapter_6s_model() {
+    let (code, out, err) = cli(&[
+        "stick-with-inertia",
+        "--quick",
+        "--json",
+        "--no-figures",
+        "--rod-mass-kg",
+        "0",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(
+        v["results"]["mean_velocity_mps"],
+        v["results"]["massless_mean_velocity_mps"]
+    );
+}
+
+#[test]
+fn cli_bad_input_names_the_flag_and_exits_2() {
+    for (args, flag) in [
+        (vec!["--rod-mass-kg", "-1"], "--rod-mass-kg"),
+        (vec!["--tip-mass-kg", "11"], "--tip-mass-kg"),
+        (
+            vec!["--tip-mass-kg", "0", "--rod-mass-kg", "0"],
+            "--rod-mass-kg",
+        ),
+        (vec!["--restitution", "1.5"], "--restitution"),
+        (vec!["--mu", "nan"], "--mu"),
+        (vec!["--duration-s", "0"], "--duration-s"),
+        (vec!["--rod-mass-kg", "0", "--damping", "0"], "--damping"),
+    ] {
+        let mut a = vec!["stick-with-inertia", "--quick", "--no-figures"];
+        a.extend(args.iter());
+        let (code, _, err) = cli(&a);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains(flag), "{args:?}: {err}");
+    }
+}
