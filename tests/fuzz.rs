@@ -124,6 +124,24 @@ fn table() -> Vec<(&'static str, Vec<Flag>)> {
             ],
         ),
         (
+            "stick-with-inertia",
+            vec![
+                fl("--length-m", 0.015, 1.5, false, false),
+                rel("--tip-mass-kg", 0.0, 10.0, false, false), // m + m_r >= 1e-3 kg
+                rel("--rod-mass-kg", 0.0, 10.0, false, false),
+                fl("--stiffness", 0.0, 100.0, false, false),
+                rel("--damping", 0.0, 0.1, false, false), // above 0 when m_r = 0
+                fl("--mu", 0.0, 2.0, false, false),
+                fl("--theta0-rad", -HALF_PI, HALF_PI, true, true),
+                fl("--gamma", 0.0, 50.0, false, false),
+                fl("--frequency-hz", 1.0, 1000.0, false, false),
+                fl("--duration-s", 0.0, 100.0, true, false),
+                fl("--rtol", 1e-14, 1e-2, false, false),
+                fl("--restitution", 0.0, 1.0, false, false),
+                G,
+            ],
+        ),
+        (
             "speed-vs-accuracy",
             vec![
                 fl("--frequency-hz", 1.0, 100.0, false, false),
@@ -411,6 +429,14 @@ fn violation(case: &Case, code: i32, out: &str, err: &str) -> Option<String> {
 
 #[test]
 fn every_flag_of_every_chapter_is_in_the_fuzz_table() {
+    let chapters: Vec<&str> = table().iter().map(|(c, _)| *c).collect();
+    for c in locomotion_workbook::chapters::CHAPTERS.iter() {
+        assert!(
+            chapters.contains(&c.id),
+            "{}: missing from the fuzz table",
+            c.id
+        );
+    }
     let cmd = locomotion_workbook::cli::command();
     for (chapter, flags) in table() {
         let sub = cmd.find_subcommand(chapter).expect("chapter subcommand");
