@@ -316,7 +316,8 @@ impl InertiaModel {
     pub fn impact(&self, t: f64, y: &State, landing: bool) -> Option<State> {
         let b = &self.p.base;
         let u0 = self.relative_velocity(t, y);
-        let r = darboux_keller(self.mobility(y[TH]), b.mu, self.p.restitution, u0).ok()?;
+        let r =
+            darboux_keller(self.mobility(y[TH]), b.mu, self.p.restitution, u0, !landing).ok()?;
         let (m, l, ig) = (self.geo.total_kg, self.geo.l_g_m, self.geo.i_g);
         let (s, c) = y[TH].sin_cos();
         let [_, _, vxg, vzg] = self.centre(y);
