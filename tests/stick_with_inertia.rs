@@ -167,3 +167,40 @@ fn cli_bad_input_names_the_flag_and_exits_2() {
         assert!(err.contains(flag), "{args:?}: {err}");
     }
 }
+
+/// Discrete results and speeds rounded to 3 significant digits (the claims check them to
+/// 1e-9 and the convergence study to 1 %, far finer than this rounding).
+#[test]
+fn quick_summary_snapshot() {
+    let r = chapters::run_default("stick-with-inertia", &Context::headless(true)).unwrap();
+    let mut out = String::new();
+    for c in &r.claims {
+        out.push_str(&format!(
+            "{}: {} ({})\n",
+            c.id,
+            c.verdict.as_str(),
+            c.check.as_str()
+        ));
+    }
+    let res = r.results.clone();
+    for key in [
+        "mean_velocity_mps",
+        "massless_mean_velocity_mps",
+        "toothpick_mean_velocity_mps",
+        "alpha",
+        "inertia_ratio",
+        "glocker_painleve_time_s",
+    ] {
+        let v = res[key].as_f64().unwrap();
+        out.push_str(&format!("{key}: {v:.3e}\n"));
+    }
+    for key in [
+        "outcome",
+        "impacts",
+        "painleve_event_count",
+        "glocker_outcome",
+    ] {
+        out.push_str(&format!("{key}: {}\n", res[key]));
+    }
+    insta::assert_snapshot!("stick_with_inertia_quick", out);
+}
