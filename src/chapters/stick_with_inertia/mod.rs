@@ -276,6 +276,7 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
         r.figures.extend(figures::painleve_boundary(&ev, &dir)?);
         r.figures.extend(figures::validity_map(&ev, &dir)?);
         r.figures.extend(figures::painleve_map(&map, &dir)?);
+        r.figures.extend(figures::gaits(&dir)?);
     }
     Ok(r)
 }
