@@ -102,6 +102,9 @@ pub fn painleve_map(map: &[Vec<super::answers::MapCell>], dir: &Path) -> Result<
     save_chart(&chart, dir, "painleve-map")
 }
 
+/// A curve: (x, y) points.
+type Curve = Vec<(f64, f64)>;
+
 /// `gaits`: the foot's position and height over four drive cycles of the self-locking
 /// scene, for the massless model (chapter 6), a 1 kg tip on a 10 g rod, and a uniform
 /// 1 kg stick (with chapter 6's spring and damper).
@@ -117,7 +120,7 @@ pub fn gaits(dir: &Path) -> Result<Vec<String>> {
         record_events: false,
         ..super::evidence::options(1e-10)
     };
-    let mut series: Vec<(String, Vec<(f64, f64)>, Vec<(f64, f64)>)> = Vec::new();
+    let mut series: Vec<(String, Curve, Curve)> = Vec::new();
     let b6 = jamming_scene(9.81);
     let m6 = StickModel::new(b6);
     let y6 = initial_state(&m6, 0.0, b6.static_angle().unwrap_or(b6.theta0_rad));
