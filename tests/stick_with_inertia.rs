@@ -167,3 +167,68 @@ fn cli_bad_input_names_the_flag_and_exits_2() {
         assert!(err.contains(flag), "{args:?}: {err}");
     }
 }
+
+/// Discrete results and speeds rounded to 3 significant digits (the claims check them to
+/// 1e-9 and the convergence study to 1 %, far finer than this rounding).
+#[test]
+fn quick_summary_snapshot() {
+    let r = chapters::run_default("stick-with-inertia", &Context::headless(true)).unwrap();
+    let mut out = String::new();
+    for c in &r.claims {
+        out.push_str(&format!(
+            "{}: {} ({})\n",
+            c.id,
+            c.verdict.as_str(),
+            c.check.as_str()
+        ));
+    }
+    let res = r.results.clone();
+    for key in [
+        "mean_velocity_mps",
+        "massless_mean_velocity_mps",
+        "toothpick_mean_velocity_mps",
+        "alpha",
+        "inertia_ratio",
+        "glocker_painleve_time_s",
+    ] {
+        let v = res[key].as_f64().unwrap();
+        out.push_str(&format!("{key}: {v:.3e}\n"));
+    }
+    for key in [
+        "outcome",
+        "impacts",
+        "painleve_event_count",
+        "glocker_outcome",
+    ] {
+        out.push_str(&format!("{key}: {}\n", res[key]));
+    }
+    insta::assert_snapshot!("stick_with_inertia_quick", out);
+}
+
+/// On the authors' scene the landings reverse the slip within the impact; with the
+/// event-driven run given Moreau-Jean's own (velocity-level) impact law, Moreau-Jean
+/// converges to it at order one (errors halve with the step).
+#[test]
+fn moreau_jean_converges_on_the_authors_scene_with_the_same_impact_law() {
+    use locomotion_workbook::physics::stick_inertia::run::initial_state;
+    use locomotion_workbook::physics::stick_inertia::timestepping::mj_mean_speed;
+    use locomotion_workbook::physics::stick_inertia::ImpactLaw;
+    let mut b = authors_scene(10.0);
+    b.mass_kg = 1.0;
+    let mut md = InertiaModel::new(InertiaParams {
+        base: b,
+        rod_mass_kg: 0.01,
+        restitution: 0.0,
+    });
+    md.impact_law = ImpactLaw::VelocityCoulomb;
+    let ev = run_from_rest(&md, 1.0, &opts(), 0.0).mean_velocity_mps;
+    let y0 = initial_state(&md, 0.0, md.p.static_angle().unwrap());
+    let errs: Vec<f64> = [800.0, 1600.0, 3200.0]
+        .iter()
+        .map(|n| (mj_mean_speed(&md, &y0, 1.0, md.period_s / n).unwrap() - ev).abs())
+        .collect();
+    for w in errs.windows(2) {
+        let ratio = w[0] / w[1];
+        assert!((1.7..2.4).contains(&ratio), "{errs:?}");
+    }
+}

@@ -354,3 +354,22 @@ pub fn moreau_jean() -> (f64, Vec<(f64, f64)>) {
         .collect();
     (ev, mj)
 }
+
+/// The scene of cardillo's `examples/Painleve.py` (Glocker 1995, 5.3.4, "impact without
+/// collision"): a uniform rod of length 2 m and 1 kg, mu = 5/3, g = 10, leaning 31 deg
+/// from the horizontal (59 deg from the vertical, top to the left), its lower end sliding
+/// right at 30 m/s on a still floor. Returns the run (first Painleve event, impacts).
+pub fn glocker_scene() -> InertiaRun {
+    let th = -(59.0f64).to_radians();
+    let mut base = StickParams::new(2.0, 0.0, 0.0, 0.0, 5.0 / 3.0, th, 10.0, 0.0, 30.0);
+    base.mass_kg = 0.0;
+    let md = InertiaModel::new(InertiaParams {
+        base,
+        rod_mass_kg: 1.0,
+        restitution: 0.0,
+    });
+    let mut y = [0.0; NSTATE];
+    y[TH] = th;
+    y[VXC] = 30.0;
+    simulate_inertia(&md, 0.0, y, 1.5, &options(1e-10), 0.0)
+}

@@ -101,3 +101,97 @@ pub fn painleve_map(map: &[Vec<super::answers::MapCell>], dir: &Path) -> Result<
     chart = chart.series(crate::plot::Series::dashed("tan(theta_0)", tan).color(2));
     save_chart(&chart, dir, "painleve-map")
 }
+
+/// A curve: (x, y) points.
+type Curve = Vec<(f64, f64)>;
+
+/// `gaits`: the foot's position and height over four drive cycles of the self-locking
+/// scene, for the massless model (chapter 6), a 1 kg tip on a 10 g rod, and a uniform
+/// 1 kg stick (with chapter 6's spring and damper).
+pub fn gaits(dir: &Path) -> Result<Vec<String>> {
+    use crate::numerics::hybrid::Options;
+    use crate::physics::stick::jamming_scene;
+    use crate::physics::stick::run::{initial_state, simulate_stick, Recording};
+    use crate::physics::stick::StickModel;
+    use crate::physics::stick_inertia::{InertiaParams, XC, ZC};
+    let t_end = 4.0 / 30.0;
+    let dt = t_end / 800.0;
+    let opts = Options {
+        record_events: false,
+        ..super::evidence::options(1e-10)
+    };
+    let mut series: Vec<(String, Curve, Curve)> = Vec::new();
+    let b6 = jamming_scene(9.81);
+    let m6 = StickModel::new(b6);
+    let y6 = initial_state(&m6, 0.0, b6.static_angle().unwrap_or(b6.theta0_rad));
+    let rec = Recording {
+        trace_dt_s: dt,
+        ..Recording::default()
+    };
+    let s6 = simulate_stick(&m6, 0.0, y6, t_end, &opts, rec);
+    let pick6 = |k: usize| -> Vec<(f64, f64)> {
+        s6.trace
+            .iter()
+            .map(|s| {
+                (
+                    s.t_s * 30.0,
+                    1e3 * (s.y[k]
+                        - if k == crate::physics::stick::ZC {
+                            m6.plate(s.t_s).0
+                        } else {
+                            0.0
+                        }),
+                )
+            })
+            .collect()
+    };
+    series.push((
+        "massless rod, 1 kg at P (chapter 6)".into(),
+        pick6(crate::physics::stick::XC),
+        pick6(crate::physics::stick::ZC),
+    ));
+    for (label, m, m_r) in [
+        ("1 kg at P on a 10 g rod", 1.0, 0.01),
+        ("uniform 1 kg stick", 0.0, 1.0),
+    ] {
+        let mut b = b6;
+        b.mass_kg = m;
+        let p = InertiaParams {
+            base: b,
+            rod_mass_kg: m_r,
+            restitution: 0.0,
+        };
+        let md = crate::physics::stick_inertia::InertiaModel::new(p);
+        let r = super::evidence::scene_run(&p, t_end, 1e-10, dt);
+        let xs = r
+            .trace
+            .iter()
+            .map(|s| (s.t_s * 30.0, 1e3 * s.y[XC]))
+            .collect();
+        let hs = r
+            .trace
+            .iter()
+            .map(|s| (s.t_s * 30.0, 1e3 * (s.y[ZC] - md.plate(s.t_s).0)))
+            .collect();
+        series.push((label.into(), xs, hs));
+    }
+    let mut cx = Chart::new(
+        "The foot's walk (self-locking scene's plate)",
+        "time (drive cycles)",
+        "x of the foot C (mm)",
+    )
+    .legend(Legend::UpperLeft);
+    let mut ch = Chart::new(
+        "The foot's height above the plate",
+        "time (drive cycles)",
+        "h_C (mm)",
+    )
+    .legend(Legend::UpperLeft);
+    for (i, (label, xs, hs)) in series.into_iter().enumerate() {
+        cx = cx.series(crate::plot::Series::line(&label, xs).color(i));
+        ch = ch.series(crate::plot::Series::line(&label, hs).color(i));
+    }
+    let mut out = save_chart(&cx, dir, "gait-position")?;
+    out.extend(save_chart(&ch, dir, "gait-height")?);
+    Ok(out)
+}

@@ -255,6 +255,13 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
     }
     r.result("massless_mean_velocity_mps", massless);
     r.table("validity-map", answers::validity_table(&ev.ladders));
+    let gl = evidence::glocker_scene();
+    if let (Some(e), Some(i)) = (gl.painleve.first(), gl.impacts.first()) {
+        r.result("glocker_painleve_time_s", e.t_s);
+        r.result("glocker_painleve_theta_rad", e.theta_rad);
+        r.result("glocker_iwc_impulse_ns", json!([i.j_t_ns, i.j_n_ns]));
+    }
+    r.result("glocker_outcome", gl.outcome.label());
     let tooth = answers::toothpicks(if ctx.quick { 2.0 } else { 10.0 });
     if let Some(t) = tooth.iter().find(|t| t.spring && t.scene == "self-locking") {
         r.result("toothpick_mean_velocity_mps", t.speed_mps);
@@ -269,6 +276,7 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
         r.figures.extend(figures::painleve_boundary(&ev, &dir)?);
         r.figures.extend(figures::validity_map(&ev, &dir)?);
         r.figures.extend(figures::painleve_map(&map, &dir)?);
+        r.figures.extend(figures::gaits(&dir)?);
     }
     Ok(r)
 }

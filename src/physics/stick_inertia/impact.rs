@@ -34,11 +34,16 @@ pub struct Unbounded;
 /// friction `mu`, restitution `e` (0 to 1), from the relative velocity `u0` (m/s).
 /// `u0[1] < 0` (approach) for a collision; `u0[1] = 0` with a normal slope that drives C
 /// into the plate for an impact without collision.
+///
+/// `iwc`: an impact without collision, started on the Painleve boundary or beyond it:
+/// its first, slipping, piece runs until the slip stops even when its normal slope is
+/// zero to rounding (the limit from the inconsistent side, where the slope is negative).
 pub fn darboux_keller(
     w: [[f64; 2]; 2],
     mu: f64,
     e: f64,
     u0: [f64; 2],
+    iwc: bool,
 ) -> Result<ImpulseResult, Unbounded> {
     let (wtt, wtn, wnn) = (w[0][0], w[0][1], w[1][1]);
     let [mut ut, mut un] = u0;
@@ -67,7 +72,8 @@ pub fn darboux_keller(
                                 // Compression is over once C no longer approaches and the regime would not
                                 // drive it into the plate (at the start of an impact without collision the
                                 // normal velocity is zero and the slope negative: compression lies ahead).
-        if !restituting && un >= 0.0 && kn >= 0.0 {
+        let first_iwc_slip = iwc && slipping && pn == 0.0;
+        if !restituting && un >= 0.0 && kn >= 0.0 && !first_iwc_slip {
             restituting = true;
             target = e * e * work_c;
         }
@@ -76,7 +82,7 @@ pub fn darboux_keller(
             dp = dp.min(-ut / kt); // slip stops
         }
         if !restituting {
-            if kn > 0.0 && un < 0.0 {
+            if kn > 0.0 && un < 0.0 && !first_iwc_slip {
                 dp = dp.min(-un / kn); // compression ends
             }
         } else {
@@ -148,14 +154,14 @@ mod tests {
 
     #[test]
     fn frictionless_plastic_impact_stops_normal_velocity_only() {
-        let r = darboux_keller(w(3.0, 0.4), 0.0, 0.0, [0.3, -1.0]).unwrap();
+        let r = darboux_keller(w(3.0, 0.4), 0.0, 0.0, [0.3, -1.0], false).unwrap();
         assert!(r.p_t == 0.0 && r.u_after[1].abs() < 1e-14, "{r:?}");
         assert!(r.loss_j > 0.0);
     }
 
     #[test]
     fn elastic_frictionless_impact_reverses_normal_velocity_and_keeps_energy() {
-        let r = darboux_keller(w(3.0, 0.4), 0.0, 1.0, [0.3, -1.0]).unwrap();
+        let r = darboux_keller(w(3.0, 0.4), 0.0, 1.0, [0.3, -1.0], false).unwrap();
         assert!((r.u_after[1] - 1.0).abs() < 1e-12, "{r:?}");
         assert!(r.loss_j.abs() < 1e-12);
     }
@@ -163,7 +169,7 @@ mod tests {
     #[test]
     fn sticking_impact_matches_the_linear_solve() {
         let m = w(3.0, 0.6);
-        let r = darboux_keller(m, 5.0, 0.0, [0.0, -1.0]).unwrap();
+        let r = darboux_keller(m, 5.0, 0.0, [0.0, -1.0], false).unwrap();
         // W P = -u0: P = W^{-1} (0, 1)
         let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
         let (pt, pn) = (-m[0][1] / det, m[0][0] / det);
@@ -181,7 +187,7 @@ mod tests {
                 for mu in [0.0, 0.3, 1.0, 3.0] {
                     for e in [0.0, 0.5, 1.0] {
                         for ut in [-2.0, -0.1, 0.0, 0.5, 3.0] {
-                            if let Ok(r) = darboux_keller(w(alpha, th), mu, e, [ut, -1.0]) {
+                            if let Ok(r) = darboux_keller(w(alpha, th), mu, e, [ut, -1.0], false) {
                                 let scale = 1.0 + alpha;
                                 assert!(
                                     r.loss_j >= -1e-12 * scale,
@@ -194,5 +200,18 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn impact_without_collision_on_the_boundary_stops_the_slip() {
+        // uniform rod at -45 deg, mu = 5/3: exactly on the Painleve boundary for a foot
+        // slipping right, the normal slope of the slip is zero
+        let m = w(3.0, -std::f64::consts::FRAC_PI_4);
+        let r = darboux_keller(m, 5.0 / 3.0, 0.0, [1.0, 0.0], true).unwrap();
+        assert!(
+            r.u_after[0] == 0.0 && r.p_n > 0.0 && r.loss_j > 0.0,
+            "{r:?}"
+        );
+        assert!(r.u_after[1].abs() < 1e-12, "{r:?}");
     }
 }

@@ -173,6 +173,18 @@ impl Log {
     pub const CAP: usize = 10_000;
 }
 
+/// The impact law at C.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ImpactLaw {
+    /// Integration in the normal impulse (Darboux-Keller) with Stronge's restitution: the
+    /// slip may stop or reverse during the impact ([`impact`]). The model's law.
+    DarbouxKeller,
+    /// The velocity-level law of Moreau-Jean time-stepping: Newton's restitution and
+    /// Coulomb's law on the velocities after the impact
+    /// ([`crate::numerics::timestepping::solve_contact`]); for comparison only.
+    VelocityCoulomb,
+}
+
 /// The model: parameters, derived constants and the run's log.
 #[derive(Debug, Clone)]
 pub struct InertiaModel {
@@ -188,6 +200,8 @@ pub struct InertiaModel {
     pub min_flight_sample_s: f64,
     /// Events decided inside transitions.
     pub log: RefCell<Log>,
+    /// The impact law (Darboux-Keller unless a comparison asks otherwise).
+    pub impact_law: ImpactLaw,
 }
 
 impl InertiaModel {
@@ -201,6 +215,7 @@ impl InertiaModel {
             max_contact_step_s: period / 14.0,
             min_flight_sample_s: period / 1024.0,
             log: RefCell::new(Log::default()),
+            impact_law: ImpactLaw::DarbouxKeller,
         }
     }
 

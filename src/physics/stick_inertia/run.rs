@@ -114,7 +114,8 @@ pub struct InertiaRun {
     pub trace: Vec<Sample>,
 }
 
-struct Watch {
+struct Watch<'a> {
+    md: &'a InertiaModel,
     acc: [f64; 4],
     trace_dt_s: f64,
     next_t: f64,
@@ -122,16 +123,14 @@ struct Watch {
     switches: usize,
 }
 
-impl Observer<Mode, NSTATE> for Watch {
+impl Observer<Mode, NSTATE> for Watch<'_> {
     fn segment(&mut self, mode: Mode, seg: &Segment<'_, NSTATE>) {
         if self.trace_dt_s > 0.0 {
             while self.next_t <= seg.t1 {
                 let t = self.next_t.max(seg.t0);
-                self.trace.push(Sample {
-                    t_s: t,
-                    mode,
-                    y: seg.eval(t),
-                });
+                // canonical: in contact C's height is the plate's (not integrated)
+                let y = self.md.canonical(mode, t, &seg.eval(t));
+                self.trace.push(Sample { t_s: t, mode, y });
                 self.next_t += self.trace_dt_s;
             }
         }
@@ -176,6 +175,7 @@ pub fn simulate_inertia(
         model.select_contact(t0, &model.canonical(Mode::Pivot, t0, &y0), true, 0)
     };
     let mut w = Watch {
+        md: model,
         acc: [0.0; 4],
         trace_dt_s,
         next_t: t0,

@@ -316,7 +316,12 @@ impl InertiaModel {
     pub fn impact(&self, t: f64, y: &State, landing: bool) -> Option<State> {
         let b = &self.p.base;
         let u0 = self.relative_velocity(t, y);
-        let r = darboux_keller(self.mobility(y[TH]), b.mu, self.p.restitution, u0).ok()?;
+        let r = match self.impact_law {
+            super::ImpactLaw::DarbouxKeller => {
+                darboux_keller(self.mobility(y[TH]), b.mu, self.p.restitution, u0, !landing).ok()?
+            }
+            super::ImpactLaw::VelocityCoulomb => self.velocity_coulomb(u0, y[TH])?,
+        };
         let (m, l, ig) = (self.geo.total_kg, self.geo.l_g_m, self.geo.i_g);
         let (s, c) = y[TH].sin_cos();
         let [_, _, vxg, vzg] = self.centre(y);
@@ -351,5 +356,27 @@ impl InertiaModel {
             });
         }
         Some(a)
+    }
+
+    /// Moreau-Jean's velocity-level impact law ([`super::ImpactLaw::VelocityCoulomb`]).
+    fn velocity_coulomb(&self, u0: [f64; 2], theta: f64) -> Option<super::impact::ImpulseResult> {
+        use crate::numerics::timestepping::{solve_contact, ContactStatus};
+        let w = self.mobility(theta);
+        let wn = [[w[1][1], w[1][0]], [w[0][1], w[0][0]]]; // (n, t) order
+        let s0 = self.p.restitution * u0[1].min(0.0); // formula: Newton, u_n+ >= -e u_n-
+        let imp = solve_contact(wn, [u0[1], u0[0]], s0, self.p.base.mu)?;
+        let u1 = [
+            u0[0] + w[0][0] * imp.p_t + w[0][1] * imp.p_n,
+            u0[1] + w[1][0] * imp.p_t + w[1][1] * imp.p_n,
+        ];
+        // formula: -int u . dP along the straight path P(s) = s P (u linear in s)
+        let loss = -(0.5 * (u0[0] + u1[0]) * imp.p_t + 0.5 * (u0[1] + u1[1]) * imp.p_n);
+        let stuck = imp.status == ContactStatus::Stick;
+        Some(super::impact::ImpulseResult {
+            p_t: imp.p_t,
+            p_n: imp.p_n,
+            u_after: [if stuck { 0.0 } else { u1[0] }, u1[1]],
+            loss_j: loss,
+        })
     }
 }
