@@ -3,7 +3,9 @@
 //! chapter's default contact integrator (Dormand-Prince 8(5,3)) and with Dormand-Prince
 //! 5(4); flight in closed form; certified event detection (and, for its cost, the default
 //! scene once more with the end-point sign test only). Criterion's throughput is in
-//! cycles ("elements") per second.
+//! cycles ("elements") per second. Chapter 8's stick with inertia runs in the same binary
+//! (group `stick_inertia`): the default scene with a uniform rod of 1 % of the tip mass,
+//! the same tolerance and driver, so the two models' speeds are a ratio of one run.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use locomotion_workbook::numerics::hybrid::Options;
@@ -70,5 +72,36 @@ fn stick(c: &mut Criterion) {
     );
 }
 
-criterion_group!(benches, stick);
+fn stick_inertia(c: &mut Criterion) {
+    use locomotion_workbook::physics::stick_inertia::{
+        run::{initial_state as start, simulate_inertia},
+        InertiaModel, InertiaParams,
+    };
+    let base = jamming_scene(9.81);
+    let p = InertiaParams {
+        base,
+        rod_mass_kg: 0.01 * base.mass_kg,
+        restitution: 0.0,
+    };
+    let model = InertiaModel::new(p);
+    let y0 = start(&model, 0.0, p.static_angle().unwrap_or(base.theta0_rad));
+    let opts = Options {
+        method: Method::Dop853,
+        control: StepControl::tol(1e-10, 1e-10),
+        ..Options::default()
+    };
+    let cycles = 30u64;
+    let t_end = cycles as f64 * base.period_s();
+    let mut g = c.benchmark_group("stick_inertia");
+    g.throughput(Throughput::Elements(cycles));
+    g.bench_function("jamming_rod_1pc_30_cycles_rtol1e-10_dop853", |b| {
+        b.iter(|| {
+            let r = simulate_inertia(&model, 0.0, black_box(y0), t_end, &opts, 0.0);
+            black_box(r.mean_velocity_mps)
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, stick, stick_inertia);
 criterion_main!(benches);
