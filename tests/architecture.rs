@@ -19,10 +19,6 @@ use std::path::{Path, PathBuf};
 const KNOWN_CYCLES: &[(&str, &[&str])] = &[
     ("asymmetric_shaking", &["claims", "work"]),
     (
-        "speed_vs_accuracy",
-        &["report_parts", "stick_part", "tables"],
-    ),
-    (
         "stick_state_machine",
         &["claims", "rule_claims", "slide_rules"],
     ),

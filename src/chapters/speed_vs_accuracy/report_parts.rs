@@ -6,8 +6,8 @@ use super::economy::{flight_map_drift, law_drift, SweepRow};
 use super::failures::{stiff, zeno, Failure};
 use super::measure::{drift_block_model, timed, window};
 use super::work_precision::{
-    cheapest_json, dopri5_errors_at, error_at, ladder, measure, Solver, WpPoint,
-    EVENT_DRIVEN_LABELS,
+    cheapest_json, dopri5_errors_at, error_at, fmt_err, ladder, measure, observed_order, Solver,
+    WpPoint, EVENT_DRIVEN_LABELS,
 };
 use super::Args;
 use crate::chapters::Context;
@@ -54,27 +54,6 @@ impl Plan {
     }
 }
 
-/// Least-squares slope of ln(error) against ln(step) over the points of `label` whose
-/// error lies above the round-off floor `floor`: the observed order.
-pub fn observed_order(points: &[WpPoint], label: &str, floor: f64) -> f64 {
-    let pts: Vec<(f64, f64)> = points
-        .iter()
-        .filter(|p| p.solver.label() == label && p.completed && p.error > floor)
-        .map(|p| (p.solver.knob().ln(), p.error.ln()))
-        .collect();
-    let n = pts.len() as f64;
-    if pts.len() < 2 {
-        return f64::NAN;
-    }
-    let (mx, my) = (
-        pts.iter().map(|p| p.0).sum::<f64>() / n,
-        pts.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    sxy / sxx // formula: order = cov(ln h, ln err) / var(ln h)
-}
-
 /// The largest ratio `e(h) / (e(h0) (h/h0)^p)` over the completed points of `label`
 /// (h0 the coarsest step), and the number of points: `<= 2` means the errors lie under
 /// an order-`p` envelope through the coarsest point.
@@ -92,15 +71,6 @@ pub fn envelope(points: &[WpPoint], label: &str, p: f64) -> (f64, usize) {
         .map(|&(h, e)| e / (e0 * (h / h0).powf(p))) // formula: e(h) <= C e0 (h/h0)^p
         .fold(0.0f64, f64::max);
     (worst, pts.len())
-}
-
-/// Formats an error coarsely for tables (two significant digits).
-pub fn fmt_err(e: f64) -> String {
-    if e.is_finite() {
-        format!("{e:.1e}")
-    } else {
-        "failed".into()
-    }
 }
 
 /// Fills the report.

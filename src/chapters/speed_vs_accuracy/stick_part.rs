@@ -4,10 +4,9 @@
 use super::doc::Doc;
 use super::failures::Failure;
 use super::measure::{stick_speed, timed};
-use super::report_parts::{fmt_err, observed_order};
 use super::work_precision::{
-    cheapest_json, dopri5_errors_at, error_at, ladder, measure, rhs_evals_at, Solver, WpPoint,
-    EVENT_DRIVEN_LABELS,
+    cheapest_json, dopri5_errors_at, error_at, fmt_err, ladder, measure, observed_order,
+    rhs_evals_at, Solver, WpPoint, EVENT_DRIVEN_LABELS,
 };
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};

@@ -3,7 +3,7 @@
 
 use super::economy::SweepRow;
 use super::failures::Failure;
-use super::report_parts::fmt_err;
+use super::work_precision::fmt_err;
 use super::work_precision::WpPoint;
 use crate::report::{fmt_num, ChapterReport};
 use std::fmt::Write as _;

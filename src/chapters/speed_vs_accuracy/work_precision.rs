@@ -258,3 +258,33 @@ pub fn cheapest_json(points: &[WpPoint], labels: &[&str], target: f64) -> serde_
         .collect();
     serde_json::Value::Object(map)
 }
+
+/// Least-squares slope of ln(error) against ln(step) over the points of `label` whose
+/// error lies above the round-off floor `floor`: the observed order.
+pub fn observed_order(points: &[WpPoint], label: &str, floor: f64) -> f64 {
+    let pts: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|p| p.solver.label() == label && p.completed && p.error > floor)
+        .map(|p| (p.solver.knob().ln(), p.error.ln()))
+        .collect();
+    let n = pts.len() as f64;
+    if pts.len() < 2 {
+        return f64::NAN;
+    }
+    let (mx, my) = (
+        pts.iter().map(|p| p.0).sum::<f64>() / n,
+        pts.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    sxy / sxx // formula: order = cov(ln h, ln err) / var(ln h)
+}
+
+/// Formats an error coarsely for tables (two significant digits).
+pub fn fmt_err(e: f64) -> String {
+    if e.is_finite() {
+        format!("{e:.1e}")
+    } else {
+        "failed".into()
+    }
+}
