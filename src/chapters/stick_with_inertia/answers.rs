@@ -150,7 +150,7 @@ pub fn painleve_map(n: usize, duration_s: f64) -> Vec<Vec<MapCell>> {
 
 /// The map's summary as a Markdown table.
 pub fn map_table(map: &[Vec<MapCell>]) -> String {
-    let mut s = String::from("| rod | runs | runs with Painlevé events | events | smallest mu with an event | runs that fell |\n|---|---|---|---|---|---|\n");
+    let mut s = String::from("| rod | runs | runs with Painlevé events | events | smallest μ with an event | runs that fell |\n|---|---|---|---|---|---|\n");
     for ((label, ..), cells) in MAP_RODS.iter().zip(map) {
         let with: Vec<_> = cells.iter().filter(|c| c.events > 0).collect();
         let min_mu = with.iter().map(|c| c.mu).fold(f64::INFINITY, f64::min);

@@ -101,7 +101,7 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
             "painleve-compliant-limit",
             "4 (the Painleve rule)",
             &format!(
-                "The impact-without-collision rule is the limit of a stiff compliant contact: on a uniform rod sliding at theta = 0.6 rad with mu = 1.6 > mu_P = 1.398, the normal impulse gathered until the slip stops tends to the rule's as the stiffness grows (relative gaps {} at K = 1e5 ... 1e8 N/m, shrinking at each step, by 2 to 2.5 per decade of K).",
+                "The impact-without-collision rule is the limit of a stiff compliant contact: on a uniform rod sliding at θ = 0.6 rad with μ = 1.6 > μ_P = 1.398, the normal impulse gathered until the slip stops tends to the rule's as the stiffness grows (relative gaps {} at K = 1e5 ... 1e8 N/m, shrinking at each step, by 2 to 2.5 per decade of K).",
                 soft_dev.iter().map(|d| format!("{d:.1e}")).collect::<Vec<_>>().join(", ")
             ),
             0.0,
@@ -114,7 +114,7 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
         Claim::close(
             "impulse-ratio-uniform",
             "2",
-            "A uniform stick (m = 0) landing without slip takes a sideways impulse J_l/J_v = 3q/(4+q^2), q = tan(theta). Simulated drops at q = 0.5, 1, 2; largest relative deviation.",
+            "A uniform stick (m = 0) landing without slip takes a sideways impulse J_ℓ/J_v = 3q/(4+q^2), q = tan θ. Simulated drops at q = 0.5, 1, 2; largest relative deviation.",
             0.0,
             uniform,
             RATIO_TOL,
@@ -123,7 +123,7 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
         Claim::close(
             "impulse-ratio-massless",
             "2",
-            "A massless rod with a tip mass (m_r -> 0) takes J_l/J_v = q: the impulse runs along the rod. Simulated drops with m_r = 1e-10 m at q = 0.5, 1, 2; largest relative deviation.",
+            "A massless rod with a tip mass (m_r -> 0) takes J_ℓ/J_v = q: the impulse runs along the rod. Simulated drops with m_r = 1e-10 m at q = 0.5, 1, 2; largest relative deviation.",
             0.0,
             massless,
             MASSLESS_TOL,
@@ -132,7 +132,7 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
         Claim::close(
             "impulse-ratio-between",
             "2 (derived)",
-            "A rod with alpha = M l_G^2 / I_G takes J_l/J_v = alpha q/(1 + alpha + q^2) (3q/(4+q^2) at alpha = 3, q as alpha -> infinity). Simulated drops of m_r = m (alpha = 27/5) and m_r = m/10 (alpha = 32.27) at q = 0.5, 1, 2; largest relative deviation.",
+            "A rod with α = M l_G^2 / I_G takes J_ℓ/J_v = α q/(1 + α + q^2) (3q/(4+q^2) at α = 3, q as α -> infinity). Simulated drops of m_r = m (α = 27/5) and m_r = m/10 (α = 32.27) at q = 0.5, 1, 2; largest relative deviation.",
             0.0,
             between,
             RATIO_TOL,
@@ -141,7 +141,7 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
         Claim::close(
             "painleve-boundary",
             "2, 4 (derived)",
-            "A rod sliding with its foot moving away from the side it leans to has no unique normal force (a Painleve case) once mu > mu_P(theta) = tan(theta) + 1/(alpha sin(theta) cos(theta)). Bisection in mu on the simulated sliding rod at theta = 0.3, 0.6, 1.0 rad for alpha = 3 (uniform), 27/5 (m_r = m), 32.27 (m_r = m/10); largest relative deviation.",
+            "A rod sliding with its foot moving away from the side it leans to has no unique normal force (a Painleve case) once μ > μ_P(θ) = tan θ + 1/(α sin θ cos θ). Bisection in μ on the simulated sliding rod at θ = 0.3, 0.6, 1.0 rad for α = 3 (uniform), 27/5 (m_r = m), 32.27 (m_r = m/10); largest relative deviation.",
             0.0,
             boundary,
             BOUNDARY_TOL,
@@ -150,7 +150,7 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
         Claim::close(
             "painleve-minimum-uniform",
             "2, 4 (derived)",
-            "For the uniform rod the least mu_P is 4/3 (golden-section search over theta of the bisected boundary).",
+            "For the uniform rod the least μ_P is 4/3 (golden-section search over θ of the bisected boundary).",
             doc.painleve_min,
             mu_min,
             MIN_TOL,
@@ -159,7 +159,7 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
         Claim::close(
             "painleve-minimum-angle",
             "2, 4 (derived)",
-            "... reached at theta = atan(1/2) = 0.4636 rad (rad).",
+            "... reached at θ = atan(1/2) = 0.4636 rad.",
             doc.painleve_min_tan.atan(),
             th_min,
             MIN_ANGLE_TOL,
@@ -169,7 +169,7 @@ pub fn all(doc: &Statements, ev: &Evidence, impact_gain: (f64, f64, usize)) -> V
             "massless-limit",
             "4, 5 (the model)",
             &format!(
-                "The document's massless rod is the limit m_r -> 0 of the rod with inertia: the mean speed converges to chapter 6's at first order in the rod's dimensionless inertia I_P k/gamma^2 (fitted orders {:.4} on the self-locking scene, {:.4} on the authors', over I_P k/gamma^2 in [{}, {}]; largest deviation from the order).",
+                "The document's massless rod is the limit m_r -> 0 of the rod with inertia: the mean speed converges to chapter 6's at first order in the rod's dimensionless inertia I_P k/γ^2 (fitted orders {:.4} on the self-locking scene, {:.4} on the authors', over I_P k/γ^2 in [{}, {}]; largest deviation from the order).",
                 orders[0], orders[1], ORDER_RANGE.0, ORDER_RANGE.1
             ),
             doc.massless_order,
