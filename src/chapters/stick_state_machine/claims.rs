@@ -7,7 +7,7 @@
 //! and the stated correction holds, `failed` when neither does.
 
 use super::doc::Doc;
-use super::evidence::{flight_error, pendulum_error, Evidence, PENDULUM_EPS};
+use super::evidence::{flight_error, pendulum_error, Evidence, EVIDENCE_RTOL, PENDULUM_EPS};
 use super::rule_claims;
 use crate::physics::stick::run::RunSummary;
 use crate::physics::stick::{CollisionAngle, Mode, StickModel, StickParams, OM, TH, VXC};
@@ -22,6 +22,8 @@ pub struct Ctx<'a> {
     pub main: &'a RunSummary,
     /// This run's parameters.
     pub p: &'a StickParams,
+    /// This run's relative (= absolute) tolerance (the evidence runs use 1e-10).
+    pub rtol: f64,
 }
 
 impl Ctx<'_> {
@@ -65,8 +67,14 @@ pub fn all(d: &Doc, c: &Ctx) -> Vec<Claim> {
 }
 
 /// Adds every claim under the printed statements.
-pub fn add_all(r: &mut ChapterReport, ev: &Evidence, main: &RunSummary, p: &StickParams) {
-    for claim in all(&Doc::PRINTED, &Ctx { ev, main, p }) {
+pub fn add_all(
+    r: &mut ChapterReport,
+    ev: &Evidence,
+    main: &RunSummary,
+    p: &StickParams,
+    rtol: f64,
+) {
+    for claim in all(&Doc::PRINTED, &Ctx { ev, main, p, rtol }) {
         r.claim(claim);
     }
 }
@@ -259,26 +267,43 @@ fn table1(d: &Doc, c: &Ctx) -> Vec<Claim> {
         StickOutcome::Invalid(_) | StickOutcome::Aborted(_)
     );
     let mut both = vec![&ev.authors, &ev.jamming];
-    let mut weighted = vec![(&ev.authors, &ev.params[0]), (&ev.jamming, &ev.params[1])];
     if main_valid {
         both.push(c.main);
-        weighted.push((c.main, c.p));
     }
     let vmax = |f: &dyn Fn(&RunSummary) -> f64| both.iter().map(|s| f(s)).fold(0.0, f64::max);
-    let fmax = |f: &dyn Fn(&RunSummary) -> f64| {
-        weighted
-            .iter()
-            .map(|(s, q)| f(s) / (q.mass_kg * q.g_mps2))
-            .fold(0.0, f64::max)
-    };
     let pen = vmax(&|s| s.violations.penetration_m);
     v.push(Claim::judged("t1-flight", "Table 1", "Flight: h_c > 0, F = 0. Largest penetration of C below the plate at accepted flight steps (m): the event location keeps it at rounding level.", 0.0, pen, 1e-12, pen <= 1e-12, Verdict::Confirmed));
-    let nv = fmax(&|s| s.violations.normal_n);
-    let cv = fmax(&|s| s.violations.cone_n);
-    let ps = vmax(&|s| s.violations.pivot_slip_mps);
-    // forces are located to the event tolerance and integrated to rtol: 1e-10 of the
-    // weight m g is far above both (measured ~1e-12)
-    v.push(Claim::judged("t1-pivot", "Table 1", "Pivot: h_c = 0, v_x = 0, F_z >= 0, |F_x| <= μ F_z. Largest violation at accepted pivot steps, in units of the weight m g (the simulator's guards enforce it).", 0.0, nv.max(cv), 1e-10, nv.max(cv) <= 1e-10 && ps == 0.0, Verdict::Confirmed));
+    // Each run is judged against its own bound (units of m g), from the two errors a
+    // force computed at an accepted step carries: the plate phase omega t is rounded to
+    // eps omega t, which moves the plate acceleration Gamma g cos(omega t) by up to
+    // eps omega t Gamma g (factor 3 measured for the force, 6 allowed); and the state the
+    // guard was located on (rod direction carried, integrated to rtol per step) differs
+    // from the canonical state the check reads by the integration error, rtol relative
+    // per step on forces of scale (1 + Gamma) m g (measured at most 1e-4 of it on random
+    // scenes for rtol 1e-6 .. 1e-2, where the step is capped by the drive period, and
+    // 0.05 at rtol 1e-10). So a run at a loose rtol gets a loose bound, never a failure.
+    let eps = f64::EPSILON;
+    let pivot_bound = |s: &RunSummary, q: &StickParams, rtol: f64| {
+        let g = q.gamma_accel();
+        let phase = 6.0 * eps * q.plate.omega_rad_s * s.end_time_s.abs() * g; // formula: 6 eps omega t Gamma
+        phase + (1.0 + g) * rtol // formula: + (1 + Gamma) rtol
+    };
+    let mut judged = vec![
+        (&ev.authors, &ev.params[0], EVIDENCE_RTOL),
+        (&ev.jamming, &ev.params[1], EVIDENCE_RTOL),
+    ];
+    if main_valid {
+        judged.push((c.main, c.p, c.rtol));
+    }
+    let (mut worst_ratio, mut worst_mg, mut slip) = (0.0f64, 0.0f64, 0.0f64);
+    for (s, q, rtol) in &judged {
+        let mg = q.mass_kg * q.g_mps2;
+        let viol = (s.violations.normal_n.max(s.violations.cone_n)) / mg;
+        worst_ratio = worst_ratio.max(viol / pivot_bound(s, q, *rtol));
+        worst_mg = worst_mg.max(viol);
+        slip = slip.max(s.violations.pivot_slip_mps);
+    }
+    v.push(Claim::judged("t1-pivot", "Table 1", &format!("Pivot: h_c = 0, v_x = 0, F_z >= 0, |F_x| <= μ F_z (the simulator's guards enforce it). Largest violation at accepted pivot steps over each run's bound, the force error of the step: 6 ε ω t Γ (the rounded plate phase) + (1 + Γ) rtol (the integration error on forces of scale (1 + Γ) m g), in units of m g (rtol {:e} here, 1e-10 for the evidence runs). Largest violation: {:.1e} m g.", c.rtol, worst_mg), 0.0, worst_ratio, 1.0, worst_ratio <= 1.0 && slip == 0.0, Verdict::Confirmed));
     // Table 1's v_x signs against the friction power: F_x = sigma mu F_z dissipates
     // (-F_x v_x >= 0) only if v_x has the sign -sigma; the simulated slides are checked
     for (i, id, name, sign) in [
@@ -304,21 +329,34 @@ fn table1(d: &Doc, c: &Ctx) -> Vec<Claim> {
         v.push(rule(id, "Table 1", &format!("{name}: h_c = 0, {printed} as printed, F_z >= 0, F_x = {} μ F_z. With that F_x the friction power -F_x v_x is a loss only if v_x {}: the fraction of simulated {name} samples with the printed sign of v_x (to 1e-9 m/s) must be 1.", if i == 0 { "+" } else { "-" }, if i == 0 { "< 0" } else { "> 0" }), json!(1.0), json!(frac(ok_doc, n)), "exact", n > 0 && ok_doc == n, n > 0 && ok_fix == n, Check::Simulation));
     }
     // Energy closure: every accepted step commits a local error below rtol relative to
-    // the state's scale plus atol absolute (rtol = atol = 1e-10 J on the energy
-    // accumulators), so the residual relative to the largest term S is bounded by
-    // (rtol + atol/S) x (accepted steps) when the errors add up without cancelling.
-    let runs = [&ev.authors, &ev.jamming].into_iter().chain(
-        (c.main.budget.relative_residual().is_finite()
-            && c.p.collision_angle == CollisionAngle::Actual)
-            .then_some(c.main),
-    );
-    let (mut worst, mut tol, mut within) = (0.0f64, f64::INFINITY, true);
-    for s in runs {
-        let bound = (1e-10 + 1e-10 / s.budget.scale_j()) * s.stats.accepted.max(1) as f64; // formula: (rtol + atol/S) n
-        within &= s.budget.relative_residual() <= bound;
+    // the state's scale plus atol absolute (rtol = atol on the energy accumulators), so
+    // the residual relative to the largest term S is bounded by (rtol + atol/S) x
+    // (accepted steps) when the errors add up without cancelling. The evidence runs use
+    // rtol 1e-10; this run its own rtol. A bound above 1e-2 of the budget says nothing
+    // (the error estimate itself is not asymptotic there): such a run is not judged,
+    // and the statement says so.
+    let bound_of = |s: &RunSummary, rtol: f64| {
+        (rtol + rtol / s.budget.scale_j()) * s.stats.accepted.max(1) as f64
+    }; // formula: (rtol + atol/S) n
+    let main_budget = c.main.budget.relative_residual().is_finite()
+        && c.p.collision_angle == CollisionAngle::Actual;
+    let main_bound = bound_of(c.main, c.rtol);
+    let main_judged = main_budget && main_bound <= 1e-2;
+    let runs = [(&ev.authors, EVIDENCE_RTOL), (&ev.jamming, EVIDENCE_RTOL)]
+        .into_iter()
+        .chain(main_judged.then_some((c.main, c.rtol)));
+    let (mut worst, mut ratio) = (0.0f64, 0.0f64);
+    for (s, rtol) in runs {
+        ratio = ratio.max(s.budget.relative_residual() / bound_of(s, rtol));
         worst = worst.max(s.budget.relative_residual());
-        tol = tol.min(bound);
     }
-    v.push(Claim::judged("c6-c14-energy-budget", "C.6 to C.14", "The simulated forces are consistent with the simulated motion: plate work = change of mechanical energy + friction + damper + impact losses over the evidence runs and this run (actual collision angle). Tolerance: (rtol + atol/S) x accepted steps of each run, rtol = atol = 1e-10 and S the largest term in J, the sum of the local error bounds (shown: the smallest run's).", 0.0, worst, tol, within && ev.authors.budget.friction_j > 0.0, Verdict::Confirmed));
+    let this_run = if main_judged {
+        format!("and this run (rtol {:e}, actual collision angle)", c.rtol)
+    } else if main_budget {
+        format!("; this run is not judged: at rtol {:e} its bound is {:.1e} of the largest term, above 1e-2, so the budget cannot be checked at this accuracy", c.rtol, main_bound)
+    } else {
+        "; this run is not judged (collision reset or no finite budget)".to_string()
+    };
+    v.push(Claim::judged("c6-c14-energy-budget", "C.6 to C.14", &format!("The simulated forces are consistent with the simulated motion: plate work = change of mechanical energy + friction + damper + impact losses over the evidence runs {this_run}. Each run's residual relative to its largest term S, over its bound (rtol + atol/S) x accepted steps (rtol = atol, 1e-10 for the evidence runs), the sum of the local error bounds; largest relative residual {worst:.1e}."), 0.0, ratio, 1.0, ratio <= 1.0 && ev.authors.budget.friction_j > 0.0, Verdict::Confirmed));
     v
 }

@@ -4,7 +4,7 @@
 
 use super::claims::{self, Ctx};
 use super::doc::{Doc, Test};
-use super::evidence::{collect, Evidence};
+use super::evidence::{collect, Evidence, EVIDENCE_RTOL};
 use crate::chapters::Context;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
@@ -19,7 +19,7 @@ fn evidence() -> &'static (Evidence, RunSummary, StickParams) {
     EV.get_or_init(|| {
         let opts = Options {
             method: Method::Dop853,
-            control: StepControl::tol(1e-10, 1e-10),
+            control: StepControl::tol(EVIDENCE_RTOL, EVIDENCE_RTOL),
             ..Options::default()
         };
         let ev = collect(&Context::headless(true), &opts);
@@ -31,10 +31,18 @@ fn evidence() -> &'static (Evidence, RunSummary, StickParams) {
 /// The claim `id` judged under `d` on the quick evidence.
 pub fn judge(id: &str, d: &Doc) -> Claim {
     let (ev, main, p) = evidence();
-    claims::all(d, &Ctx { ev, main, p })
-        .into_iter()
-        .find(|c| c.id == id)
-        .expect("the mutated claim exists")
+    claims::all(
+        d,
+        &Ctx {
+            ev,
+            main,
+            p,
+            rtol: EVIDENCE_RTOL,
+        },
+    )
+    .into_iter()
+    .find(|c| c.id == id)
+    .expect("the mutated claim exists")
 }
 
 fn m(id: &'static str, what: &'static str, f: fn(&mut Doc)) -> DocEdit<Doc> {
