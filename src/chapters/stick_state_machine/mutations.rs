@@ -175,11 +175,6 @@ pub fn all() -> Vec<Mutation> {
             d.last_assert_wins = false
         }),
         m(
-            "a2-slide-direction",
-            "F_x > 0 -> SLIDE RIGHT (transposed)",
-            |d| d.a2_left_if_fx_positive = false,
-        ),
-        m(
             "a2-tension-flight",
             "tension -> flight only if it lifts C",
             |d| d.a2_tension_flight = false,
@@ -198,26 +193,6 @@ pub fn all() -> Vec<Mutation> {
             |d| d.a2_test_before_assign = false,
         ),
         m(
-            "a3-hinge-continuous",
-            "hinge test only once the slip stopped",
-            |d| d.slide_hinge_while_slipping = false,
-        ),
-        m(
-            "a4-hinge-continuous",
-            "hinge test only once the slip stopped",
-            |d| d.slide_hinge_while_slipping = false,
-        ),
-        m(
-            "a3-other-slide-continuous",
-            "the same slide instead of the other",
-            |d| d.slide_to_other = false,
-        ),
-        m(
-            "a4-other-slide-continuous",
-            "the same slide instead of the other",
-            |d| d.slide_to_other = false,
-        ),
-        m(
             "a3-hinge-while-slipping",
             "hinge test only once the slip stopped",
             |d| d.slide_hinge_while_slipping = false,
@@ -226,16 +201,6 @@ pub fn all() -> Vec<Mutation> {
             "a4-hinge-while-slipping",
             "hinge test only once the slip stopped",
             |d| d.slide_hinge_while_slipping = false,
-        ),
-        m(
-            "a3-other-slide",
-            "the same slide instead of the other",
-            |d| d.slide_to_other = false,
-        ),
-        m(
-            "a4-other-slide",
-            "the same slide instead of the other",
-            |d| d.slide_to_other = false,
         ),
         m("a3-abort", "F_z <= 0 -> FLIGHT", |d| d.slide_abort = false),
         m("a4-abort", "F_z <= 0 -> FLIGHT", |d| d.slide_abort = false),
