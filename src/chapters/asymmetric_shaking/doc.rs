@@ -64,16 +64,11 @@ impl Doc {
 /// reversed, one per claim at least.
 pub fn mutations() -> Vec<Mutation> {
     type Edit = fn(&mut Doc);
-    let list: [(&'static str, &'static str, Edit); 15] = [
+    let list: Vec<(&'static str, &'static str, Edit)> = vec![
         (
             "linear-no-drift",
             "no drift -> a drift of 10 % of the mean stroke speed",
             |d| d.linear_drift_fraction = 0.1,
-        ),
-        (
-            "linear-average-force",
-            "F_ave = -c (v_obj - v_sup) -> -1.1 c (v_obj - v_sup)",
-            |d| d.linear_force_factor = 1.1,
         ),
         (
             "nonlinear-law-changes-result",

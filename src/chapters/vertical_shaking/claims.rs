@@ -51,11 +51,11 @@ pub fn flight_needs_gamma(scene: &Scene, doc: &Doc) -> Claim {
     Claim::exact(
         "flight-needs-gamma-above-1",
         "3.1.2",
-        "Flight needs a peak plate acceleration δ_z ω² > g: no take-off in 50 periods at Γ = 0.999, take-off at Γ = 1.001 (of the printed threshold).",
+        "Flight needs a peak plate acceleration δ_z ω² > g: no take-off in 50 periods at Γ = 0.999, take-off at Γ = 1.001 (of the printed threshold). Consistency check: the block model's take-off guard is the plate acceleration reaching -g, the stated inequality itself; no document could fail it here (issue 21), so it is not counted as confirmation.",
         "false, true",
         format!("{below}, {above}").as_str(),
     )
-    .with_check(Check::Simulation)
+    .with_check(Check::Consistency)
 }
 
 /// The take-off phase sin(omega t) = 1/Gamma (the workbook's derivation).
@@ -65,12 +65,12 @@ pub fn takeoff(scene: &Scene, takeoff_phase: f64, doc: &Doc) -> Claim {
     Claim::close(
         "takeoff-phase",
         "3.1.2 (derived)",
-        "The block leaves the plate when the plate's acceleration reaches -g: sin(ω t) = 1/Γ (first take-off from rest; located event; 1e-9 rad: event located to ~1e-13 rad).",
+        "The block leaves the plate when the plate's acceleration reaches -g: sin(ω t) = 1/Γ (first take-off from rest; located event; 1e-9 rad: event located to ~1e-13 rad). Consistency check: the located take-off is the zero of the model's guard g + z_s'' = 0, i.e. sin(ω t) = 1/Γ by construction; no document could fail it here (issue 21), so it is not counted as confirmation.",
         (doc.takeoff_factor / scene.gamma).asin(),
         takeoff_phase,
         1e-9,
     )
-    .with_check(Check::Simulation)
+    .with_check(Check::Consistency)
 }
 
 /// Contact fraction -> 0 and c -> 0 as omega grows at fixed delta_z: from the amplitude
@@ -163,14 +163,14 @@ pub fn sliding_contact(scene: &Scene, doc: &Doc) -> Claim {
     Claim::judged(
         "sliding-contact-full-friction",
         "3.1.2",
-        "If the block slides during contact, the average horizontal force is μ times the average vertical force m g (flights and impacts included): vertical vibration does not reduce sliding friction. Mean friction / (μ x mean normal force) of a block kept sliding over 60 periods (1e-9: round-off of closed-form phases and located events):",
+        "If the block slides during contact, the average horizontal force is μ times the average vertical force m g (flights and impacts included): vertical vibration does not reduce sliding friction. Mean friction / (μ x mean normal force) of a block kept sliding over 60 periods (1e-9: round-off of closed-form phases and located events): Consistency check: the model's sliding friction is μ N at every instant, so its averages are in ratio μ by construction; no document could fail it here (issue 21), so it is not counted as confirmation.",
         doc.sliding_factor,
         ratio,
         1e-9,
         always_slides && (ratio - doc.sliding_factor).abs() <= 1e-9,
         Verdict::Confirmed,
     )
-    .with_check(Check::Simulation)
+    .with_check(Check::Consistency)
 }
 
 /// Arbitrarily small forces move the block once Gamma > 1: three decades of force just
