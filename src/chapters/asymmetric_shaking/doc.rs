@@ -113,12 +113,28 @@ pub fn mutations() -> Vec<Mutation> {
             |d| d.slip_threshold = 3.0,
         ),
         (
+            "locomotion-needs-slip",
+            "mu g t_fast < v_slow + v_fast -> < 1.1 (v_slow + v_fast)",
+            |d| d.slip_threshold = 1.1,
+        ),
+        (
+            "locomotion-needs-slip",
+            "mu g t_fast < v_slow + v_fast -> < 0.9 (v_slow + v_fast)",
+            |d| d.slip_threshold = 0.9,
+        ),
+        (
             "biharmonic-always-slipping",
             "1 - pi^2/(2 Gamma^2) -> 1 - 1.1 pi^2/(2 Gamma^2)",
             |d| d.biharmonic_factor = 1.1,
         ),
         ("biharmonic-stuck", "Gamma_stick -> 1.5 Gamma_stick", |d| {
             d.stick_gamma_factor = 1.5
+        }),
+        ("biharmonic-stuck", "Gamma_stick -> 1.1 Gamma_stick", |d| {
+            d.stick_gamma_factor = 1.1
+        }),
+        ("biharmonic-stuck", "Gamma_stick -> 0.9 Gamma_stick", |d| {
+            d.stick_gamma_factor = 0.9
         }),
         (
             "drift-closed-form",

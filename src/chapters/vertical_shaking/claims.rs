@@ -96,6 +96,24 @@ pub fn fast_limits(scene: &Scene, quick: bool, doc: &Doc) -> (Claim, Claim) {
         fractions.push(stk.run.contact_fraction);
         cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
     }
+    // the viscous constant further out, where the law's windows (up to +-15 % of
+    // error, issue 21) weigh less against the change in c: to 64 x the frequency
+    for k in [16.0, 32.0] {
+        let s = Scene {
+            frequency_hz: k * base.frequency_hz,
+            gamma: base.gamma * k * k,
+            ..base
+        };
+        // a flight lasts ~ 2 v_z/g = Gamma/pi periods: the window holds 40 of them
+        let flight_periods = (s.gamma / PI).ceil() as usize;
+        let stk = run(
+            &s,
+            Model::Exact,
+            transient.max(5 * flight_periods),
+            (4 * observe).max(40 * flight_periods),
+        );
+        cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
+    }
     let last = fractions[fractions.len() - 1];
     // The document's own estimate: contact ~ pi/omega, flight ~ 2 v_z/g = 2 Gamma/omega,
     // so the fraction is below pi/(2 Gamma): the tolerance at the last Gamma (128).
@@ -117,23 +135,28 @@ pub fn fast_limits(scene: &Scene, quick: bool, doc: &Doc) -> (Claim, Claim) {
     )
     .with_check(Check::Simulation);
     // The document's law v_ave = F v_z/(m g) gives c = g/v_z ~ omega^(-1) at fixed
-    // delta_z: c falls by 8^-p over the factor 8. Tolerance 0.15 of it: the law is off by
-    // +14.4 % at Gamma = 2 (decomposition table) and < 1 % at Gamma = 128.
-    let ratio = cs[cs.len() - 1] / cs[0];
-    let expected = 8f64.powf(-doc.c_exponent); // formula: c_8/c_1 = 8^-p
-    let tol_c = 0.15 * expected;
+    // delta_z. The law itself is off by +14.4 % at Gamma = 2 and by up to 15 % in
+    // windows of Gamma in [10, 40] (issue 21), which bends the slope there (1/omega^1.1
+    // passed a test over 1 to 8 x); from Gamma = 128 on it is within 1 %. So the
+    // exponent is fitted between 8 and 32 x the frequency (Gamma = 128 and 2048):
+    // p = -ln(c_32/c_8)/ln 4, tolerance ln(1.01^2)/ln 4 = 0.0144 (1 % at either end);
+    // a law off by 10 % in the exponent is 0.1 away.
+    let ratio = cs[5] / cs[3];
+    let p_fit = -ratio.ln() / 4f64.ln(); // formula: p = -ln(c_32/c_8)/ln 4
+    let expected = doc.c_exponent;
+    let tol_c = (1.01f64 * 1.01).ln() / 4f64.ln();
     let viscous = Claim::judged(
         "viscous-constant-to-zero",
         "3.1.2",
         &format!(
-            "The effective viscous constant c = F/v_ave goes to zero as ω grows at fixed δ_z, as 1/ω by the document's law (c = g/v_z): c (1/s) from Γ = 2 at 1, 2, 4, 8 x the frequency = {}; ratio c_8/c_1 against 8^-1 (tolerance 0.15 of it: the law's error is +14.4 % at Γ = 2, < 1 % at Γ = 128).",
-            cs.iter().map(|c| format!("{c:.3}")).collect::<Vec<_>>().join(", ")
+            "The effective viscous constant c = F/v_ave goes to zero as ω grows at fixed δ_z, as 1/ω by the document's law (c = g/v_z): c (1/s) from Γ = 2 at 1, 2, 4, 8, 16, 32 x the frequency (Γ up to 2048, windows of 40 flights) = {}; the exponent p of c ~ ω^-p fitted between 8 and 32 x (Γ = 128 to 2048, where the law is within 1 %; below, its +14.4 % at Γ = 2 and windows of up to 15 % for Γ in [10, 40] bend the slope) against 1, tolerance ln(1.01²)/ln 4 = 0.0144.",
+            cs.iter().map(|c| format!("{c:.4}")).collect::<Vec<_>>().join(", ")
         ),
         expected,
-        ratio,
+        p_fit,
         tol_c,
         cs.windows(2).all(|w| w[1] < w[0]) == (doc.c_exponent > 0.0)
-            && (ratio - expected).abs() <= tol_c,
+            && (p_fit - expected).abs() <= tol_c,
         Verdict::Confirmed,
     )
     .with_check(Check::Simulation);

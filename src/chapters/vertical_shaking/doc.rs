@@ -119,6 +119,11 @@ pub fn mutations() -> Vec<Mutation> {
             |d| d.c_exponent = 2.0,
         ),
         (
+            "viscous-constant-to-zero",
+            "c ~ 1/omega -> 1/omega^1.1",
+            |d| d.c_exponent = 1.1,
+        ),
+        (
             "small-force-moves-block",
             "moves once delta omega^2 > g -> > 0.9 g",
             |d| d.flight_gamma_small_force = 0.9,
