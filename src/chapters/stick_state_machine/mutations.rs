@@ -118,6 +118,11 @@ pub fn all() -> Vec<Mutation> {
             "after collision theta = theta_0 + 0.01 rad",
             |d| d.reset_offset_rad = 0.01,
         ),
+        m(
+            "c15-theta-reset",
+            "after collision theta = 1.1 theta_0 (0.03 rad in the jamming scene, 0.043 in the authors')",
+            |d| d.reset_offset_rad = 0.03,
+        ),
         m("t1-slide-left", "Sliding Left v_x < 0 -> v_x > 0", |d| {
             d.t1_left_v = 1.0
         }),
