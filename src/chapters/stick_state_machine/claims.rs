@@ -172,6 +172,7 @@ fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
     let mut v = Vec::new();
     let (mut c8, mut c4, mut scale, mut n) = (0.0f64, 0.0f64, 0.0f64, 0usize);
     let (mut vx_rms, mut vz_rms, mut nl) = (0.0, 0.0, 0usize);
+    let mut c4_left = 0.0f64;
     for (run, q) in c.runs() {
         let m = StickModel::new(*q);
         let (mass, l, g, k, gam, mu) = (
@@ -204,6 +205,7 @@ fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
             scale = scale.max(mass * g * l);
             n += 1;
             if x.mode == Mode::SlideLeft {
+                c4_left = c4_left.max((zcdd - a_s).abs() / (g + a_s.abs()));
                 let [_, _, vxp, vzp] = m.tip(&x.y);
                 vx_rms += vxp * vxp;
                 vz_rms += vzp * vzp;
@@ -220,6 +222,21 @@ fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
         0.0
     };
     let vertical = ratio <= 1e-3;
+    // C.12: the sliding-left angle equation is not printed. Derived (the C.14 row with
+    // C.9's F_z: theta'' = ((z_s'' - z_p'')/L - theta'^2 cos)/sin), it keeps the foot on
+    // the plate (C.4: z_c'' = z_s'') at every slide-left sample: the C.4 residual.
+    let derived_ok = nl > 0 && c4_left <= 1e-9;
+    v.push(rule("c12-blank", "C.12", "As printed: \"from Eqns. C.10, C.4, thus\" is followed by nothing; C.12, the sliding-left angle equation, is blank, so the sliding-left mode cannot be integrated from the document. Correct: θ'' = (1/sin θ)((z_s'' - z_p'')/L - θ'² cos θ) with z_p'' = F_z/m - g and F_z from C.9 (C.14's angle row, for the left slide); with it the foot stays on the plate: the largest C.4 residual |z_c'' - z_s''|/(g + |z_s''|) at the slide-left samples of both scenes (below 1e-9).", json!("an equation"), json!(c4_left), "1e-9", d.c12_printed && derived_ok, derived_ok, Check::ClosedForm));
+    // Degrees of freedom: coordinates (x_c, z_c, theta) minus the mode's constraints
+    // (pivot: z_c = z_s and x_c' = 0; a slide: z_c = z_s only).
+    let dof = |constraints: usize| 3 - constraints; // formula: DOF = 3 - constraints
+    let (pivot_dof, slide_dof) = (dof(2), dof(1));
+    let stated = if d.pivot_two_dof {
+        pivot_dof
+    } else {
+        slide_dof
+    };
+    v.push(rule("s43-two-dof-mode", "4.3", &format!("As printed (Sliding Left): \"Thus in the pivot mode the system has two degrees of freedom, i.e., it can slide as well as change its angle\". Correct: the sliding mode has two (x_c and θ: 3 coordinates less the one constraint z_c = z_s); the pivot has one ({pivot_dof}: x_c' = 0 too), as section 4.2 itself says: the sentence names the wrong mode. Degrees of freedom of the mode the sentence names."), json!(2), json!(stated), "exact", stated == 2, slide_dof == 2 && pivot_dof == 1, Check::ClosedForm));
     v.push(rule("s43-p-moves-vertically", "4.3", "As printed (Sliding Left): \"C is constrained to be on the platform but moves to the left while the point P moves down vertically\". Correct: P is accelerated sideways by the friction force, x_p'' = μ F_z/m (C.10): P does not move vertically. RMS of x_p' over RMS of z_p' at the slide-left samples (vertical: below 1e-3).", json!(0.0), json!(ratio), "1e-3", if d.s43_p_vertical { vertical } else { !vertical }, nl > 0 && !vertical, Check::Simulation));
     v
 }

@@ -100,6 +100,12 @@ pub fn all() -> Vec<Mutation> {
             "C.14 -theta'^2 cos -> +theta'^2 cos",
             |d| d.c14_w2 = 1.0,
         ),
+        m("c12-blank", "C.12 printed (the derived equation)", |d| {
+            d.c12_printed = true
+        }),
+        m("s43-two-dof-mode", "the sentence names the sliding mode", |d| {
+            d.pivot_two_dof = false
+        }),
         m(
             "s43-p-moves-vertically",
             "P does not move vertically",
