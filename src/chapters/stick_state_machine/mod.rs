@@ -511,7 +511,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
             // of order 1/theta and the order-8 pair's stages overflow where DOPRI5's
             // smaller steps do not (measured at theta_0 = 1e-6: DOP853 NaN at 0.029 s,
             // DOPRI5 completes and agrees with a time-stepping run)
-            why.push_str("; the rod leans less than 1e-3 rad, where the slides' C.14 divides by sin(theta): --method dopri5 integrates this scene");
+            why.push_str("; the rod leans less than 1e-3 rad, where the slides' C.14 divides by sin(θ): --method dopri5 integrates this scene");
         }
     }
     let reason = match &main.outcome {

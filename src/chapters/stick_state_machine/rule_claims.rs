@@ -364,7 +364,7 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
         }
     };
     let keeps = ps.iter().filter(|s| hinge(s, d.a2_hinge_lt)).count();
-    v.push(rule("a2-hinge-test", "Alg. 2", "As printed: if μ F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= μ F_z (inside the cone), as the authors' code has it (fsm.m, STRIKE_0: 'if abs(Fx) < mu*Fy nextPhase = HINGE'; STUCK: 'mu*Fy >= abs(Fx)'). Evidence: closed form, the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2), not samples the simulator's own guard selected. Fraction of it at which the stated test chooses HINGE (must be 1).", json!(1.0), json!(frac(keeps, n)), "exact", n > 0 && keeps == n, n > 0, Check::ClosedForm));
+    v.push(rule("a2-hinge-test", "Alg. 2", "As printed: if μ F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= μ F_z (inside the cone), as the authors' code has it (fsm.m, STRIKE_0: |F_x| < μ F_y -> HINGE; STUCK: μ F_y >= |F_x| -> HINGE). Evidence: closed form, the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2), not samples the simulator's own guard selected. Fraction of it at which the stated test chooses HINGE (must be 1).", json!(1.0), json!(frac(keeps, n)), "exact", n > 0 && keeps == n, n > 0, Check::ClosedForm));
     // the block "if hinge then HINGE; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT", executed
     let mut ends_hinge = 0usize;
     for s in &ps {
@@ -383,7 +383,7 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
         }
         ends_hinge += usize::from(next == Some(Mode::Pivot));
     }
-    v.push(rule("a2-slide-overrides-hinge", "Alg. 2", &format!("As printed: 'if μ F_z < |F_x| then HINGE end if; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT': two separate ifs. Read as assignments (the last wins: {}), the slide choice overwrites HINGE every time. The authors' code decides the reading: fsm.m (STRIKE_0) has one chain, 'if abs(Fx) < mu*Fy HINGE elseif Fx > 0 SLIDE_NEG else SLIDE_POS': the slide choice is the else branch, lost in print. The printed block executed with the corrected hinge test on the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2): fraction ending in HINGE (must be 1).", d.last_assert_wins), json!(1.0), json!(frac(ends_hinge, n)), "exact", n > 0 && ends_hinge == n, n > 0, Check::LiteralExecution));
+    v.push(rule("a2-slide-overrides-hinge", "Alg. 2", &format!("As printed: 'if μ F_z < |F_x| then HINGE end if; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT': two separate ifs. Read as assignments (the last wins: {}), the slide choice overwrites HINGE every time. The authors' code decides the reading: fsm.m (STRIKE_0) has one chain, if |F_x| < μ F_y HINGE, elseif F_x > 0 SLIDE_NEG, else SLIDE_POS: the slide choice is the else branch, lost in print. The printed block executed with the corrected hinge test on the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2): fraction ending in HINGE (must be 1).", d.last_assert_wins), json!(1.0), json!(frac(ends_hinge, n)), "exact", n > 0 && ends_hinge == n, n > 0, Check::LiteralExecution));
     // F_x > 0 -> SLIDE LEFT at the pivot exits of both scenes
     let (mut agree, mut exits) = (0usize, 0usize);
     for (run, q) in c.runs() {

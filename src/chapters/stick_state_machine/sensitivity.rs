@@ -33,7 +33,7 @@ pub fn start_note(r: &mut ChapterReport, p: &StickParams, start: Start) {
             r.result(
                 "start_note",
                 format!(
-                    "no static angle: the spring (k = {} N m/rad) cannot hold the weight's moment m g L sin(theta) at any angle near theta_0, so --start static starts at rest at theta_0 = {} rad instead",
+                    "no static angle: the spring (k = {} N m/rad) cannot hold the weight's moment m g L sin(θ) at any angle near θ₀, so --start static starts at rest at θ₀ = {} rad instead",
                     p.stiffness_nm_per_rad, p.theta0_rad
                 ),
             );
