@@ -50,6 +50,8 @@ struct Case {
     label: &'static str,
     media: Vec<V2>,
     object: V2,
+    /// Moved by a force from outside the environment (a tow rope): dragging.
+    dragged: bool,
     expected: bool,
 }
 
@@ -60,6 +62,7 @@ fn sailing_cases() -> Vec<Case> {
         label,
         media: vec![WIND, WATER],
         object,
+        dragged: false,
         expected,
     };
     vec![
@@ -69,9 +72,14 @@ fn sailing_cases() -> Vec<Case> {
         sail("reaching", "Crosswind sailing ('reaching', 3 m/s across the wind) is locomotion.", "reaching", [0.0, 3.0], true),
         sail("upwind", "Sailing upwind, directly into the wind (2 m/s against it), is locomotion.", "upwind", [-2.0, 0.0], true),
         sail("seaweed-with-wind", "Seaweed dragged with the wind (moving at the wind's velocity) is not locomotion.", "", WIND, false),
-        Case { id: "one-medium-nonzero", statement: "With one medium (water moving at (1, -2) m/s), any nonzero velocity relative to it is locomotion (here a relative velocity of 2^-40 m/s).", label: "", media: vec![[1.0, -2.0]], object: [1.0 + 2f64.powi(-40), -2.0], expected: true },
-        Case { id: "one-medium-riding", statement: "With one medium, moving with it (zero relative velocity) is not locomotion.", label: "", media: vec![[1.0, -2.0]], object: [1.0, -2.0], expected: false },
-        Case { id: "motorboat-still-water", statement: "A motorboat on still water (one medium at rest) moving at 4 m/s is locomoting.", label: "", media: vec![WATER], object: [4.0, 0.0], expected: true },
+        // Section 1: "Motion caused by an external force from outside the environment is
+        // not locomotion. A motorboat on water is locomoting; the water skier dragged
+        // behind is not." The skier's velocity (the boat's, 10 m/s) lies outside the hull
+        // of the one medium (still water) as the motorboat's does: the hull test is
+        // necessary, not sufficient; the outside force decides.
+        Case { id: "water-skier-dragged", statement: "The water skier dragged behind a motorboat (10 m/s on still water, moved by the tow rope: a force from outside the environment) is not locomotion, though the skier's velocity lies outside the hull of the media velocities as the boat's does: the hull test is necessary, not sufficient (the document's definition, run with the outside force as an input).", label: "", media: vec![WATER], object: [10.0, 0.0], dragged: true, expected: false },
+        Case { id: "one-medium-riding", statement: "With one medium, moving with it (zero relative velocity) is not locomotion.", label: "", media: vec![[1.0, -2.0]], object: [1.0, -2.0], dragged: false, expected: false },
+        Case { id: "motorboat-still-water", statement: "A motorboat on still water (one medium at rest) moving at 4 m/s is locomoting.", label: "", media: vec![WATER], object: [4.0, 0.0], dragged: false, expected: true },
     ]
 }
 
@@ -85,17 +93,25 @@ pub enum Rule {
     OutsideOrOnHull,
     /// A wrong variant: faster than every medium (speed above the largest medium speed).
     FasterThanMedia,
+    /// A wrong variant: the hull test alone, dragging by an outside force ignored.
+    HullOnly,
 }
 
 impl Rule {
-    /// Whether `object` is locomotion among `media` under this rule.
-    pub fn is_locomotion(self, object: V2, media: &[V2]) -> bool {
+    /// Whether `object` is locomotion among `media` under this rule, for an object
+    /// moved by its own means or by the media (`dragged = false`) or by a force from
+    /// outside the environment (`dragged = true`: section 1, "Dragging is not
+    /// locomotion").
+    pub fn is_locomotion(self, object: V2, media: &[V2], dragged: bool) -> bool {
         match self {
-            Rule::OutsideHull => is_locomotion(object, media),
-            Rule::OutsideOrOnHull => classify(&hull(media), object) != Position::Interior,
+            Rule::OutsideHull => !dragged && is_locomotion(object, media),
+            Rule::HullOnly => is_locomotion(object, media),
+            Rule::OutsideOrOnHull => {
+                !dragged && classify(&hull(media), object) != Position::Interior
+            }
             Rule::FasterThanMedia => {
                 let speed = |v: V2| v[0].hypot(v[1]);
-                media.iter().all(|&m| speed(object) > speed(m))
+                !dragged && media.iter().all(|&m| speed(object) > speed(m))
             }
         }
     }
@@ -136,7 +152,7 @@ pub fn claims(doc: &Doc) -> Vec<Claim> {
                 "1, sailing as locomotion",
                 c.statement,
                 said,
-                doc.rule.is_locomotion(c.object, &c.media),
+                doc.rule.is_locomotion(c.object, &c.media, c.dragged),
             )
             .with_check(Check::LiteralExecution),
         );
@@ -151,7 +167,7 @@ pub fn claims(doc: &Doc) -> Vec<Claim> {
                 s * WIND[0] + (1.0 - s) * WATER[0],
                 s * WIND[1] + (1.0 - s) * WATER[1],
             ];
-            !doc.rule.is_locomotion(v, &[WIND, WATER])
+            !doc.rule.is_locomotion(v, &[WIND, WATER], false)
         })
         .count() as u64;
     out.push(Claim::exact("convex-combination", "1, sailing as locomotion", "Every v = s v1 + (1 - s) v2 with 0 <= s <= 1 is in the hull (not locomotion): count of the values s = k/64 classified as not locomotion, out of 65.", k_max + 1, inside).with_check(Check::LiteralExecution));
@@ -163,7 +179,7 @@ pub fn claims(doc: &Doc) -> Vec<Claim> {
     ];
     let ok = three
         .iter()
-        .all(|&(v, loco)| doc.rule.is_locomotion(v, &tri) == loco);
+        .all(|&(v, loco)| doc.rule.is_locomotion(v, &tri, false) == loco);
     out.push(Claim::exact("three-media", "1, multiple media", "With three media (a triangle of velocities) a velocity inside or on an edge is not locomotion, one 2^-50 m/s beyond the edge is (interior, boundary, outside found exactly).", true, ok).with_check(Check::LiteralExecution));
     out
 }
@@ -429,6 +445,11 @@ pub fn mutations() -> Vec<Mutation> {
         "reaching",
         Rule::FasterThanMedia,
         "locomotion = faster than every medium",
+    ));
+    m.push(with_rule(
+        "water-skier-dragged",
+        Rule::HullOnly,
+        "the hull test alone (dragging by an outside force ignored)",
     ));
     m.push(with_rule(
         "three-media",

@@ -159,6 +159,12 @@ pub struct Claim {
     /// The kind of evidence behind the verdict (set with [`Claim::with_check`]; a
     /// claim whose kind was never stated counts as [`Check::Consistency`]).
     pub check: Check,
+    /// Id of another claim of the same chapter whose numbers and finding this one
+    /// shares (two algorithms printing the same line, judged on the same events): an
+    /// erratum counted once among the distinct errata (set with
+    /// [`Claim::same_finding_as`]; not in JSON, the statement says so).
+    #[serde(skip)]
+    pub same_as: Option<String>,
 }
 
 impl Claim {
@@ -191,7 +197,15 @@ impl Claim {
                 Verdict::Failed
             },
             check: Check::Consistency,
+            same_as: None,
         }
+    }
+
+    /// The claim marked as sharing its numbers and finding with claim `id` (see
+    /// [`Claim::same_as`]).
+    pub fn same_finding_as(mut self, id: &str) -> Claim {
+        self.same_as = Some(id.to_string());
+        self
     }
 
     /// The claim with its kind of evidence stated.
@@ -343,6 +357,21 @@ impl ChapterReport {
     /// True when some claim failed (exit code 1).
     pub fn has_failures(&self) -> bool {
         self.count(Verdict::Failed) > 0
+    }
+
+    /// Distinct errata: the errata, each claim that shares its finding with another
+    /// erratum of the chapter ([`Claim::same_as`]) counted once.
+    pub fn distinct_errata(&self) -> usize {
+        let erratum = |id: &str| {
+            self.claims
+                .iter()
+                .any(|c| c.id == id && c.verdict == Verdict::Erratum)
+        };
+        self.claims
+            .iter()
+            .filter(|c| c.verdict == Verdict::Erratum)
+            .filter(|c| !c.same_as.as_deref().is_some_and(erratum))
+            .count()
     }
 
     /// Number of claims whose evidence is of kind `kind`.

@@ -64,16 +64,11 @@ impl Doc {
 /// reversed, one per claim at least.
 pub fn mutations() -> Vec<Mutation> {
     type Edit = fn(&mut Doc);
-    let list: [(&'static str, &'static str, Edit); 15] = [
+    let list: Vec<(&'static str, &'static str, Edit)> = vec![
         (
             "linear-no-drift",
             "no drift -> a drift of 10 % of the mean stroke speed",
             |d| d.linear_drift_fraction = 0.1,
-        ),
-        (
-            "linear-average-force",
-            "F_ave = -c (v_obj - v_sup) -> -1.1 c (v_obj - v_sup)",
-            |d| d.linear_force_factor = 1.1,
         ),
         (
             "nonlinear-law-changes-result",
@@ -118,12 +113,28 @@ pub fn mutations() -> Vec<Mutation> {
             |d| d.slip_threshold = 3.0,
         ),
         (
+            "locomotion-needs-slip",
+            "mu g t_fast < v_slow + v_fast -> < 1.1 (v_slow + v_fast)",
+            |d| d.slip_threshold = 1.1,
+        ),
+        (
+            "locomotion-needs-slip",
+            "mu g t_fast < v_slow + v_fast -> < 0.9 (v_slow + v_fast)",
+            |d| d.slip_threshold = 0.9,
+        ),
+        (
             "biharmonic-always-slipping",
             "1 - pi^2/(2 Gamma^2) -> 1 - 1.1 pi^2/(2 Gamma^2)",
             |d| d.biharmonic_factor = 1.1,
         ),
         ("biharmonic-stuck", "Gamma_stick -> 1.5 Gamma_stick", |d| {
             d.stick_gamma_factor = 1.5
+        }),
+        ("biharmonic-stuck", "Gamma_stick -> 1.1 Gamma_stick", |d| {
+            d.stick_gamma_factor = 1.1
+        }),
+        ("biharmonic-stuck", "Gamma_stick -> 0.9 Gamma_stick", |d| {
+            d.stick_gamma_factor = 0.9
         }),
         (
             "drift-closed-form",

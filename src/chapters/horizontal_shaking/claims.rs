@@ -121,12 +121,7 @@ impl Doc {
 /// where the statement has slack), the direction reversed.
 pub fn mutations() -> Vec<Mutation> {
     type Edit = fn(&mut Doc);
-    let list: [(&'static str, &'static str, Edit); 7] = [
-        (
-            "non-sliding-needs-mu-g",
-            "mu g >= |a_support| -> 0.9 mu g >= |a_support|",
-            |d| d.stick_factor = 0.9,
-        ),
+    let list: Vec<(&'static str, &'static str, Edit)> = vec![
         (
             "fast-shaking-zero-mean-friction",
             "mean friction -> 0 replaced by -> 0.05 mu m g",
@@ -143,19 +138,9 @@ pub fn mutations() -> Vec<Mutation> {
             |d| d.arcsin_factor = 1.1,
         ),
         (
-            "booktop-slip-tilt-arctan-mu",
-            "arctan(mu) -> arctan(1.1 mu)",
-            |d| d.tilt_factor = 1.1,
-        ),
-        (
             "booktop-slides-at-small-tilt",
             "slides down the tilt -> up the tilt",
             |d| d.slides_down = false,
-        ),
-        (
-            "booktop-slip-tilt-arctan-mu",
-            "arctan(mu) -> arctan(0.9 mu)",
-            |d| d.tilt_factor = 0.9,
         ),
     ];
     Mutation::from_edits(Doc::PRINTED, list, |id, d| {
@@ -205,13 +190,13 @@ pub fn add(
     r.claim(Claim::judged(
         "non-sliding-needs-mu-g",
         "3.1.1",
-        "Non-sliding (v_rel = 0) can only occur while μ g >= |δₓ ω² sin(ω t)| (no bias force): largest |a_support|/(μ g) over every sticking instant of exact runs at Γₓ = 0.5, 0.9, 1.5 and the chapter's.",
+        "Non-sliding (v_rel = 0) can only occur while μ g >= |δₓ ω² sin(ω t)| (no bias force): largest |a_support|/(μ g) over every sticking instant of exact runs at Γₓ = 0.5, 0.9, 1.5 and the chapter's. Consistency check: the block model sticks exactly while |a_support| <= μ g (its own guard), so the sticking instants satisfy the inequality by construction; no document could fail it here (issue 21), so it is not counted as confirmation.",
         k,
         worst,
         "<= k (1 + 1e-9): events located to ulps",
         sticks > 0 && worst <= k * (1.0 + 1e-9),
         Verdict::Confirmed,
-    ).with_check(Check::Simulation));
+    ).with_check(Check::Consistency));
 
     // 2. The mean friction at a given object velocity tends to zero for fast shaking.
     let v_target = 0.1 * scene.velocity_amplitude_mps();
@@ -321,11 +306,11 @@ pub fn add(
     r.claim(Claim::close(
         "booktop-slip-tilt-arctan-mu",
         "3.1.1 booktop",
-        &format!("The tilt needed for the coin to slip on a still book is arctan(μ) (about 20 deg for μ = 0.36; here {atan:.2} deg): bisection on the model's stick/slip outcome (60 halvings of 90 deg: bracket ~1e-16 deg; 1e-9 deg allows the rounding of tan at the threshold)."),
+        &format!("The tilt needed for the coin to slip on a still book is arctan(μ) (about 20 deg for μ = 0.36; here {atan:.2} deg): bisection on the model's stick/slip outcome (60 halvings of 90 deg: bracket ~1e-16 deg; 1e-9 deg allows the rounding of tan at the threshold). Consistency check: the model's stick test on a still tilted book is tan(tilt) <= μ, so the bisection returns arctan(μ) by construction; no document could fail it here (issue 21), so it is not counted as confirmation."),
         atan,
         tilt,
         1e-9,
-    ).with_check(Check::Simulation));
+    ).with_check(Check::Consistency));
 
     // 6. Booktop: shaken hard enough, the coin slides at a tilt well below arctan(mu).
     // On the book the friction must supply a_p - b mu g' with |a_p| <= delta omega^2, so

@@ -61,6 +61,11 @@ pub struct Doc {
     pub reset_offset_rad: f64,
     /// Section 4.3: in sliding left "the point P moves down vertically" (true).
     pub s43_p_vertical: bool,
+    /// C.12 (the sliding-left angle equation) printed (`false`: blank, as printed).
+    pub c12_printed: bool,
+    /// Section 4.3 (Sliding Left): "in the pivot mode the system has two degrees of
+    /// freedom" (`true`, as printed; `false`: the sentence names the sliding mode).
+    pub pivot_two_dof: bool,
     /// Table 1, Sliding Left: the sign of `v_x` (printed -1, `v_x < 0`).
     pub t1_left_v: f64,
     /// Table 1, Sliding Right: the sign of `v_x` (printed -1, `v_x < 0`).
@@ -131,6 +136,8 @@ impl Doc {
         c15_axis: [0.0, 0.0, 1.0],
         reset_offset_rad: 0.0,
         s43_p_vertical: true,
+        c12_printed: false,
+        pivot_two_dof: true,
         t1_left_v: -1.0,
         t1_right_v: -1.0,
         a1_right: Test {

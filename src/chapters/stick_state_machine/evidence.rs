@@ -32,6 +32,9 @@ pub struct Evidence {
     pub duration_s: f64,
 }
 
+/// Relative (= absolute) tolerance of the traced evidence runs.
+pub const EVIDENCE_RTOL: f64 = 1e-10;
+
 /// Runs the evidence (a few tenths of a second in release).
 pub fn collect(ctx: &Context, opts: &Options) -> Evidence {
     let pa = scene_params(Scene::Authors, ctx.g_mps2);
@@ -43,7 +46,7 @@ pub fn collect(ctx: &Context, opts: &Options) -> Evidence {
         check_invariants: true,
     };
     let tight = Options {
-        control: StepControl::tol(1e-10, 1e-10),
+        control: StepControl::tol(EVIDENCE_RTOL, EVIDENCE_RTOL),
         ..*opts
     };
     let loose = Options {

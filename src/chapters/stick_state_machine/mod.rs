@@ -21,6 +21,7 @@ pub mod poincare;
 mod printed_table;
 mod rule_claims;
 pub mod saltation;
+mod sensitivity;
 mod slide_rules;
 
 use super::Context;
@@ -503,6 +504,12 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     for (key, value) in main_run::results(&mut main, &p, &fired) {
         r.result(key, value);
     }
+    sensitivity::start_note(&mut r, &p, args.start);
+    if args.rules == Rules::Physical {
+        sensitivity::tolerance_sensitivity(
+            &mut r, &p, args.start, dur, &opts, args.rtol, &physical,
+        );
+    }
 
     // The evidence runs are the document's two scenes with the document's values, g
     // included (10 and 9.81 m/s^2): like every other physical flag, --g-mps2 sets this
@@ -516,7 +523,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
         "evidence_g_mps2",
         json!({"authors": ev.params[0].g_mps2, "jamming": ev.params[1].g_mps2}),
     );
-    claims::add_all(&mut r, &ev, &physical, &p);
+    claims::add_all(&mut r, &ev, &physical, &p, args.rtol);
     cycle_report::add(&mut r, &ev, &p); // the gait as a limit cycle (course section)
     r.table("stick-scenes", evidence::scenes_table(&ev));
     r.table(

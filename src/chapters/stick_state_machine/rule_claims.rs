@@ -92,19 +92,17 @@ pub fn all(d: &Doc, c: &Ctx) -> Vec<Claim> {
     v
 }
 
-/// Pivot samples of the evidence strictly inside the cone: `(model, t, state, F_x, F_z)`.
-/// Samples on the cone's edge to 1e-9 m g (the located exits, where both choices are
-/// right to rounding) are left out.
-fn pivot_samples(c: &Ctx) -> Vec<(StickModel, f64, State, f64, f64)> {
+/// Contact forces `(mu, F_x, F_z)` strictly inside the friction cone, drawn by a closed
+/// form rather than selected from the simulation: F_z = 1 N, F_x = s mu F_z for
+/// s = -0.95, -0.9, ..., 0.95, at mu = 0.1, 0.4, 1 and 2. A test of a pivot's exit must
+/// fire at none of them (the contact holds there); that a test fires at all of them is
+/// algebra, not simulation.
+fn cone_interior() -> Vec<(f64, f64, f64)> {
     let mut v = Vec::new();
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
-        let margin = 1e-9 * q.mass_kg * q.g_mps2;
-        for x in run.trace.iter().filter(|x| x.mode == Mode::Pivot) {
-            let f = m.pivot_eval(x.t_s, &x.y);
-            if f.fx.abs() <= q.mu * f.fz - margin {
-                v.push((m, x.t_s, x.y, f.fx, f.fz));
-            }
+    for mu in [0.1, 0.4, 1.0, 2.0] {
+        for k in -19..=19 {
+            let s = 0.05 * k as f64;
+            v.push((mu, s * mu, 1.0));
         }
     }
     v
@@ -119,10 +117,10 @@ fn frac(a: usize, b: usize) -> f64 {
 }
 
 fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
-    let ps = pivot_samples(c);
-    let n = ps.len();
+    let cone = cone_interior();
+    let n = cone.len();
     let mut v = Vec::new();
-    let reading = "Read at the pivot samples of both scenes, where the contact conditions keep the pivot (the reaction inside the cone): a correct slide or flight test fires at none.";
+    let reading = "Evidence: closed form (the cone's interior, |F_x| = s μ F_z with |s| <= 0.95, μ = 0.1 to 2, where the pivot holds and a correct exit test fires at none) and the authors' code as tie-breaker of the reading (toshankarghosh/toothpicks, Event_Hinge.m: the event functions F_y, μ F_y - F_x, μ F_y + F_x are 'positive while the constraint holds' and fsm.m switches to SLIDE_NEG, SLIDE_POS, FLIGHT when one falls through zero): the printed algorithm lost the event dispatch and copied the holding condition as the if-condition.";
     for (id, test, printed, fix) in [
         (
             "a1-slide-right-test",
@@ -137,20 +135,20 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
             "μ F_z - F_x < 0 (F_x above the cone)",
         ),
     ] {
-        let fires = ps.iter().filter(|s| test.fires(s.0.p.mu, s.3, s.4)).count();
-        v.push(rule(id, "Alg. 1", &format!("As printed: if {printed}. Correct: {fix}. {reading} Fraction of pivot samples at which the stated test fires."), json!(0.0), json!(frac(fires, n)), "0", n > 0 && fires == 0, n > 0, Check::Simulation));
+        let fires = cone.iter().filter(|s| test.fires(s.0, s.1, s.2)).count();
+        v.push(rule(id, "Alg. 1", &format!("As printed: if {printed}. Correct: {fix}. {reading} Fraction of the cone's interior at which the stated test fires."), json!(0.0), json!(frac(fires, n)), "0", n > 0 && fires == 0, n > 0, Check::ClosedForm));
     }
-    let fires = ps
+    let fires = cone
         .iter()
         .filter(|s| {
             if d.a1_flight_positive {
-                s.4 > 0.0
+                s.2 > 0.0
             } else {
-                s.4 < 0.0
+                s.2 < 0.0
             }
         })
         .count();
-    v.push(rule("a1-flight-test", "Alg. 1", &format!("As printed: if F_z > 0 -> FLIGHT. Correct: lift off when F_z < 0 (a tensile reaction), and only if the flight moves C away from the plate. {reading} Fraction of pivot samples at which the stated test fires."), json!(0.0), json!(frac(fires, n)), "0", n > 0 && fires == 0, n > 0, Check::Simulation));
+    v.push(rule("a1-flight-test", "Alg. 1", &format!("As printed: if F_z > 0 -> FLIGHT. Correct: lift off when F_z < 0 (a tensile reaction), and only if the flight moves C away from the plate. {reading} Fraction of the cone's interior (F_z > 0) at which the stated test fires."), json!(0.0), json!(frac(fires, n)), "0", n > 0 && fires == 0, n > 0, Check::ClosedForm));
     v.push(alg1_on_violation(d, c));
     // a vertical stick at rest on a plate with Gamma = 0.5: F_z = m (g + z_s''), F_x = 0
     let mut q = c.ev.params[0];
@@ -167,7 +165,7 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
     }
     // closed form and pivot_eval agree to rounding of m g ~ 10 N: 1e-12 N
     let pivot_ok = dev <= 1e-12 && fz_min > 0.0;
-    v.push(rule("a1-vertical-flight", "Alg. 1", "As printed: with |θ| = 0 (and μ F_z + F_x > 0) the HINGE goes to FLIGHT. Correct: a vertical stick on a plate is an ordinary pivot: F_z = m (g + z_s'') > 0 and F_x = 0 while the plate's acceleration stays below g; only the slides are singular there (C.14). Smallest pivot normal force (N) over a cycle of a vertical stick on a plate at Γ = 0.5 (closed form and pivot equations agree to 1e-12 N).", json!("F_z > 0: pivot"), json!(fz_min), "sign", !d.a1_vertical_flight && pivot_ok, pivot_ok, Check::ClosedForm));
+    v.push(rule("a1-vertical-flight", "Alg. 1", "As printed: with |θ| = 0 (and μ F_z + F_x > 0) the HINGE goes to FLIGHT. What the line is for (the authors' code, fsm.m, HINGE, case SLIP_POS: 'if abs(th) < 1e-9 nextPhase = FLIGHT', commented 'to take care of the 1/sin(th) singularity'): a numerical escape taken at a slip exit near the vertical, where the slide's C.14 divides by sin(θ). As a rule of the dynamics, which is how the document prints it, it is wrong: a vertical stick on a plate is an ordinary pivot, F_z = m (g + z_s'') > 0 and F_x = 0 while the plate's acceleration stays below g, and a compressive contact cannot start a flight; only the slides are singular there (the workbook stops such a run as invalid, C.14). Smallest pivot normal force (N) over a cycle of a vertical stick on a plate at Γ = 0.5 (closed form and pivot equations agree to 1e-12 N).", json!("F_z > 0: pivot"), json!(fz_min), "sign", !d.a1_vertical_flight && pivot_ok, pivot_ok, Check::ClosedForm));
     let (mut fires, mut fires_fix, mut total) = (0usize, 0usize, 0usize);
     for (run, q) in c.runs() {
         let m = StickModel::new(*q);
@@ -354,11 +352,11 @@ fn free_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
 
 /// Alg. 2's hinge-forces branch.
 fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
-    let ps = pivot_samples(c);
+    let ps = cone_interior();
     let n = ps.len();
     let mut v = Vec::new();
-    let hinge = |s: &(StickModel, f64, State, f64, f64), lt: bool| {
-        let (mu, fx, fz) = (s.0.p.mu, s.3, s.4);
+    let hinge = |s: &(f64, f64, f64), lt: bool| {
+        let (mu, fx, fz) = *s;
         if lt {
             mu * fz < fx.abs()
         } else {
@@ -366,7 +364,7 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
         }
     };
     let keeps = ps.iter().filter(|s| hinge(s, d.a2_hinge_lt)).count();
-    v.push(rule("a2-hinge-test", "Alg. 2", "As printed: if μ F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= μ F_z (inside the cone). Fraction of pivot samples (where the contact conditions keep the pivot) at which the stated test chooses HINGE (must be 1).", json!(1.0), json!(frac(keeps, n)), "exact", n > 0 && keeps == n, n > 0, Check::Simulation));
+    v.push(rule("a2-hinge-test", "Alg. 2", "As printed: if μ F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= μ F_z (inside the cone), as the authors' code has it (fsm.m, STRIKE_0: |F_x| < μ F_y -> HINGE; STUCK: μ F_y >= |F_x| -> HINGE). Evidence: closed form, the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2), not samples the simulator's own guard selected. Fraction of it at which the stated test chooses HINGE (must be 1).", json!(1.0), json!(frac(keeps, n)), "exact", n > 0 && keeps == n, n > 0, Check::ClosedForm));
     // the block "if hinge then HINGE; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT", executed
     let mut ends_hinge = 0usize;
     for s in &ps {
@@ -377,7 +375,7 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
         }
         let open = d.last_assert_wins || next.is_none();
         if open && (!d.a2_slide_is_else || !h) {
-            next = Some(if s.3 > 0.0 {
+            next = Some(if s.1 > 0.0 {
                 Mode::SlideLeft
             } else {
                 Mode::SlideRight
@@ -385,7 +383,7 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
         }
         ends_hinge += usize::from(next == Some(Mode::Pivot));
     }
-    v.push(rule("a2-slide-overrides-hinge", "Alg. 2", &format!("As printed: 'if μ F_z < |F_x| then HINGE end if; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT': two separate ifs. Read as assignments (the last wins: {}), the slide choice overwrites HINGE every time; read as returns, or with the slide choice as the else branch, HINGE stands. Fraction of pivot samples at which the block, executed with the corrected hinge test, ends in HINGE (must be 1).", d.last_assert_wins), json!(1.0), json!(frac(ends_hinge, n)), "exact", n > 0 && ends_hinge == n, n > 0, Check::LiteralExecution));
+    v.push(rule("a2-slide-overrides-hinge", "Alg. 2", &format!("As printed: 'if μ F_z < |F_x| then HINGE end if; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT': two separate ifs. Read as assignments (the last wins: {}), the slide choice overwrites HINGE every time. The authors' code decides the reading: fsm.m (STRIKE_0) has one chain, if |F_x| < μ F_y HINGE, elseif F_x > 0 SLIDE_NEG, else SLIDE_POS: the slide choice is the else branch, lost in print. The printed block executed with the corrected hinge test on the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2): fraction ending in HINGE (must be 1).", d.last_assert_wins), json!(1.0), json!(frac(ends_hinge, n)), "exact", n > 0 && ends_hinge == n, n > 0, Check::LiteralExecution));
     // F_x > 0 -> SLIDE LEFT at the pivot exits of both scenes
     let (mut agree, mut exits) = (0usize, 0usize);
     for (run, q) in c.runs() {
@@ -408,7 +406,7 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
             exits += 1;
         }
     }
-    v.push(rule("a2-slide-direction", "Alg. 2", "If F_x > 0 SLIDE LEFT else SLIDE RIGHT (outside the cone): the tangential force the plate cannot supply drives C the other way. Pivot exits of both scenes at which the stated rule picks the slide the simulation's contact conditions took.", json!(exits), json!(agree), "exact", exits > 0 && agree == exits, exits > 0, Check::Simulation));
+    v.push(rule("a2-slide-direction", "Alg. 2", "If F_x > 0 SLIDE LEFT else SLIDE RIGHT (outside the cone): the tangential force the plate cannot supply drives C the other way; the authors' fsm.m agrees ('elseif Fx > 0 SLIDE_NEG'). Pivot exits of both scenes at which the stated rule picks the slide the simulation took. A consistency check: the workbook's contact rules (`select_contact`) apply this F_x-sign rule themselves, so no document could fail it here.", json!(exits), json!(agree), "exact", exits > 0 && agree == exits, false, Check::Consistency));
     let counter = c.ev.start_fz_n < 0.0 && c.ev.start_liftoff_hdot_mps < 0.0;
     v.push(rule("a2-tension-flight", "Alg. 2", "As printed: a tensional ground reaction (F_z <= 0) implies FLIGHT. Correct: only if the flight moves C away from the plate; the massless rod released with a loaded spring swings C down at L sin(θ) (k/γ)(θ - θ₀), and the contact goes on as a slide. Authors' start: pivot F_z < 0, and C's velocity relative to the plate in the flight that would follow (m/s).", json!("h_c' > 0"), json!(c.ev.start_liftoff_hdot_mps), "sign", !(d.a2_tension_flight && counter), counter, Check::Simulation));
     v

@@ -239,13 +239,13 @@ pub fn threshold_claim(located: f64, bias_sign: f64, accuracy: f64) -> Claim {
         "chladni-drift-threshold",
         "3.1.2",
         &format!(
-            "A block pushed by a bias b μ m g on a vertically vibrating plate drifts once Γ > 1 - b, not only once it flies (Γ > 1): the normal force m g (1 - Γ sin(ω t)) falls to m g (1 - Γ), and friction can no longer hold the bias there. b = {BIAS}: the threshold located by bisection on the block model's mean velocity (tolerance: the last bracket's half-width)."
+            "A block pushed by a bias b μ m g on a vertically vibrating plate drifts once Γ > 1 - b, not only once it flies (Γ > 1): the normal force m g (1 - Γ sin(ω t)) falls to m g (1 - Γ), and friction can no longer hold the bias there. b = {BIAS}: the threshold located by bisection on the block model's mean velocity (tolerance: the last bracket's half-width). Consistency check: the block model's stick test with the normal force m g (1 - Γ sin(ω t)) is the stated argument, so its threshold is 1 - b by construction; no document could fail it here (issue 21), so it is not counted as confirmation."
         ),
         closed,
         located,
         accuracy,
     )
-    .with_check(Check::Simulation)
+    .with_check(Check::Consistency)
 }
 
 /// Adds the demonstration's claims and its `chladni` result to `r`.

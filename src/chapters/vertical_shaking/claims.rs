@@ -51,11 +51,11 @@ pub fn flight_needs_gamma(scene: &Scene, doc: &Doc) -> Claim {
     Claim::exact(
         "flight-needs-gamma-above-1",
         "3.1.2",
-        "Flight needs a peak plate acceleration δ_z ω² > g: no take-off in 50 periods at Γ = 0.999, take-off at Γ = 1.001 (of the printed threshold).",
+        "Flight needs a peak plate acceleration δ_z ω² > g: no take-off in 50 periods at Γ = 0.999, take-off at Γ = 1.001 (of the printed threshold). Consistency check: the block model's take-off guard is the plate acceleration reaching -g, the stated inequality itself; no document could fail it here (issue 21), so it is not counted as confirmation.",
         "false, true",
         format!("{below}, {above}").as_str(),
     )
-    .with_check(Check::Simulation)
+    .with_check(Check::Consistency)
 }
 
 /// The take-off phase sin(omega t) = 1/Gamma (the workbook's derivation).
@@ -65,12 +65,12 @@ pub fn takeoff(scene: &Scene, takeoff_phase: f64, doc: &Doc) -> Claim {
     Claim::close(
         "takeoff-phase",
         "3.1.2 (derived)",
-        "The block leaves the plate when the plate's acceleration reaches -g: sin(ω t) = 1/Γ (first take-off from rest; located event; 1e-9 rad: event located to ~1e-13 rad).",
+        "The block leaves the plate when the plate's acceleration reaches -g: sin(ω t) = 1/Γ (first take-off from rest; located event; 1e-9 rad: event located to ~1e-13 rad). Consistency check: the located take-off is the zero of the model's guard g + z_s'' = 0, i.e. sin(ω t) = 1/Γ by construction; no document could fail it here (issue 21), so it is not counted as confirmation.",
         (doc.takeoff_factor / scene.gamma).asin(),
         takeoff_phase,
         1e-9,
     )
-    .with_check(Check::Simulation)
+    .with_check(Check::Consistency)
 }
 
 /// Contact fraction -> 0 and c -> 0 as omega grows at fixed delta_z: from the amplitude
@@ -96,6 +96,24 @@ pub fn fast_limits(scene: &Scene, quick: bool, doc: &Doc) -> (Claim, Claim) {
         fractions.push(stk.run.contact_fraction);
         cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
     }
+    // the viscous constant further out, where the law's windows (up to +-15 % of
+    // error, issue 21) weigh less against the change in c: to 64 x the frequency
+    for k in [16.0, 32.0] {
+        let s = Scene {
+            frequency_hz: k * base.frequency_hz,
+            gamma: base.gamma * k * k,
+            ..base
+        };
+        // a flight lasts ~ 2 v_z/g = Gamma/pi periods: the window holds 40 of them
+        let flight_periods = (s.gamma / PI).ceil() as usize;
+        let stk = run(
+            &s,
+            Model::Exact,
+            transient.max(5 * flight_periods),
+            (4 * observe).max(40 * flight_periods),
+        );
+        cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
+    }
     let last = fractions[fractions.len() - 1];
     // The document's own estimate: contact ~ pi/omega, flight ~ 2 v_z/g = 2 Gamma/omega,
     // so the fraction is below pi/(2 Gamma): the tolerance at the last Gamma (128).
@@ -117,23 +135,28 @@ pub fn fast_limits(scene: &Scene, quick: bool, doc: &Doc) -> (Claim, Claim) {
     )
     .with_check(Check::Simulation);
     // The document's law v_ave = F v_z/(m g) gives c = g/v_z ~ omega^(-1) at fixed
-    // delta_z: c falls by 8^-p over the factor 8. Tolerance 0.15 of it: the law is off by
-    // +14.4 % at Gamma = 2 (decomposition table) and < 1 % at Gamma = 128.
-    let ratio = cs[cs.len() - 1] / cs[0];
-    let expected = 8f64.powf(-doc.c_exponent); // formula: c_8/c_1 = 8^-p
-    let tol_c = 0.15 * expected;
+    // delta_z. The law itself is off by +14.4 % at Gamma = 2 and by up to 15 % in
+    // windows of Gamma in [10, 40] (issue 21), which bends the slope there (1/omega^1.1
+    // passed a test over 1 to 8 x); from Gamma = 128 on it is within 1 %. So the
+    // exponent is fitted between 8 and 32 x the frequency (Gamma = 128 and 2048):
+    // p = -ln(c_32/c_8)/ln 4, tolerance ln(1.01^2)/ln 4 = 0.0144 (1 % at either end);
+    // a law off by 10 % in the exponent is 0.1 away.
+    let ratio = cs[5] / cs[3];
+    let p_fit = -ratio.ln() / 4f64.ln(); // formula: p = -ln(c_32/c_8)/ln 4
+    let expected = doc.c_exponent;
+    let tol_c = (1.01f64 * 1.01).ln() / 4f64.ln();
     let viscous = Claim::judged(
         "viscous-constant-to-zero",
         "3.1.2",
         &format!(
-            "The effective viscous constant c = F/v_ave goes to zero as ω grows at fixed δ_z, as 1/ω by the document's law (c = g/v_z): c (1/s) from Γ = 2 at 1, 2, 4, 8 x the frequency = {}; ratio c_8/c_1 against 8^-1 (tolerance 0.15 of it: the law's error is +14.4 % at Γ = 2, < 1 % at Γ = 128).",
-            cs.iter().map(|c| format!("{c:.3}")).collect::<Vec<_>>().join(", ")
+            "The effective viscous constant c = F/v_ave goes to zero as ω grows at fixed δ_z, as 1/ω by the document's law (c = g/v_z): c (1/s) from Γ = 2 at 1, 2, 4, 8, 16, 32 x the frequency (Γ up to 2048, windows of 40 flights) = {}; the exponent p of c ~ ω^-p fitted between 8 and 32 x (Γ = 128 to 2048, where the law is within 1 %; below, its +14.4 % at Γ = 2 and windows of up to 15 % for Γ in [10, 40] bend the slope) against 1, tolerance ln(1.01²)/ln 4 = 0.0144.",
+            cs.iter().map(|c| format!("{c:.4}")).collect::<Vec<_>>().join(", ")
         ),
         expected,
-        ratio,
+        p_fit,
         tol_c,
         cs.windows(2).all(|w| w[1] < w[0]) == (doc.c_exponent > 0.0)
-            && (ratio - expected).abs() <= tol_c,
+            && (p_fit - expected).abs() <= tol_c,
         Verdict::Confirmed,
     )
     .with_check(Check::Simulation);
@@ -163,14 +186,14 @@ pub fn sliding_contact(scene: &Scene, doc: &Doc) -> Claim {
     Claim::judged(
         "sliding-contact-full-friction",
         "3.1.2",
-        "If the block slides during contact, the average horizontal force is μ times the average vertical force m g (flights and impacts included): vertical vibration does not reduce sliding friction. Mean friction / (μ x mean normal force) of a block kept sliding over 60 periods (1e-9: round-off of closed-form phases and located events):",
+        "If the block slides during contact, the average horizontal force is μ times the average vertical force m g (flights and impacts included): vertical vibration does not reduce sliding friction. Mean friction / (μ x mean normal force) of a block kept sliding over 60 periods (1e-9: round-off of closed-form phases and located events): Consistency check: the model's sliding friction is μ N at every instant, so its averages are in ratio μ by construction; no document could fail it here (issue 21), so it is not counted as confirmation.",
         doc.sliding_factor,
         ratio,
         1e-9,
         always_slides && (ratio - doc.sliding_factor).abs() <= 1e-9,
         Verdict::Confirmed,
     )
-    .with_check(Check::Simulation)
+    .with_check(Check::Consistency)
 }
 
 /// Arbitrarily small forces move the block once Gamma > 1: three decades of force just
@@ -220,6 +243,62 @@ fn at_gamma_n(scene: &Scene, n: f64, eps: f64, model: Model, quick: bool) -> (f6
     (tf, law)
 }
 
+/// Where the laws hold: over Gamma = 2, 3, ..., 40 (every second value in quick mode),
+/// the simulated t_f g/v_z against 2 and (v_ave/v_z)/mu_eff against 1: the share of the
+/// Gamma values at which each is within 10 %, the largest error and where it occurs.
+fn law_range(scene: &Scene, quick: bool) -> (String, String) {
+    let (transient, observe) = super::budget(quick);
+    let b = if scene.bias > 0.0 { scene.bias } else { 0.1 };
+    let step = if quick { 2 } else { 1 };
+    let (mut tf_in, mut law_in, mut n) = (0usize, 0usize, 0usize);
+    let (mut tf_worst, mut law_worst) = ((0.0f64, 0.0f64), (0.0f64, 0.0f64));
+    let (mut tf_out, mut law_out) = (Vec::new(), Vec::new());
+    for gi in (2..=40).step_by(step) {
+        let gamma = gi as f64;
+        let s = Scene {
+            gamma,
+            bias: b,
+            ..*scene
+        };
+        // flights of up to ~Gamma/pi periods: windows of 10 of them at least
+        let fp = (gamma / PI).ceil() as usize;
+        let st = run(
+            &s,
+            Model::Exact,
+            transient.max(5 * fp),
+            observe.max(10 * fp),
+        );
+        let tf_err = st.mean_flight_s() * s.g_mps2 / s.vz_mps() / 2.0 - 1.0; // formula: t_f/(2 v_z/g) - 1
+        let law_err = (s.bias * s.mu) / (st.cycle_velocity_mps / s.vz_mps()) - 1.0; // formula: mu_eff/(v_ave/v_z) - 1
+        n += 1;
+        for (err, inside, worst, out) in [
+            (tf_err, &mut tf_in, &mut tf_worst, &mut tf_out),
+            (law_err, &mut law_in, &mut law_worst, &mut law_out),
+        ] {
+            if err.abs() <= 0.1 {
+                *inside += 1;
+            } else {
+                out.push(gi);
+            }
+            if err.is_finite() && err.abs() > worst.0.abs() {
+                *worst = (err, gamma);
+            }
+        }
+    }
+    let text = |inside: usize, worst: (f64, f64), out: &[i32]| {
+        format!(
+            "over Γ = 2 to 40 (step {step}) it is within 10 % at {inside} of {n} values, largest error {:+.0} % at Γ = {}; off by more than 10 % at Γ = {}",
+            100.0 * worst.0,
+            worst.1,
+            if out.is_empty() { "none".to_string() } else { out.iter().map(|g| g.to_string()).collect::<Vec<_>>().join(", ") }
+        )
+    };
+    (
+        text(tf_in, tf_worst, &tf_out),
+        text(law_in, law_worst, &law_out),
+    )
+}
+
 /// t_f = 2 v_z/g and mu_eff = v_ave/v_z: approximations, exact in the limit of flights of
 /// n whole periods with n -> infinity, where the closed forms are 2 n pi/Gamma_n and
 /// n pi/Gamma_n. Simulated at n = 1, 2, 3 against them.
@@ -265,11 +344,12 @@ pub fn bias_law(scene: &Scene, quick: bool, doc: &Doc) -> (Claim, Claim) {
         "not defined (no bias)".to_string()
     };
     let (table, table_law) = (rows_tf.join("; "), rows_law.join("; "));
+    let (range_tf, range_law) = law_range(scene, quick);
     let flight = Claim::judged(
         "flight-time-2vz-over-g",
         "3.1.2",
         &format!(
-            "As printed: each flight starts at v_z = ω δ_z and lasts t_f = 2 v_z/g. An approximation: exact in the limit of flights of n whole periods from rest, n -> infinity, where t_f g/v_z = 2 n π/Γₙ at Γₙ = sqrt(1 + (n π)²) (within 2/(2 (n π)²) of 2). Simulated t_f g/v_z just below Γₙ and the closed form: {table}; at the chapter's Γ = {:.2}: {tf_here:.3}. Tolerance per n: twice the error estimate of the offset below Γₙ (runs at 1e-6 and 1e-5 below it) plus 1e-9.",
+            "As printed: each flight starts at v_z = ω δ_z and lasts t_f = 2 v_z/g. An approximation: exact in the limit of flights of n whole periods from rest, n -> infinity, where t_f g/v_z = 2 n π/Γₙ at Γₙ = sqrt(1 + (n π)²) (within 2/(2 (n π)²) of 2). Simulated t_f g/v_z just below Γₙ and the closed form: {table}; at the chapter's Γ = {:.2}: {tf_here:.3}. Where it holds: {range_tf}. Tolerance per n: twice the error estimate of the offset below Γₙ (runs at 1e-6 and 1e-5 below it) plus 1e-9.",
             scene.gamma
         ),
         last.1,
@@ -283,7 +363,7 @@ pub fn bias_law(scene: &Scene, quick: bool, doc: &Doc) -> (Claim, Claim) {
         "bias-law-mu-eff",
         "3.1.2",
         &format!(
-            "As printed: F = m g v_ave/v_z, μ_eff = v_ave/v_z for F < μ m g. An approximation: exact in the same limit, where (v_ave/v_z)/μ_eff = n π/Γₙ (take-off speed δ_z ω overestimated by Γₙ/(n π)); simulated just below Γₙ and closed form: {table_law}; at the chapter's Γ = {:.2} the ratio is {law_here}. Tolerance per n: twice the error estimate of the offset below Γₙ plus the slip before take-off (exact against no-contact-slip runs), plus 1e-9.",
+            "As printed: F = m g v_ave/v_z, μ_eff = v_ave/v_z for F < μ m g. An approximation: exact in the same limit, where (v_ave/v_z)/μ_eff = n π/Γₙ (take-off speed δ_z ω overestimated by Γₙ/(n π)); simulated just below Γₙ and closed form: {table_law}; at the chapter's Γ = {:.2} the ratio is {law_here}. Where it holds: {range_law}. Tolerance per n: twice the error estimate of the offset below Γₙ plus the slip before take-off (exact against no-contact-slip runs), plus 1e-9.",
             scene.gamma
         ),
         last.3,

@@ -102,17 +102,7 @@ fn claim(id: &str, doc: &Doc) -> Claim {
 /// sign changed, one per claim at least.
 pub fn mutations() -> Vec<Mutation> {
     type Edit = fn(&mut Doc);
-    let list: [(&'static str, &'static str, Edit); 13] = [
-        (
-            "flight-needs-gamma-above-1",
-            "delta omega^2 > g -> > 1.1 g",
-            |d| d.flight_gamma = 1.1,
-        ),
-        (
-            "takeoff-phase",
-            "sin(omega t) = 1/Gamma -> 1.1/Gamma",
-            |d| d.takeoff_factor = 1.1,
-        ),
+    let list: Vec<(&'static str, &'static str, Edit)> = vec![
         (
             "contact-fraction-to-zero",
             "fraction -> 0 replaced by -> 0.05",
@@ -129,9 +119,9 @@ pub fn mutations() -> Vec<Mutation> {
             |d| d.c_exponent = 2.0,
         ),
         (
-            "sliding-contact-full-friction",
-            "mean friction mu <N> -> 1.1 mu <N>",
-            |d| d.sliding_factor = 1.1,
+            "viscous-constant-to-zero",
+            "c ~ 1/omega -> 1/omega^1.1",
+            |d| d.c_exponent = 1.1,
         ),
         (
             "small-force-moves-block",
@@ -157,16 +147,6 @@ pub fn mutations() -> Vec<Mutation> {
             "flight-period-boundaries",
             "Gamma_n = sqrt(1 + (n pi)^2) -> sqrt(1 + (1.1 n pi)^2)",
             |d| d.gamma_n_factor = 1.1,
-        ),
-        (
-            "chladni-drift-threshold",
-            "drift once Gamma > 1 - b -> 1 + b",
-            |d| d.bias_sign = 1.0,
-        ),
-        (
-            "chladni-drift-threshold",
-            "drift once Gamma > 1 - b -> Gamma > 1 (flight)",
-            |d| d.bias_sign = 0.0,
         ),
     ];
     Mutation::from_edits(Doc::PRINTED, list, claim)

@@ -65,6 +65,8 @@ pub struct Violations {
     pub normal_n: f64,
     /// Largest `|F_x| - mu F_z` in pivot (N).
     pub cone_n: f64,
+    /// Largest `-F_z` in pivot (N) (the pivot's share of `normal_n`).
+    pub pivot_normal_n: f64,
     /// Largest slip against the slide's direction, `sigma xdot_c` (m/s).
     pub slip_mps: f64,
     /// Largest `-h_c` in flight (m).
@@ -236,6 +238,7 @@ impl Watch<'_> {
             Some(e) => {
                 v.normal_n = v.normal_n.max(-e.fz);
                 if mode == Mode::Pivot {
+                    v.pivot_normal_n = v.pivot_normal_n.max(-e.fz);
                     v.cone_n = v.cone_n.max(e.fx.abs() - m.p.mu * e.fz);
                     v.pivot_slip_mps = v.pivot_slip_mps.max(y[VXC].abs());
                 } else {
