@@ -173,6 +173,10 @@ fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
     let (mut c8, mut c4, mut scale, mut n) = (0.0f64, 0.0f64, 0.0f64, 0usize);
     let (mut vx_rms, mut vz_rms, mut nl) = (0.0, 0.0, 0usize);
     let mut c4_left = 0.0f64;
+    // C.10/C.13 first rows against Newton's law for P (m x_p'' = F_x, F_x = sigma mu F_z
+    // from Table 1), and C.14's x_c'' row against C.1 differentiated twice (x_c'' = x_p''
+    // - L (theta'' cos - theta'^2 sin)), relative to mu F_z/m + L theta'^2 + L |theta''|
+    let (mut rows_x, mut row_xc) = (0.0f64, 0.0f64);
     for (run, q) in c.runs() {
         let m = StickModel::new(*q);
         let (mass, l, g, k, gam, mu) = (
@@ -199,6 +203,15 @@ fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
             let zpdd = fz / mass - g; // C.10 / C.13
             let thdd = ((a_s - zpdd) / l + d.c14_w2 * w * w * co) / s; // C.14 as stated
             let res8 = q_t + fx * l * co - fz * l * s; // C.8
+            let row = if sigma > 0.0 { d.c10_x } else { d.c13_x };
+            let xpdd = row * mu * fz / mass; // C.10 / C.13 first row as stated
+            let scale_x = mu * fz.abs() / mass + l * w * w + l * thdd.abs();
+            rows_x = rows_x.max((xpdd - fx / mass).abs() / scale_x); // formula: Newton, m x_p'' = F_x
+            if sigma < 0.0 {
+                let xcdd_doc = -mu * fz / mass - l * (d.c14_xc_w2 * w * w * s + thdd * co); // C.14 third row as stated
+                let xcdd_kin = fx / mass - l * (thdd * co - w * w * s); // formula: C.1 twice
+                row_xc = row_xc.max((xcdd_doc - xcdd_kin).abs() / scale_x);
+            }
             let zcdd = zpdd - l * (-w * w * co - thdd * s); // C.4
             c8 = c8.max(res8.abs());
             c4 = c4.max((zcdd - a_s).abs() / (g + a_s.abs()));
@@ -222,6 +235,8 @@ fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
         0.0
     };
     let vertical = ratio <= 1e-3;
+    // roundings of a few terms of the scale: 1e-12
+    v.push(Claim::judged("c10-c13-c14-x-rows", "C.10, C.13, C.14", "The horizontal rows: C.10 x_p'' = μ F_z/m (sliding left), C.13 x_p'' = -μ F_z/m (sliding right) against Newton's law for P with Table 1's friction (m x_p'' = F_x = +-μ F_z), and C.14's third row x_c'' = -μ F_z/m - L(-θ'² sin θ + θ'' cos θ) against C.1 differentiated twice (x_c'' = x_p'' - L(θ'' cos θ - θ'² sin θ)), at the slide samples of both scenes. Largest difference relative to μ F_z/m + L θ'² + L |θ''|.", 0.0, rows_x.max(row_xc), 1e-12, n > 0 && rows_x <= 1e-12 && row_xc <= 1e-12, Verdict::Confirmed).with_check(Check::ClosedForm));
     // C.12: the sliding-left angle equation is not printed. Derived (the C.14 row with
     // C.9's F_z: theta'' = ((z_s'' - z_p'')/L - theta'^2 cos)/sin), it keeps the foot on
     // the plate (C.4: z_c'' = z_s'') at every slide-left sample: the C.4 residual.

@@ -61,6 +61,12 @@ pub struct Doc {
     pub reset_offset_rad: f64,
     /// Section 4.3: in sliding left "the point P moves down vertically" (true).
     pub s43_p_vertical: bool,
+    /// C.10's first row: x_p'' = c10_x mu F_z/m (1 as printed).
+    pub c10_x: f64,
+    /// C.13's first row: x_p'' = c13_x mu F_z/m (-1 as printed).
+    pub c13_x: f64,
+    /// C.14's x_c'' row: -mu F_z/m - L(c14_xc_w2 theta'^2 sin + theta'' cos) (-1 printed).
+    pub c14_xc_w2: f64,
     /// C.12 (the sliding-left angle equation) printed (`false`: blank, as printed).
     pub c12_printed: bool,
     /// Section 4.3 (Sliding Left): "in the pivot mode the system has two degrees of
@@ -136,6 +142,9 @@ impl Doc {
         c15_axis: [0.0, 0.0, 1.0],
         reset_offset_rad: 0.0,
         s43_p_vertical: true,
+        c10_x: 1.0,
+        c13_x: -1.0,
+        c14_xc_w2: -1.0,
         c12_printed: false,
         pivot_two_dof: true,
         t1_left_v: -1.0,

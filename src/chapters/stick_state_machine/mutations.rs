@@ -100,6 +100,17 @@ pub fn all() -> Vec<Mutation> {
             "C.14 -theta'^2 cos -> +theta'^2 cos",
             |d| d.c14_w2 = 1.0,
         ),
+        m("c10-c13-c14-x-rows", "C.13 x_p'' = -mu F_z/m -> +mu F_z/m", |d| {
+            d.c13_x = 1.0
+        }),
+        m("c10-c13-c14-x-rows", "C.10 x_p'' = mu F_z/m -> 1.1 mu F_z/m", |d| {
+            d.c10_x = 1.1
+        }),
+        m(
+            "c10-c13-c14-x-rows",
+            "C.14 x_c'' row: -theta'^2 sin -> +theta'^2 sin",
+            |d| d.c14_xc_w2 = 1.0,
+        ),
         m("c12-blank", "C.12 printed (the derived equation)", |d| {
             d.c12_printed = true
         }),
