@@ -34,45 +34,9 @@ impl InertiaOutcome {
     }
 }
 
-/// The energy budget of a run (J): `W_plate = Delta E + D_friction + D_damper + D_impact`.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Budget {
-    /// Work of the plate (J).
-    pub plate_work_j: f64,
-    /// Change of mechanical energy (J).
-    pub delta_mechanical_j: f64,
-    /// Friction loss (J).
-    pub friction_j: f64,
-    /// Damper loss (J).
-    pub damper_j: f64,
-    /// Impact loss (J).
-    pub impact_j: f64,
-}
-
-impl Budget {
-    /// `W - dE - D_f - D_d - D_i` (J).
-    pub fn residual_j(&self) -> f64 {
-        self.plate_work_j
-            - self.delta_mechanical_j
-            - self.friction_j
-            - self.damper_j
-            - self.impact_j // formula: budget residual
-    }
-
-    /// The residual over the largest term (at least 1e-9 J) (1).
-    pub fn relative_residual(&self) -> f64 {
-        let scale = [
-            self.plate_work_j,
-            self.delta_mechanical_j,
-            self.friction_j,
-            self.damper_j,
-            self.impact_j,
-        ]
-        .iter()
-        .fold(1e-9f64, |a, b| a.max(b.abs()));
-        self.residual_j().abs() / scale
-    }
-}
+/// The energy budget of a run (J): chapter 6's, `W_plate = Delta E + D_friction +
+/// D_damper + D_impact + residual`.
+pub use crate::physics::stick::energy::Budget;
 
 /// One sample of a trace.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -228,12 +192,17 @@ pub fn simulate_inertia(
     for k in 0..4 {
         y1[W_PLATE + k] += w.acc[k];
     }
+    let (plate_w, de) = (
+        y1[W_PLATE],
+        model.mechanical_energy(&y1) - model.mechanical_energy(&y0),
+    );
     let budget = Budget {
-        plate_work_j: y1[W_PLATE],
-        delta_mechanical_j: model.mechanical_energy(&y1) - model.mechanical_energy(&y0),
+        plate_work_j: plate_w,
+        delta_mechanical_j: de,
         friction_j: y1[D_FRIC],
         damper_j: y1[D_DAMP],
         impact_j: y1[D_IMPACT],
+        residual_j: plate_w - de - y1[D_FRIC] - y1[D_DAMP] - y1[D_IMPACT], // formula: budget residual
     };
     let log = model.log.borrow().clone();
     let dur = t_end_s - t0;
