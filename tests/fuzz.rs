@@ -20,6 +20,10 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
+use common::Rng;
+
+mod common;
+
 /// Documented range of one flag: `lo`/`hi` with openness. `relative` marks a range that
 /// depends on another flag (its "outside" is only outside at the other's default).
 #[derive(Clone, Copy)]
@@ -153,24 +157,6 @@ fn table() -> Vec<(&'static str, Vec<Flag>)> {
             ],
         ),
     ]
-}
-
-/// xorshift64*: small, seeded, reproducible.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn pick<T: Copy>(&mut self, xs: &[T]) -> T {
-        xs[(self.next() % xs.len() as u64) as usize]
-    }
 }
 
 const SPECIAL: [&str; 9] = [

@@ -10,5 +10,6 @@
 pub mod events;
 pub mod hybrid;
 pub mod ode;
+pub mod search;
 pub mod timestepping;
 pub mod trig;

@@ -63,27 +63,8 @@ pub fn rod_ratio(theta: f64) -> f64 {
     jam_ratio(&matrices(theta).0)
 }
 
-/// Golden-section search for the maximum of a unimodal `f` on `[a, b]`, stopped when
-/// the bracket is below `tol`. Returns the abscissa.
-pub fn golden_max(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> f64 {
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    let (mut c, mut d) = (b - g * (b - a), a + g * (b - a));
-    let (mut fc, mut fd) = (f(c), f(d));
-    while b - a > tol {
-        if fc > fd {
-            b = d;
-            (d, fd) = (c, fc);
-            c = b - g * (b - a);
-            fc = f(c);
-        } else {
-            a = c;
-            (c, fc) = (d, fd);
-            d = a + g * (b - a);
-            fd = f(d);
-        }
-    }
-    0.5 * (a + b)
-}
+/// Golden-section search for the maximum (moved down to the numerics layer).
+pub use crate::numerics::search::golden_max;
 
 /// Bisection for the root of `f` on `[a, b]` (a sign change required), to `tol`.
 pub fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> f64 {

@@ -83,24 +83,7 @@ pub fn painleve_boundary(m_r: f64, m: f64, theta: f64) -> f64 {
 /// The least boundary over the angle, by golden-section search (angle rad, mu).
 pub fn painleve_min(m_r: f64, m: f64) -> (f64, f64) {
     let f = |th: f64| painleve_boundary(m_r, m, th);
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    let (mut a, mut b) = (0.1, 1.2);
-    let (mut c, mut d) = (b - g * (b - a), a + g * (b - a));
-    let (mut fc, mut fd) = (f(c), f(d));
-    while b - a > 1e-7 {
-        if fc < fd {
-            b = d;
-            (d, fd) = (c, fc);
-            c = b - g * (b - a);
-            fc = f(c);
-        } else {
-            a = c;
-            (c, fc) = (d, fd);
-            d = a + g * (b - a);
-            fd = f(d);
-        }
-    }
-    let th = 0.5 * (a + b);
+    let th = crate::numerics::search::golden_min(f, 0.1, 1.2, 1e-7);
     (th, f(th))
 }
 
