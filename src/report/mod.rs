@@ -167,8 +167,122 @@ pub struct Claim {
     pub same_as: Option<String>,
 }
 
+/// A claim being built: what the document says and the kind of evidence that will
+/// judge it (required: [`Claim::draft`] takes it first), then the numbers
+/// ([`ClaimDraft::values`]) and one verdict method. The only ways to finish a claim:
+/// [`ClaimDraft::confirmed_if`], [`ClaimDraft::approximation_if`],
+/// [`ClaimDraft::printed_or_corrected`] (the one way to make an erratum),
+/// [`ClaimDraft::close`] and [`ClaimDraft::exact`].
+#[derive(Debug, Clone)]
+#[must_use = "a draft is not a claim until a verdict method finishes it"]
+pub struct ClaimDraft {
+    claim: Claim,
+}
+
+impl ClaimDraft {
+    /// The value the statement predicts, the value computed independently, and the
+    /// allowed difference (number) or kind of comparison (text, e.g. `"exact"`).
+    pub fn values(
+        mut self,
+        expected: impl Into<Value>,
+        computed: impl Into<Value>,
+        tolerance: impl Into<Value>,
+    ) -> ClaimDraft {
+        self.claim.expected = finite_or_text(expected.into());
+        self.claim.computed = finite_or_text(computed.into());
+        self.claim.tolerance = finite_or_text(tolerance.into());
+        self
+    }
+
+    /// Marks the claim as sharing its numbers and finding with claim `id` of the same
+    /// chapter (see [`Claim::same_as`]).
+    pub fn same_finding_as(mut self, id: &str) -> ClaimDraft {
+        self.claim.same_as = Some(id.to_string());
+        self
+    }
+
+    fn verdict(mut self, v: Verdict) -> Claim {
+        self.claim.verdict = v;
+        self.claim
+    }
+
+    /// Confirmed when the document's statement `holds` against the evidence, failed
+    /// otherwise.
+    pub fn confirmed_if(self, holds: bool) -> Claim {
+        self.verdict(if holds {
+            Verdict::Confirmed
+        } else {
+            Verdict::Failed
+        })
+    }
+
+    /// Approximation when the statement, read with the limit it names, `holds`
+    /// (agreement in the limit and the departure away from it both measured), failed
+    /// otherwise.
+    pub fn approximation_if(self, holds: bool) -> Claim {
+        self.verdict(if holds {
+            Verdict::Approximation
+        } else {
+            Verdict::Failed
+        })
+    }
+
+    /// The one way to make an erratum: confirmed when the printed statement holds,
+    /// erratum when only the correction holds, failed when neither does. Both checks
+    /// are computed, so a document that printed the correction would be confirmed.
+    pub fn printed_or_corrected(self, printed_holds: bool, corrected_holds: bool) -> Claim {
+        self.verdict(if printed_holds {
+            Verdict::Confirmed
+        } else if corrected_holds {
+            Verdict::Erratum
+        } else {
+            Verdict::Failed
+        })
+    }
+
+    /// A numeric claim: confirmed when `|computed - expected| <= tolerance` (all
+    /// finite), failed otherwise.
+    pub fn close(self, expected: f64, computed: f64, tolerance: f64) -> Claim {
+        let holds = is_close(expected, computed, tolerance);
+        self.values(expected, computed, tolerance)
+            .confirmed_if(holds)
+    }
+
+    /// A discrete claim (boolean, label, count): confirmed when equal, failed otherwise.
+    pub fn exact<T: Into<Value> + PartialEq + Clone>(self, expected: T, computed: T) -> Claim {
+        let holds = expected == computed;
+        self.values(expected, computed, "exact").confirmed_if(holds)
+    }
+}
+
 impl Claim {
-    /// A claim whose verdict is `verdict_if_holds` when the check `holds`, and
+    /// Starts a claim of the document's `statement` (`section` names where it is
+    /// printed), judged by evidence of kind `check`. Finish it with a verdict method
+    /// of [`ClaimDraft`]:
+    ///
+    /// ```
+    /// use locomotion_workbook::report::{Check, Claim, Verdict};
+    /// let c = Claim::draft(Check::ClosedForm, "q-ratio", "2", "J_l/J_v = q")
+    ///     .close(1.0, 1.0 + 1e-12, 1e-9);
+    /// assert_eq!(c.verdict, Verdict::Confirmed);
+    /// ```
+    pub fn draft(check: Check, id: &str, section: &str, statement: &str) -> ClaimDraft {
+        ClaimDraft {
+            claim: Claim {
+                id: id.to_string(),
+                section: section.to_string(),
+                statement: statement.to_string(),
+                expected: Value::Null,
+                computed: Value::Null,
+                tolerance: Value::Null,
+                verdict: Verdict::Failed,
+                check,
+                same_as: None,
+            },
+        }
+    }
+
+    /// Old form, being replaced by [`Claim::draft`] (issue 20): a claim whose verdict is `verdict_if_holds` when the check `holds`, and
     /// [`Verdict::Failed`] otherwise.
     ///
     /// `holds` must come from a comparison of `expected` with `computed` (or of the

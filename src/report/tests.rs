@@ -86,3 +86,39 @@ fn consistency_checks_are_counted_apart_from_confirmations() {
     assert!(f.starts_with("`workbook all` checks 3 claims: 1 confirmed (+1 consistency checks"));
     assert!(f.contains("`x` / `c` (section 1, simulation)"));
 }
+
+#[test]
+fn a_draft_keeps_its_kind_of_evidence_and_makes_errata_one_way() {
+    let d = || Claim::draft(Check::SecondMethod, "x", "4", "x = 1").values(1.0, 1.1, 0.01);
+    let c = d().printed_or_corrected(false, true);
+    assert_eq!(
+        (c.verdict, c.check),
+        (Verdict::Erratum, Check::SecondMethod)
+    );
+    assert_eq!(
+        d().printed_or_corrected(true, true).verdict,
+        Verdict::Confirmed
+    );
+    assert_eq!(
+        d().printed_or_corrected(false, false).verdict,
+        Verdict::Failed
+    );
+    assert_eq!(d().approximation_if(true).verdict, Verdict::Approximation);
+    assert_eq!(d().confirmed_if(false).verdict, Verdict::Failed);
+    let nan = Claim::draft(Check::ClosedForm, "y", "2", "y = 0").close(0.0, f64::NAN, 1.0);
+    assert_eq!(nan.verdict, Verdict::Failed);
+    assert_eq!(nan.computed, serde_json::Value::String("non-finite".into()));
+    let e = Claim::draft(Check::Simulation, "z", "5", "mode").exact("flight", "flight");
+    assert_eq!(
+        (e.verdict, e.tolerance.as_str()),
+        (Verdict::Confirmed, Some("exact"))
+    );
+    assert_eq!(
+        Claim::draft(Check::Simulation, "w", "5", "w")
+            .same_finding_as("z")
+            .confirmed_if(true)
+            .same_as
+            .as_deref(),
+        Some("z")
+    );
+}
