@@ -12,7 +12,7 @@ use std::process::Command;
 
 use common::Rng;
 
-mod common;
+use crate::common;
 
 fn env_u64(name: &str, default: u64) -> u64 {
     std::env::var(name)

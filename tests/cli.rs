@@ -6,7 +6,7 @@ use common::{assert_bad_input, run};
 use locomotion_workbook::chapters::CHAPTERS;
 use serde_json::Value;
 
-mod common;
+use crate::common;
 
 const CONTRACT_KEYS: [&str; 7] = [
     "chapter", "title", "section", "params", "claims", "results", "figures",

@@ -8,7 +8,7 @@
 //! the lean angle; the rod's maximum 3/4 at `q = 2`; and the CLI contract with one
 //! bad-input test per flag.
 
-mod common;
+use crate::common;
 
 use locomotion_workbook::chapters::effective_mass::{
     golden_max, rod_lock_angles_closed_form, rod_ratio,

@@ -22,7 +22,7 @@ use std::time::{Duration, Instant};
 
 use common::Rng;
 
-mod common;
+use crate::common;
 
 /// Documented range of one flag: `lo`/`hi` with openness. `relative` marks a range that
 /// depends on another flag (its "outside" is only outside at the other's default).

@@ -7,7 +7,7 @@
 //! Coulomb cone and never doing positive work at every step; the CLI contract and the
 //! bad-input lines; a snapshot of the quick-mode summary.
 
-mod common;
+use crate::common;
 
 use locomotion_workbook::chapters::horizontal_shaking::drift::{steady_drift, Scene};
 use locomotion_workbook::physics::block::{

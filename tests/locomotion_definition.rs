@@ -9,7 +9,7 @@
 //! collinear media, points on edges) and on near-degenerate instances where the naive
 //! floating-point orientation gets the sign wrong.
 
-mod common;
+use crate::common;
 
 use locomotion_workbook::physics::locomotion::{classify, hull, orient2d, Position, V2};
 use serde_json::Value;

@@ -13,7 +13,7 @@
 
 use serde_json::Value;
 
-mod common;
+use crate::common;
 
 /// ASCII spellings of the notation page's symbols, as whole words.
 const ASCII_SYMBOLS: [&str; 13] = [

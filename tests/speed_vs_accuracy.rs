@@ -13,7 +13,7 @@
 //!   slip before takeoff scales with b);
 //! - the chapter's JSON keys, verdicts, failures and bad input per flag.
 
-mod common;
+use crate::common;
 
 use locomotion_workbook::chapters::speed_vs_accuracy::block_scene::BlockScene;
 use locomotion_workbook::chapters::speed_vs_accuracy::economy::flight_map_drift;

@@ -9,7 +9,7 @@
 //! that never create relative kinetic energy (invariants); the CLI contract, bad
 //! inputs, and a snapshot of the quick-mode summary.
 
-mod common;
+use crate::common;
 
 use locomotion_workbook::chapters::vertical_shaking::regimes::regime_at;
 use locomotion_workbook::chapters::vertical_shaking::scene::{run as run_scene, Model, Scene};
