@@ -4,11 +4,11 @@
 //! them, e.g. `cargo test --test suite fuzz::`. The exercises (`tests/exercises.rs`) are
 //! their own binary so that a student runs `cargo test --test exercises` alone.
 
-mod common;
 mod accuracy_sweep;
 mod architecture;
 mod asymmetric_shaking;
 mod cli;
+mod common;
 mod effective_mass;
 mod falsification;
 mod fuzz;

@@ -1,7 +1,8 @@
 //! Heat maps (parameter maps) with a viridis colour bar and overlaid curves.
 
 use super::axis::{self, Ticked};
-use super::chart::{build_chart, draw_axes, draw_series, tick_label, ticks};
+use super::chart::{build_chart, draw_axes, tick_label, ticks};
+use super::series::draw_series;
 use super::{font, Drawing, Legend, Series, GRID, LABEL_PX, TICK_PX, TITLE_PX};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -224,9 +225,21 @@ impl Drawing for HeatMap {
                 .map_err(e)?;
         }
 
-        // The colour bar: same caption and x-label area as the map, so the two align.
+        self.draw_colour_bar(&bar, (vmin, vmax))
+    }
+}
+
+impl HeatMap {
+    /// The colour bar from `vmin` to `vmax` in `bar`: the same caption and x-label area
+    /// as the map, so the two align.
+    fn draw_colour_bar<DB: DrawingBackend>(
+        &self,
+        bar: &DrawingArea<DB, Shift>,
+        (vmin, vmax): (f64, f64),
+    ) -> Result<(), String> {
+        let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
         let (bt, bstep) = ticks(vmin, vmax, false);
-        let mut cb = ChartBuilder::on(&bar)
+        let mut cb = ChartBuilder::on(bar)
             .caption(" ", font(TITLE_PX))
             .margin(18)
             .margin_left(4)

@@ -126,6 +126,19 @@ fn degenerate_inputs_do_not_panic() {
         },
         size,
     );
+    let dir = tempfile::tempdir().unwrap();
+    assert_eq!(save_panels(&[], 0, dir.path(), "none").unwrap().len(), 2);
+    assert_eq!(
+        save_drawing(&charts[0], dir.path(), "tiny", (0, 0))
+            .unwrap()
+            .len(),
+        2
+    );
+}
+
+#[test]
+fn degenerate_heat_maps_do_not_panic() {
+    let (nan, inf) = (f64::NAN, f64::INFINITY);
     let maps = [
         HeatMap::new("empty", "x", "y", vec![], vec![], vec![], "v"),
         HeatMap::new(
@@ -151,14 +164,6 @@ fn degenerate_inputs_do_not_panic() {
     for h in &maps {
         raster(h, (500, 300));
     }
-    let dir = tempfile::tempdir().unwrap();
-    assert_eq!(save_panels(&[], 0, dir.path(), "none").unwrap().len(), 2);
-    assert_eq!(
-        save_drawing(&charts[0], dir.path(), "tiny", (0, 0))
-            .unwrap()
-            .len(),
-        2
-    );
 }
 
 #[test]

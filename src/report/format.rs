@@ -86,58 +86,7 @@ impl ChapterReport {
             let _ = writeln!(s, "parameters: {}", p.join(", "));
         }
         if !self.claims.is_empty() {
-            let rows: Vec<[String; 7]> = self
-                .claims
-                .iter()
-                .enumerate()
-                .map(|(i, c)| {
-                    [
-                        format!("{}", i + 1),
-                        c.verdict.as_str().to_string(),
-                        c.check.as_str().to_string(),
-                        c.id.clone(),
-                        fmt_value(&c.expected),
-                        fmt_value(&c.computed),
-                        fmt_value(&c.tolerance),
-                    ]
-                })
-                .collect();
-            let header = [
-                "#",
-                "verdict",
-                "check",
-                "claim",
-                "expected",
-                "computed",
-                "tolerance",
-            ];
-            let mut w: Vec<usize> = header.iter().map(|h| h.len()).collect();
-            for r in &rows {
-                for (wi, cell) in w.iter_mut().zip(r) {
-                    *wi = (*wi).max(cell.chars().count()).min(28);
-                }
-            }
-            let line = |cells: &[&str]| {
-                let mut l = String::new();
-                for (i, c) in cells.iter().enumerate() {
-                    let c = clip(c, w[i]);
-                    let _ = write!(l, "{c:<width$}  ", width = w[i]);
-                }
-                l.trim_end().to_string()
-            };
-            let _ = writeln!(s, "{}", line(&header));
-            for (r, c) in rows.iter().zip(&self.claims) {
-                let cells: Vec<&str> = r.iter().map(String::as_str).collect();
-                let _ = writeln!(s, "{}", line(&cells));
-                let _ = writeln!(
-                    s,
-                    "{:indent$}[{}] {}",
-                    "",
-                    c.section,
-                    c.statement,
-                    indent = w[0] + 2
-                );
-            }
+            s.push_str(&self.claims_table());
         }
         if !self.results.is_empty() {
             let _ = writeln!(s, "results:");
@@ -149,6 +98,65 @@ impl ChapterReport {
             let _ = writeln!(s, "figures: {}", self.figures.join(", "));
         }
         let _ = writeln!(s, "summary: {}", self.summary());
+        s
+    }
+
+    /// The aligned verdict table of the human report: one row per claim (columns
+    /// clipped at 28 characters), its section and statement on the line below.
+    fn claims_table(&self) -> String {
+        let mut s = String::new();
+        let rows: Vec<[String; 7]> = self
+            .claims
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                [
+                    format!("{}", i + 1),
+                    c.verdict.as_str().to_string(),
+                    c.check.as_str().to_string(),
+                    c.id.clone(),
+                    fmt_value(&c.expected),
+                    fmt_value(&c.computed),
+                    fmt_value(&c.tolerance),
+                ]
+            })
+            .collect();
+        let header = [
+            "#",
+            "verdict",
+            "check",
+            "claim",
+            "expected",
+            "computed",
+            "tolerance",
+        ];
+        let mut w: Vec<usize> = header.iter().map(|h| h.len()).collect();
+        for r in &rows {
+            for (wi, cell) in w.iter_mut().zip(r) {
+                *wi = (*wi).max(cell.chars().count()).min(28);
+            }
+        }
+        let line = |cells: &[&str]| {
+            let mut l = String::new();
+            for (i, c) in cells.iter().enumerate() {
+                let c = clip(c, w[i]);
+                let _ = write!(l, "{c:<width$}  ", width = w[i]);
+            }
+            l.trim_end().to_string()
+        };
+        let _ = writeln!(s, "{}", line(&header));
+        for (r, c) in rows.iter().zip(&self.claims) {
+            let cells: Vec<&str> = r.iter().map(String::as_str).collect();
+            let _ = writeln!(s, "{}", line(&cells));
+            let _ = writeln!(
+                s,
+                "{:indent$}[{}] {}",
+                "",
+                c.section,
+                c.statement,
+                indent = w[0] + 2
+            );
+        }
         s
     }
 }

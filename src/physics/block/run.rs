@@ -341,14 +341,7 @@ pub fn simulate_block_observed<P: PlateMotion + ?Sized>(
         (Some(xa), Some(xb)) if k_b > k_a => (xb - xa) / span, // formula: <v> = (x(k_b T) - x(k_a T)) / ((k_b - k_a) T)
         _ => f64::NAN,
     };
-    let mut modes = tr.modes;
-    if span > 0.0 {
-        modes.stick /= span;
-        modes.slip_right /= span;
-        modes.slip_left /= span;
-        modes.viscous /= span;
-        modes.flight /= span;
-    }
+    let modes = tr.modes.per_time(span);
     BlockRun {
         outcome: run.outcome,
         t_end_s: run.t_end_s,
@@ -370,5 +363,20 @@ pub fn simulate_block_observed<P: PlateMotion + ?Sized>(
         stats: run.stats,
         locate_evals: run.locate_evals,
         segments: tr.segments,
+    }
+}
+
+impl ModeFractions {
+    /// The times spent in each mode as fractions of `span_s` (unchanged when the span
+    /// is not positive).
+    fn per_time(mut self, span_s: f64) -> ModeFractions {
+        if span_s > 0.0 {
+            self.stick /= span_s;
+            self.slip_right /= span_s;
+            self.slip_left /= span_s;
+            self.viscous /= span_s;
+            self.flight /= span_s;
+        }
+        self
     }
 }

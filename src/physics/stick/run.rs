@@ -374,6 +374,35 @@ pub fn simulate_stick(
     simulate_system(model, model, start, t0, y0, t_end, opts, rec)
 }
 
+/// The summary of a run that starts at `t0` in state `y0` and has not moved yet.
+fn empty_summary(t0: f64, y0: State) -> RunSummary {
+    RunSummary {
+        outcome: StickOutcome::Completed,
+        end_time_s: t0,
+        start_time_s: t0,
+        mean_velocity_mps: 0.0,
+        mode_time_s: [0.0; 4],
+        transitions: [[0; 4]; 4],
+        jams: 0,
+        hops: 0,
+        sticking_landings: 0,
+        budget: Budget::default(),
+        stats: Stats::default(),
+        locate_evals: 0,
+        certify: CertifyStats::default(),
+        cycles: 0.0,
+        sequence: String::new(),
+        violations: Violations::default(),
+        trace: Vec::new(),
+        events: Vec::new(),
+        event_count: 0,
+        switches: Vec::new(),
+        landings: Vec::new(),
+        y_end: y0,
+        mode_end: Mode::Pivot,
+    }
+}
+
 /// [`simulate_stick`] with another rule set: `sys` (for example the printed rules of
 /// [`super::printed`]) supplies flows, guards and transitions; `model` the geometry
 /// and forces the summary is measured with; `start` is the first mode and state.
@@ -391,31 +420,7 @@ pub fn simulate_system<S: HybridSystem<NSTATE, Mode = Mode, Stop = StickStop>>(
     let mut watch = Watch {
         model,
         rec,
-        sum: RunSummary {
-            outcome: StickOutcome::Completed,
-            end_time_s: t0,
-            start_time_s: t0,
-            mean_velocity_mps: 0.0,
-            mode_time_s: [0.0; 4],
-            transitions: [[0; 4]; 4],
-            jams: 0,
-            hops: 0,
-            sticking_landings: 0,
-            budget: Budget::default(),
-            stats: Stats::default(),
-            locate_evals: 0,
-            certify: CertifyStats::default(),
-            cycles: 0.0,
-            sequence: String::new(),
-            violations: Violations::default(),
-            trace: Vec::new(),
-            events: Vec::new(),
-            event_count: 0,
-            switches: Vec::new(),
-            landings: Vec::new(),
-            y_end: y0,
-            mode_end: Mode::Pivot,
-        },
+        sum: empty_summary(t0, y0),
         acc: [0.0; 4],
         last_mode: None,
         next_sample_t: t0,

@@ -246,6 +246,26 @@ impl SoftStick {
         if g0 == 0.0 {
             return done(free, 1);
         }
+        let (a, b, ga_neg, n) = match self.bracket(y, vs, sc, (free, g0)) {
+            Ok(bracket) => bracket,
+            Err((w, n)) => return done(w, n),
+        };
+        let (w, n) = self.safeguarded_newton(y, vs, sc, (a, b, ga_neg), n);
+        done(w, n)
+    }
+
+    /// A bracket `[a, b]` of the balance's root in the rod rate w, found from the free
+    /// rate `free` (where the balance is `g0`): `Ok((a, b, g(a) < 0, evaluations))`, or
+    /// `Err((w, evaluations))` when a root was hit exactly or no bracket was found in
+    /// 200 doublings (then w is the free rate).
+    #[allow(clippy::type_complexity)]
+    fn bracket(
+        &self,
+        y: &[f64; 5],
+        vs: f64,
+        sc: (f64, f64),
+        (free, g0): (f64, f64),
+    ) -> std::result::Result<(f64, f64, bool, u32), (f64, u32)> {
         // Bracket: step away from the free rate (downwards when g > 0) doubling the step.
         let dir = if g0 > 0.0 { -1.0 } else { 1.0 };
         let mut step = free.abs().max(1.0);
@@ -257,7 +277,7 @@ impl SoftStick {
             b = free + dir * step;
             n += 1;
             if n > 200 {
-                return done(free, n);
+                return Err((free, n));
             }
         }
         if a > b {
@@ -277,7 +297,7 @@ impl SoftStick {
                 let (gc, _) = self.balance(y, vs, sc, wc);
                 n += 1;
                 if gc == 0.0 {
-                    return done(wc, n);
+                    return Err((wc, n));
                 }
                 if (gc < 0.0) == ga_neg {
                     a = wc;
@@ -286,6 +306,19 @@ impl SoftStick {
                 }
             }
         }
+        Ok((a, b, ga_neg, n))
+    }
+
+    /// The balance's root in `[a, b]` (`ga_neg`: g(a) < 0), after `n` evaluations:
+    /// `(w, evaluations)`.
+    fn safeguarded_newton(
+        &self,
+        y: &[f64; 5],
+        vs: f64,
+        sc: (f64, f64),
+        (mut a, mut b, ga_neg): (f64, f64, bool),
+        mut n: u32,
+    ) -> (f64, u32) {
         // Safeguarded Newton on [a, b]: a Newton step is taken only when it stays inside
         // the bracket and is at most half the step before last (Numerical Recipes'
         // `rtsafe` rule), otherwise the bracket is bisected. Without the second
@@ -318,7 +351,7 @@ impl SoftStick {
                 break;
             }
         }
-        done(w, n)
+        (w, n)
     }
 }
 
