@@ -336,7 +336,7 @@ async function main() {
           });
           writeFileSync(join(shotDir, `${name}-exercises.png`), Buffer.from(ex.data, "base64"));
         }
-        // Sections asked for by name: BOOK_SHOTS="chapters/07-speed-vs-accuracy.html#8-the-stick-by-three-methods,..."
+        // Sections asked for by name: BOOK_SHOTS="chapters/07-speed-vs-accuracy.html#7-the-stick-by-three-methods,..."
         for (const want of (process.env.BOOK_SHOTS ?? "").split(",").filter((w) => w.startsWith(page + "#"))) {
           const id = want.slice(page.length + 1);
           const { result: at } = await s("Runtime.evaluate", {
