@@ -79,6 +79,22 @@ function svgText(path) {
   return { width, smallest: sizes.length ? Math.min(...sizes) : Infinity };
 }
 
+// An animated GIF's frame count and the display time of its first frame (ms), read from
+// its Graphic Control Extensions (0x21 0xF9 0x04, then flags, then the delay in 1/100 s).
+function gifFrames(path) {
+  const b = readFileSync(path);
+  let frames = 0;
+  let delayMs = NaN;
+  for (let i = 0; i + 5 < b.length; i += 1) {
+    if (b[i] === 0x21 && b[i + 1] === 0xf9 && b[i + 2] === 0x04) {
+      if (frames === 0) delayMs = (b[i + 4] | (b[i + 5] << 8)) * 10;
+      frames += 1;
+      i += 7;
+    }
+  }
+  return { frames, delayMs };
+}
+
 function launch() {
   const profile = mkdtempSync(join(tmpdir(), "book-test-"));
   const args = [
@@ -276,12 +292,23 @@ async function main() {
         const { width, smallest } = svgText(fileURLToPath(img.url));
         const px = (smallest * img.width) / width;
         const rel = img.url.replace(/^.*\/figures\//, "");
-        const size = `smallest text ${px.toFixed(1)} px as displayed (font-size ${smallest} in a ${width}-unit-wide SVG shown ${Math.round(img.width)} px wide on ${page})`;
+        const size = `smallest text ${px.toFixed(1)} px as displayed (font-size ${smallest.toFixed(1)} in a ${width}-unit-wide SVG shown ${Math.round(img.width)} px wide on ${page})`;
         if (KNOWN_SMALL_TEXT.has(rel) && !(measured.get(rel)?.px <= px)) measured.set(rel, { px, size });
         if (!(px >= 11)) {
           if (KNOWN_SMALL_TEXT.has(rel)) smallText.set(rel, px);
           else failures.push(`${page}: ${rel}: ${size} (at least 11)`);
         }
+      }
+    };
+    // Animations: frame count and frame time, printed (the gait GIFs should show at least
+    // 30 frames per drive cycle; the file does not say how many cycles it spans).
+    const gifs = new Map();
+    const noteGifs = (info) => {
+      for (const img of info.images) {
+        const name = img.url.replace(/^.*\/figures\//, "");
+        if (!img.url.startsWith("file:") || !/\.gif$/.test(img.url) || gifs.has(name)) continue;
+        const path = fileURLToPath(img.url);
+        if (existsSync(path)) gifs.set(name, gifFrames(path));
       }
     };
     const checkFrontDoor = (page, info) => {
@@ -315,6 +342,7 @@ async function main() {
       for (const href of info.links) allLinks.push({ page, href });
       checkLayout(page, "desktop", info);
       checkFigures(page, info);
+      noteGifs(info);
       if (page === "index.html" || page === "preface.html") checkFrontDoor(page, info);
       const name = page.replace(/\//g, "_").replace(/\.html$/, "");
       if (!page.startsWith("code/")) {
@@ -412,6 +440,9 @@ async function main() {
       } else {
         failures.push(`${file}: listed in KNOWN_SMALL_TEXT but its ${m.size} passes: remove it from the list`);
       }
+    }
+    for (const [file, g] of [...gifs].sort()) {
+      console.log(`note: animation ${file}: ${g.frames} frames, ${g.delayMs} ms each (${(g.frames * g.delayMs / 1000).toFixed(1)} s a loop)`);
     }
     // External links: only the authors' repository (the book is read offline).
     for (const { page, href } of allLinks) {
