@@ -12,6 +12,14 @@
 //! names are tables the chapter adds with [`crate::report::ChapterReport::table`].
 //! Tables come from the chapter run in full mode with its default flags and no figures,
 //! so that the text always shows what `workbook <id>` computes.
+//!
+//! The appendix `chapters/errata.md` ("The document's errata and claims") holds the audit
+//! material the lessons link to: one section per chapter, whose blocks are named
+//! `<chapter-id>:<table>` (`stick-state-machine:claims`, `speed-vs-accuracy:work_precision`)
+//! plus `<chapter-id>:summary`, the chapter's verdict counts and its errata and
+//! approximations (see [`appendix`]).
+
+mod appendix;
 
 use crate::chapters::{self, Context, CHAPTERS};
 use crate::error::{Result, WorkbookError};
@@ -83,7 +91,8 @@ pub fn table_of(report: &ChapterReport, name: &str) -> Option<String> {
 /// 1 (a claim failed, a regression), 2 (bad input) and 3 (output cannot be written).
 pub const STALE_EXIT: i32 = 4;
 
-/// Refreshes (or with `check`, verifies) every chapter text in `dir`, and the block
+/// Refreshes (or with `check`, verifies) every chapter text in `dir`, the appendix
+/// `dir/errata.md` (its blocks `<chapter-id>:<table>`, see [`appendix`]), and the block
 /// `findings` of the README beside it (`dir/../README.md`, generated from the claims of
 /// every chapter by [`crate::report::findings_markdown`]). Returns the exit code: 0 when
 /// up to date (or refreshed), [`STALE_EXIT`] when `check` found a stale table.
@@ -100,14 +109,24 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
     let readme = std::fs::read_to_string(&readme_path)
         .ok()
         .filter(|t| !block_names(t).is_empty());
-    let errata = dir.join("errata.md").is_file();
+    let appendix = appendix::read(dir, check)?;
+    if texts.is_empty() && appendix.is_none() {
+        return Err(WorkbookError::bad_input(
+            "--dir",
+            dir.display(),
+            "a folder holding the course text chapters/NN-<id>.md with generated blocks (none found there)",
+        ));
+    }
     let ctx = Context::headless(false);
     let mut stale = 0;
     let mut reports = Vec::new();
     for info in CHAPTERS.iter() {
         let text = texts.iter().find(|(p, _)| *p == chapter_path(dir, info));
-        if text.is_none() && readme.is_none() && !errata {
-            continue; // neither its text, the README's findings nor the errata need it
+        let in_appendix = appendix
+            .as_ref()
+            .is_some_and(|(_, t)| appendix::names_chapter(t, info.id));
+        if text.is_none() && readme.is_none() && !in_appendix {
+            continue; // neither its text, the README's findings nor the appendix need it
         }
         let report = chapters::run_default(info.id, &ctx)?;
         if let Some((path, text)) = text {
@@ -123,7 +142,11 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
             .map_err(|e| WorkbookError::Io(format!("{}: {e}", readme_path.display())))?;
         stale += refresh(&readme_path, &text, &new, check, out)?;
     }
-    stale += render_errata_appendix(dir, &reports, check, out)?;
+    if let Some((path, text)) = appendix {
+        let new = appendix::fill(&text, &reports)
+            .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
+        stale += refresh(&path, &text, &new, check, out)?;
+    }
     Ok(if stale > 0 { STALE_EXIT } else { 0 })
 }
 
@@ -132,9 +155,10 @@ fn chapter_path(dir: &Path, info: &chapters::ChapterInfo) -> PathBuf {
     dir.join(info.markdown_path().file_name().expect("file name"))
 }
 
-/// The chapter texts in `dir` that hold generated blocks, read before any computation:
-/// none is bad input (a wrong `--dir` must not pass as "up to date"); a file that
-/// `render` would have to rewrite and cannot is an output error naming it.
+/// The chapter texts in `dir` that hold generated blocks, read before any computation (a
+/// folder with none of them and no appendix is bad input: a wrong `--dir` must not pass
+/// as "up to date"); a file that `render` would have to rewrite and cannot is an output
+/// error naming it.
 fn course_texts(dir: &Path, check: bool) -> Result<Vec<(PathBuf, String)>> {
     let mut texts = Vec::new();
     for info in CHAPTERS.iter() {
@@ -154,19 +178,18 @@ fn course_texts(dir: &Path, check: bool) -> Result<Vec<(PathBuf, String)>> {
         }
         texts.push((path, text));
     }
-    if texts.is_empty() {
-        return Err(WorkbookError::bad_input(
-            "--dir",
-            dir.display(),
-            "a folder holding the course text chapters/NN-<id>.md with generated blocks (none found there)",
-        ));
-    }
     Ok(texts)
 }
 
 /// Writes `new` to `path` (or with `check` reports it stale) when it differs from
 /// `text`; returns 1 when stale under `check`, else 0.
-fn refresh(path: &Path, text: &str, new: &str, check: bool, out: &mut dyn Write) -> Result<i32> {
+pub(crate) fn refresh(
+    path: &Path,
+    text: &str,
+    new: &str,
+    check: bool,
+    out: &mut dyn Write,
+) -> Result<i32> {
     if new == text {
         writeln!(out, "up to date: {}", path.display())?;
         return Ok(0);
@@ -178,73 +201,6 @@ fn refresh(path: &Path, text: &str, new: &str, check: bool, out: &mut dyn Write)
     crate::output::write_atomic(path, new.as_bytes()).map_err(WorkbookError::Io)?;
     writeln!(out, "updated: {}", path.display())?;
     Ok(0)
-}
-
-/// Refreshes (or with `check` verifies) the block `errata` of the course's appendix
-/// `dir/errata.md`, when the file exists: per chapter, its verdict counts and every claim
-/// that is an erratum or an approximation, with its statement (which states the
-/// correction or the limit). Returns 1 when `check` finds it stale, else 0.
-fn render_errata_appendix(
-    dir: &Path,
-    reports: &[ChapterReport],
-    check: bool,
-    out: &mut dyn Write,
-) -> Result<i32> {
-    use crate::report::Verdict;
-    use std::fmt::Write as _;
-    let path = dir.join("errata.md");
-    let Ok(text) = std::fs::read_to_string(&path) else {
-        return Ok(0);
-    };
-    let mut body = String::new();
-    for (n, r) in reports.iter().enumerate() {
-        let file = CHAPTERS
-            .iter()
-            .find(|i| i.id == r.chapter)
-            .and_then(|i| {
-                i.markdown_path()
-                    .file_name()
-                    .map(|f| f.to_string_lossy().to_string())
-            })
-            .unwrap_or_default();
-        let _ = writeln!(body, "## {}. {}\n", n + 1, r.title);
-        let _ = writeln!(
-            body,
-            "[Chapter {}]({file}), section {} of the document, `workbook {}`: {} claims, {} confirmed (+{} consistency checks), {} errata, {} approximations, {} failed.\n",
-            n + 1,
-            r.section,
-            r.chapter,
-            r.claims.len(),
-            r.confirmed(),
-            r.consistency_checks(),
-            r.count(Verdict::Erratum),
-            r.count(Verdict::Approximation),
-            r.count(Verdict::Failed)
-        );
-        let mut listed = 0;
-        for (verdict, label) in [
-            (Verdict::Erratum, "erratum"),
-            (Verdict::Approximation, "approximation"),
-        ] {
-            for c in r.claims.iter().filter(|c| c.verdict == verdict) {
-                listed += 1;
-                let _ = writeln!(
-                    body,
-                    "- **{}** ({label}; section {}; evidence: {}): {}",
-                    c.id,
-                    c.section,
-                    c.check.as_str(),
-                    c.statement
-                );
-            }
-        }
-        if listed > 0 {
-            body.push('\n');
-        }
-    }
-    let new = fill_blocks(&text, &|n| (n == "errata").then(|| body.clone()))
-        .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
-    refresh(&path, &text, &new, check, out)
 }
 
 #[cfg(test)]

@@ -5,11 +5,20 @@
 //! The unit vector along the stick from C to P is `e = (sin theta, cos theta)` and
 //! `n = (cos theta, -sin theta)` is orthogonal to it (the document's x' and z').
 //!
+//! Rotations: the motion is in the x-z plane, so an angular velocity or a moment points
+//! along the normal of that plane, `j` (the y axis), never along `k`, the vertical (the
+//! mistake of the document's C.15, chapter 6). With x to the right and z up, `j` points
+//! into the page; this module counts rotations counter-clockwise as seen on the page,
+//! i.e. about `-j`: a rate `omega` here is the component of the angular velocity along
+//! `-j`, and for the stick's lean `theta` (clockwise, P to the right of C) it is
+//! `omega = -theta'`.
+//!
 //! For a body of mass m and moment of inertia `I_G` about its centre of mass G, a
 //! contact point C at `r = C - G` has the mobility (inverse mass)
-//! `W = 1/m * Id + perp(r) perp(r)^T / I_G`, with `perp(r) = k x r = (-r_z, r_x)`:
-//! an impulse J at C changes the velocity of C by `W J` (translation `J/m` plus the
-//! rotation `(r x J)/I_G` carrying C along `perp(r)`). The effective mass matrix is
+//! `W = 1/m * Id + perp(r) perp(r)^T / I_G`, with `perp(r) = (-j) x r = (-r_z, r_x)`
+//! (`r` turned counter-clockwise by 90 degrees): an impulse J at C changes the velocity of
+//! C by `W J` (translation `J/m` plus the rotation `cross(r, J)/I_G`, the moment's
+//! component along `-j`, carrying C along `perp(r)`). The effective mass matrix is
 //! `M = W^-1`. A massless rod with a tip mass has `I_G = 0` about G = P: its mobility
 //! across the rod is infinite and `M = m e e^T` (rank one), the limit `I_G -> 0`.
 
@@ -52,12 +61,15 @@ pub fn stick_normal(theta_rad: f64) -> Vector2<f64> {
     Vector2::new(theta_rad.cos(), -theta_rad.sin())
 }
 
-/// `k x r`: the velocity direction of a point at `r` under a positive rotation.
+/// `(-j) x r = (-r_z, r_x)`: the velocity direction of a point at `r` under a positive
+/// (counter-clockwise, about `-j`) rotation; `j` is the normal of the x-z plane.
 pub fn perp(r: Vector2<f64>) -> Vector2<f64> {
     Vector2::new(-r.y, r.x)
 }
 
-/// The planar cross product `r x j` (its k component).
+/// The planar cross product of `r` and an impulse or force `J`: the component of
+/// `r x J` along `-j` (the normal of the x-z plane), `r_x J_z - r_z J_x`, positive for a
+/// counter-clockwise moment.
 pub fn cross(r: Vector2<f64>, j: Vector2<f64>) -> f64 {
     r.x * j.y - r.y * j.x
 }
@@ -139,7 +151,7 @@ pub fn impulse_for_velocity_change(
         m,   0.0, 0.0, -1.0, 0.0,   // formula: m dvG_x = J_x
         0.0, m,   0.0, 0.0,  -1.0,  // formula: m dvG_z = J_z
         0.0, 0.0, i,   r.y,  -r.x,  // formula: I domega = r_x J_z - r_z J_x
-        1.0, 0.0, p.x, 0.0,  0.0,   // formula: dv_C = dv_G + domega k x r
+        1.0, 0.0, p.x, 0.0,  0.0,   // formula: dv_C = dv_G + domega (-j) x r
         0.0, 1.0, p.y, 0.0,  0.0,
     );
     let b = Vector5::new(0.0, 0.0, 0.0, dv.x, dv.y);

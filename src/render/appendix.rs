@@ -1,0 +1,145 @@
+//! The appendix "The document's errata and claims" (`chapters/errata.md`): the audit
+//! material of every chapter, generated beside the lessons rather than inside them.
+//!
+//! The file is course text with one section per chapter; its generated blocks are named
+//! `<chapter-id>:<table>`, where `<table>` is any block name a chapter text may use
+//! (`claims`, `results`, or a table the chapter adds with
+//! [`crate::report::ChapterReport::table`]), or `summary`: the chapter's verdict counts
+//! and every claim that is an erratum or an approximation, with its statement (which
+//! states the correction or the limit). The prose around the blocks (the readings, the
+//! kinds of evidence, the coverage of the document's sections) is written by hand.
+
+use super::{block_names, table_of};
+use crate::chapters::CHAPTERS;
+use crate::error::{Result, WorkbookError};
+use crate::report::{ChapterReport, Verdict};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// File name of the appendix in the course-text folder.
+pub const FILE: &str = "errata.md";
+
+/// The appendix in `dir` with its text, when it exists and holds generated blocks; a
+/// file that `render` would have to rewrite and cannot is an output error naming it.
+pub fn read(dir: &Path, check: bool) -> Result<Option<(PathBuf, String)>> {
+    let path = dir.join(FILE);
+    let Ok(text) = std::fs::read_to_string(&path) else {
+        return Ok(None);
+    };
+    if block_names(&text).is_empty() {
+        return Ok(None);
+    }
+    if !check {
+        crate::output::probe_file(&path).map_err(|e| WorkbookError::Output {
+            flag: "--dir".into(),
+            path: path.display().to_string(),
+            why: e.to_string(),
+        })?;
+    }
+    Ok(Some((path, text)))
+}
+
+/// Whether a block of the appendix `text` names chapter `id` (`<id>:<table>`).
+pub fn names_chapter(text: &str, id: &str) -> bool {
+    block_names(text)
+        .iter()
+        .any(|n| n.split_once(':').is_some_and(|(c, _)| c == id))
+}
+
+/// `text` with every block `<chapter-id>:<table>` filled from that chapter's report.
+pub fn fill(text: &str, reports: &[ChapterReport]) -> std::result::Result<String, String> {
+    super::fill_blocks(text, &|name| {
+        let (id, table) = name.split_once(':')?;
+        let report = reports.iter().find(|r| r.chapter == id)?;
+        match table {
+            "summary" => Some(summary(report)),
+            other => table_of(report, other),
+        }
+    })
+}
+
+/// The chapter's verdict counts, then its errata and approximations, one line each.
+pub fn summary(r: &ChapterReport) -> String {
+    let (number, file) = CHAPTERS
+        .iter()
+        .find(|i| i.id == r.chapter)
+        .map(|i| {
+            let file = i.markdown_path();
+            let name = file.file_name().map(|f| f.to_string_lossy().to_string());
+            (i.number, name.unwrap_or_default())
+        })
+        .unwrap_or_default();
+    let mut body = String::new();
+    let _ = writeln!(
+        body,
+        "[Chapter {number}]({file}), section {} of the document, `workbook {}`: {} claims, {} confirmed (+{} consistency checks), {} errata, {} approximations, {} failed.\n",
+        r.section,
+        r.chapter,
+        r.claims.len(),
+        r.confirmed(),
+        r.consistency_checks(),
+        r.count(Verdict::Erratum),
+        r.count(Verdict::Approximation),
+        r.count(Verdict::Failed)
+    );
+    for (verdict, label) in [
+        (Verdict::Erratum, "erratum"),
+        (Verdict::Approximation, "approximation"),
+    ] {
+        for c in r.claims.iter().filter(|c| c.verdict == verdict) {
+            let _ = writeln!(
+                body,
+                "- **{}** ({label}; section {}; evidence: {}): {}",
+                c.id,
+                c.section,
+                c.check.as_str(),
+                c.statement
+            );
+        }
+    }
+    body
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn repository_file(path: &str) -> String {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        std::fs::read_to_string(root.join(path)).expect(path)
+    }
+
+    /// Every chapter has its section in the appendix (its summary and its claims), and
+    /// its lesson links there; a chapter added to the registry without them fails here.
+    #[test]
+    fn every_chapter_has_a_section_and_links_to_it() {
+        let text = repository_file(&format!("chapters/{FILE}"));
+        let names = block_names(&text);
+        for info in CHAPTERS.iter() {
+            for table in ["summary", "claims"] {
+                let name = format!("{}:{table}", info.id);
+                assert!(
+                    names.contains(&name),
+                    "chapters/{FILE} lacks the block {name}"
+                );
+            }
+            let lesson = repository_file(&info.markdown_path().to_string_lossy());
+            assert!(
+                lesson.contains(&format!("]({FILE}#")),
+                "{} does not link to its section of the appendix",
+                info.markdown_path().display()
+            );
+        }
+    }
+
+    #[test]
+    fn blocks_are_named_by_chapter() {
+        let text = "a\n<!-- BEGIN generated:x-y:claims -->\n<!-- END -->\n";
+        assert!(names_chapter(text, "x-y"));
+        assert!(!names_chapter(text, "x"));
+        assert_eq!(
+            fill(text, &[]),
+            Err("unknown generated block 'x-y:claims'".into())
+        );
+    }
+}
