@@ -83,7 +83,7 @@ fn painleve() {
     let after = run.trace.iter().find(|s| s.t_s > ev.t_s).expect("a sample");
     let end = run.trace.last().expect("a sample");
     let imp = run.impacts.first();
-    let samples: Vec<String> = [0.3, 0.6, 0.7, 0.75, 0.8, 0.81]
+    let samples: Vec<String> = [0.3, 0.6, 0.7, 0.75, 0.8, 0.81, 0.814, 0.8145]
         .iter()
         .filter_map(|&t| run.trace.iter().find(|s| s.t_s >= t - 1e-9))
         .map(|s| format!("{{\"t_s\": {:.6}, \"mode\": \"{}\", \"state\": {}}}", s.t_s, s.mode.name(), centre_json(&md, &s.y)))
