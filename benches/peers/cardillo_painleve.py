@@ -26,6 +26,7 @@ Run: python3 benches/peers/cardillo_painleve.py --help
 """
 import argparse
 import json
+import math
 import os
 import subprocess
 import sys
@@ -102,7 +103,9 @@ def as_cardillo(w):
     gap = w["first_sample_after"]["t_s"] - w["painleve_time_s"]
     after = [s["vx_g_mps"], s["vz_g_mps"] + G * gap, s["omega_radps"]]
     e = w["end"]["state"]
-    return after, [e["x_g_m"], e["z_g_m"], e["theta_rad"] + 1.5707963267948966], [e["vx_g_mps"], e["vz_g_mps"], e["omega_radps"]]
+    # cardillo's x is the centre's from x = 0; the workbook's C starts at x = 0, so its
+    # centre starts at s cos(31 deg) to the left
+    return after, [e["x_g_m"] + math.cos(math.radians(31.0)), e["z_g_m"], e["theta_rad"] + 1.5707963267948966], [e["vx_g_mps"], e["vz_g_mps"], e["omega_radps"]]
 
 
 def main():
@@ -134,6 +137,13 @@ def main():
     print("workbook samples (t, phi, vx_G, vz_G, phi'): " + "; ".join(
         "%.3f %.4f %.4f %.4f %.4f" % (x["t_s"], x["state"]["theta_rad"] + 1.5707963267948966, x["state"]["vx_g_mps"],
                                       x["state"]["vz_g_mps"], x["state"]["omega_radps"]) for x in w["samples"]))
+    # chapter 8, section 1, slide right (sigma = -1) on a still floor, no spring: F_z = M N / D,
+    # D = I_G + M l_G^2 sin(theta) (sin(theta) + mu cos(theta)), N = I_G (g - l_G theta'^2 cos(theta))
+    for x in w["samples"][-2:]:
+        th, om = x["state"]["theta_rad"], x["state"]["omega_radps"]
+        d = 1 / 3 + math.sin(th) * (math.sin(th) + 5 / 3 * math.cos(th))
+        n = (G - om * om * math.cos(th)) / 3
+        print("workbook at t = %.4f s: D = %.2e kg m^2, N = %.3f, F_z = M N / D = %.0f N" % (x["t_s"], d, n, n / d))
     with tempfile.TemporaryDirectory() as tmp:
         root = cardillo_tree(a.cardillo, tmp)
         if root is None:
