@@ -9,13 +9,19 @@
 //!   (`chapters::stick_with_inertia::evidence::glocker_scene`, 1.5 s), with the state
 //!   right after the impact without collision and at the end
 //!   (`benches/peers/cardillo_painleve.py`).
+//! - `peer_runs toothpick <jamming|authors> <duration_s>`: chapter 8's uniform stick (no tip
+//!   mass, 1 kg rod) from rest, mean speed of C with the model's impact law (Darboux-Keller)
+//!   and with Moreau-Jean's velocity-level law (`ImpactLaw::VelocityCoulomb`, the law of
+//!   time-stepping codes such as MuJoCo) (`benches/peers/mujoco_stick.py`).
 
 use locomotion_workbook::numerics::hybrid::Options;
 use locomotion_workbook::numerics::ode::{Method, StepControl};
 use locomotion_workbook::physics::stick::run::{initial_state, simulate_stick, Recording};
 use locomotion_workbook::physics::stick::{authors_scene, jamming_scene, StickModel};
-use locomotion_workbook::physics::stick_inertia::run::simulate_inertia;
-use locomotion_workbook::physics::stick_inertia::{InertiaModel, InertiaParams, OM, TH, VXC};
+use locomotion_workbook::physics::stick_inertia::run::{run_from_rest, simulate_inertia};
+use locomotion_workbook::physics::stick_inertia::{
+    ImpactLaw, InertiaModel, InertiaParams, OM, TH, VXC,
+};
 use locomotion_workbook::physics::stick::StickParams;
 use std::time::Instant;
 
@@ -107,6 +113,30 @@ fn painleve() {
     );
 }
 
+fn toothpick(scene: &str, duration_s: f64) {
+    let mut base = match scene {
+        "authors" => authors_scene(10.0),
+        _ => jamming_scene(9.81),
+    };
+    base.mass_kg = 0.0;
+    let p = InertiaParams {
+        base,
+        rod_mass_kg: 1.0,
+        restitution: 0.0,
+    };
+    let speed = |law| {
+        let mut md = InertiaModel::new(p);
+        md.impact_law = law;
+        let r = run_from_rest(&md, duration_s, &options(1e-10), 0.0);
+        format!("{{\"mean_velocity_mps\": {:.9}, \"outcome\": \"{}\", \"impacts\": {}}}", r.mean_velocity_mps, r.outcome.label(), r.impact_count)
+    };
+    println!(
+        "{{\"darboux_keller\": {}, \"velocity_coulomb\": {}}}",
+        speed(ImpactLaw::DarbouxKeller),
+        speed(ImpactLaw::VelocityCoulomb)
+    );
+}
+
 fn main() {
     let a: Vec<String> = std::env::args().collect();
     match a.get(1).map(String::as_str) {
@@ -116,8 +146,12 @@ fn main() {
             a.get(4).and_then(|s| s.parse().ok()).unwrap_or(20),
         ),
         Some("painleve") => painleve(),
+        Some("toothpick") => toothpick(
+            a.get(2).map_or("jamming", String::as_str),
+            a.get(3).and_then(|s| s.parse().ok()).unwrap_or(10.0),
+        ),
         _ => {
-            eprintln!("usage: peer_runs stick <jamming|authors> <duration_s> <repeats> | peer_runs painleve");
+            eprintln!("usage: peer_runs stick <jamming|authors> <duration_s> <repeats> | painleve | toothpick <jamming|authors> <duration_s>");
             std::process::exit(2);
         }
     }
