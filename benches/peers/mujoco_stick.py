@@ -16,7 +16,7 @@ touches the plate with a small sphere at C (radius --foot-radius-m, friction mu,
 The plate is a heavy box on a slide joint whose position and velocity are set to
 delta cos(omega t) and -delta omega sin(omega t) before every step (a mocap body would
 carry no velocity into the contact). Contacts are MuJoCo's soft ones: solref =
-(--solref-steps x the time step, damping ratio 1), default solimp; friction cone
+(--solref-steps x the time step, --damping-ratio, default 1), default solimp; friction cone
 pyramidal (default) or elliptic (--cone).
 
 For each time step of --steps it prints the mean horizontal speed of C, x_C(T)/T, beside
@@ -65,7 +65,7 @@ def model_xml(p, h, a):
       <joint name="plate_z" type="slide" axis="0 0 1"/>
       <inertial pos="0 0 0" mass="100" diaginertia="1 1 1"/>
       <geom type="box" pos="0 0 -0.01" size="100 0.5 0.01" friction="{p['mu']} 0 0"
-            solref="{a.solref_steps * h} 1" solimp="{a.solimp}"/>
+            solref="{a.solref_steps * h} {a.damping_ratio}" solimp="{a.solimp}"/>
     </body>
     <body name="rod">
       <joint name="x" type="slide" axis="1 0 0"/>
@@ -73,7 +73,7 @@ def model_xml(p, h, a):
       <joint name="theta" type="hinge" axis="0 1 0" stiffness="{p['stiffness_nm_per_rad']}"
              springref="{p['theta0_rad']}" damping="{p['damping_nms_per_rad']}"/>
       <inertial pos="0 0 {L / 2}" mass="{M}" diaginertia="{i_g} {i_g} {i_g * 1e-3}"/>
-      <geom type="sphere" size="{r}" pos="0 0 {r}" friction="{p['mu']} 0 0" solref="{a.solref_steps * h} 1"
+      <geom type="sphere" size="{r}" pos="0 0 {r}" friction="{p['mu']} 0 0" solref="{a.solref_steps * h} {a.damping_ratio}"
             solimp="{a.solimp}"/>
       <geom type="capsule" fromto="0 0 {2 * r} 0 0 {L}" size="{r / 2}" contype="0" conaffinity="0"/>
     </body>
@@ -115,6 +115,7 @@ def main():
     p.add_argument("--steps", default="1e-4,3e-5,1e-5", help="MuJoCo time steps (s)")
     p.add_argument("--cone", default="pyramidal", choices=["pyramidal", "elliptic"])
     p.add_argument("--solref-steps", type=float, default=2.0, help="contact time constant in time steps (>= 2)")
+    p.add_argument("--damping-ratio", type=float, default=1.0, help="solref's damping ratio (1: critical)")
     p.add_argument("--solimp", default="0.9 0.95 0.001", help="contact impedance (MuJoCo's default)")
     p.add_argument("--foot-radius-m", type=float, default=1e-4)
     a = p.parse_args()
@@ -129,8 +130,8 @@ def main():
     v_wb = wb["results"]["mean_velocity_mps"]
     print("scene %s, uniform rod %g kg, %g s; workbook (event-driven, rigid contact): %.5f m/s (%s, %d impacts)"
           % (a.scene, a.rod_mass_kg, a.duration_s, v_wb, wb["results"]["outcome"], wb["results"]["impacts"]))
-    print("MuJoCo %s, cone %s, solref (%g h, 1), solimp (%s), foot sphere r = %g m:"
-          % (mujoco.__version__, a.cone, a.solref_steps, a.solimp, a.foot_radius_m))
+    print("MuJoCo %s, cone %s, solref (%g h, %g), solimp (%s), foot sphere r = %g m:"
+          % (mujoco.__version__, a.cone, a.solref_steps, a.damping_ratio, a.solimp, a.foot_radius_m))
     for h in [float(x) for x in a.steps.split(",")]:
         r = run(par, h, a)
         if "fell_at_s" in r:
