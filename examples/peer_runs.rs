@@ -17,12 +17,12 @@
 use locomotion_workbook::numerics::hybrid::Options;
 use locomotion_workbook::numerics::ode::{Method, StepControl};
 use locomotion_workbook::physics::stick::run::{initial_state, simulate_stick, Recording};
+use locomotion_workbook::physics::stick::StickParams;
 use locomotion_workbook::physics::stick::{authors_scene, jamming_scene, StickModel};
 use locomotion_workbook::physics::stick_inertia::run::{run_from_rest, simulate_inertia};
 use locomotion_workbook::physics::stick_inertia::{
     ImpactLaw, InertiaModel, InertiaParams, OM, TH, VXC,
 };
-use locomotion_workbook::physics::stick::StickParams;
 use std::time::Instant;
 
 /// DOP853 at rtol = atol (the chapters' default integrator).
@@ -83,7 +83,10 @@ fn painleve() {
     y[VXC] = 30.0;
     let run = simulate_inertia(&md, 0.0, y, 1.5, &options(1e-10), 1e-4);
     let Some(ev) = run.painleve.first() else {
-        println!("{{\"error\": \"no Painleve event\", \"outcome\": \"{}\"}}", run.outcome.label());
+        println!(
+            "{{\"error\": \"no Painleve event\", \"outcome\": \"{}\"}}",
+            run.outcome.label()
+        );
         return;
     };
     let after = run.trace.iter().find(|s| s.t_s > ev.t_s).expect("a sample");
@@ -92,7 +95,14 @@ fn painleve() {
     let samples: Vec<String> = [0.3, 0.6, 0.7, 0.75, 0.8, 0.81, 0.814, 0.8145]
         .iter()
         .filter_map(|&t| run.trace.iter().find(|s| s.t_s >= t - 1e-9))
-        .map(|s| format!("{{\"t_s\": {:.6}, \"mode\": \"{}\", \"state\": {}}}", s.t_s, s.mode.name(), centre_json(&md, &s.y)))
+        .map(|s| {
+            format!(
+                "{{\"t_s\": {:.6}, \"mode\": \"{}\", \"state\": {}}}",
+                s.t_s,
+                s.mode.name(),
+                centre_json(&md, &s.y)
+            )
+        })
         .collect();
     println!(
         "{{\"painleve_time_s\": {:.9}, \"theta_rad\": {:.9}, \"mu_p\": {:.9}, \"case\": \"{}\", \"impulse_ns\": {}, \"first_sample_after\": {{\"t_s\": {:.6}, \"mode\": \"{}\", \"state\": {}}}, \"end\": {{\"t_s\": {:.6}, \"mode\": \"{}\", \"state\": {}}}, \"outcome\": \"{}\", \"impacts\": {}, \"samples\": [{}]}}",
@@ -128,7 +138,12 @@ fn toothpick(scene: &str, duration_s: f64) {
         let mut md = InertiaModel::new(p);
         md.impact_law = law;
         let r = run_from_rest(&md, duration_s, &options(1e-10), 0.0);
-        format!("{{\"mean_velocity_mps\": {:.9}, \"outcome\": \"{}\", \"impacts\": {}}}", r.mean_velocity_mps, r.outcome.label(), r.impact_count)
+        format!(
+            "{{\"mean_velocity_mps\": {:.9}, \"outcome\": \"{}\", \"impacts\": {}}}",
+            r.mean_velocity_mps,
+            r.outcome.label(),
+            r.impact_count
+        )
     };
     println!(
         "{{\"darboux_keller\": {}, \"velocity_coulomb\": {}}}",

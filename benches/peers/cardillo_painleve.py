@@ -120,11 +120,13 @@ def main():
         sys.stderr.write("cardillo not found: set CARDILLO_DIR or --cardillo (a checkout of "
                          "github.com/cardilloproject/cardillo); skipped\n")
         return
-    probe = subprocess.run([a.python, "-c", "import numpy, scipy, matplotlib, tqdm, dill, cachetools, trimesh, meshio"],
-                           capture_output=True, text=True)
+    probe = subprocess.run([a.python, "-c", "import numpy, scipy, matplotlib, tqdm, dill, cachetools, trimesh, meshio\n"
+                            "assert numpy.__version__ < '2' and scipy.__version__ < '1.13', "
+                            "'numpy %s, scipy %s: cardillo of 2024 needs numpy < 2, scipy 1.12' "
+                            "% (numpy.__version__, scipy.__version__)"], capture_output=True, text=True)
     if probe.returncode != 0:
-        sys.stderr.write("cardillo's dependencies are missing under %s (%s); skipped\n"
-                         % (a.python, probe.stderr.strip().splitlines()[-1]))
+        sys.stderr.write("cardillo's dependencies are missing under %s (%s); skipped (see the venv in "
+                         "benches/peers/README.md)\n" % (a.python, probe.stderr.strip().splitlines()[-1]))
         return
     w = workbook()
     after, q_end, u_end = as_cardillo(w)
