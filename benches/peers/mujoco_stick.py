@@ -13,9 +13,10 @@ slide z and a hinge about y at C, so the hinge angle is the angle from the verti
 the hinge's own spring (stiffness k, springref theta_0) and damping gamma are exactly the
 chapter's couple; its inertia is given (mass M at L/2, M L^2/12 about the centre); it
 touches the plate with a small sphere at C (radius --foot-radius-m, friction mu, condim 3).
-The plate is a heavy box on a slide joint whose position and velocity are set to
-delta cos(omega t) and -delta omega sin(omega t) before every step (a mocap body would
-carry no velocity into the contact). Contacts are MuJoCo's soft ones: solref =
+The plate is a heavy box (1e4 kg, gravity compensated) on a slide joint whose position
+and velocity are set to delta cos(omega t) and -delta omega sin(omega t) before every
+step, with a force giving it the acceleration -delta omega^2 cos(omega t) in the step's
+contact solve (a mocap body would carry no velocity into the contact). Contacts are MuJoCo's soft ones: solref =
 (--solref-steps x the time step, --damping-ratio, default 1), default solimp; friction cone
 pyramidal (default) or elliptic (--cone).
 
@@ -38,6 +39,7 @@ except ImportError as e:
     sys.stderr.write("mujoco_stick.py: %s (pip install mujoco); skipped\n" % e)
     sys.exit(0)
 
+PLATE_KG = 1e4  # heavy: the rod's reaction moves it by 1e-4 of the rod's own response
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
@@ -61,9 +63,9 @@ def model_xml(p, h, a):
   <compiler angle="radian"/>
   <option timestep="{h}" gravity="0 0 {-p['g_mps2']}" cone="{a.cone}"/>
   <worldbody>
-    <body name="plate">
+    <body name="plate" gravcomp="1">
       <joint name="plate_z" type="slide" axis="0 0 1"/>
-      <inertial pos="0 0 0" mass="100" diaginertia="1 1 1"/>
+      <inertial pos="0 0 0" mass="{PLATE_KG}" diaginertia="1 1 1"/>
       <geom type="box" pos="0 0 -0.01" size="100 0.5 0.01" friction="{p['mu']} 0 0"
             solref="{a.solref_steps * h} {a.damping_ratio}" solimp="{a.solimp}"/>
     </body>
@@ -83,7 +85,6 @@ def model_xml(p, h, a):
 
 def run(p, h, a):
     m = mujoco.MjModel.from_xml_string(model_xml(p, h, a))
-    m.body_gravcomp[m.body("plate").id] = 1.0
     d = mujoco.MjData(m)
     w = 2 * math.pi * p["frequency_hz"]
     delta = p["gamma"] * p["g_mps2"] / w ** 2
@@ -98,6 +99,7 @@ def run(p, h, a):
     for n in range(steps):
         t = n * h
         d.qpos[0], d.qvel[0] = delta * math.cos(w * t), -delta * w * math.sin(w * t)
+        d.qfrc_applied[0] = PLATE_KG * -delta * w * w * math.cos(w * t)  # its acceleration in the step's solve
         mujoco.mj_step(m, d)
         if abs(d.qpos[3]) > math.pi / 2:
             return {"fell_at_s": (n + 1) * h}
