@@ -14,7 +14,7 @@
 //! round-off (~1e-15 per event, a few hundred events): 1e-12 (m/s or s). DP5 runs of the
 //! linear law at rtol = atol = 1e-12: 1e-9 m/s (see `claims::LINEAR_TOL`).
 
-use locomotion_workbook::chapters::asymmetric_shaking::claims::slip_transient;
+use locomotion_workbook::chapters::asymmetric_shaking::sims::slip_transient;
 use locomotion_workbook::chapters::asymmetric_shaking::sims::{run_block, Law, Numerics, Window};
 use locomotion_workbook::cli::run_cli;
 use locomotion_workbook::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion, Sawtooth};
