@@ -130,8 +130,8 @@ fn quick_json_has_every_result_and_no_failed_claim() {
             "flight_time_over_period",
             "contact_fraction",
             "mean_velocity_mps",
-            "mu_eff",
-            "mu_eff_law",
+            "mu_eff_from_force",
+            "mu_eff_from_drift",
         ],
     );
     let b = boundaries(&v);
@@ -171,7 +171,7 @@ fn quick_summary_snapshot() {
             "flight_time_over_period",
             "contact_fraction",
             "mean_velocity_mps",
-            "mu_eff_law",
+            "mu_eff_from_drift",
         ],
     );
     s.push_str(&format!(
