@@ -101,20 +101,46 @@ pub fn drift_closed_form(doc: &Statements, ev: &Evidence) -> Claim {
     .close(drift_doc, ev.main.mean_velocity_mps, ev.tol.v_mps)
 }
 
-/// The closed-form steady regime against the simulated one.
+/// The closed-form steady regime against the simulated one, on the scene and 5 % on
+/// either side of the threshold (a threshold 10 % off either way mislabels one side).
 pub fn drift_regime(doc: &Statements, ev: &Evidence) -> Claim {
-    let regime_doc = match (ev.regime, doc.regime_reversed) {
-        (r, false) => r,
-        (Regime::StickBoth, true) => Regime::StickSlow,
-        (_, true) => Regime::StickBoth,
+    let saw = ev.scene.saw;
+    let (a, b) = (saw.slow_velocity_mps, saw.fast_velocity_mps);
+    let ratio = ev.scene.k_mps2() * saw.fast_duration_s() / (a + b); // formula: mu g t_fast/(v_slow + v_fast)
+    let predicted = |r: f64| {
+        let both = r >= doc.regime_threshold; // formula: stick in both iff mu g t_fast >= v_slow + v_fast
+        if both != doc.regime_reversed {
+            Regime::StickBoth
+        } else {
+            Regime::StickSlow
+        }
     };
-    let regime_sim = if ev.main.stuck_in_backward_stroke {
-        Regime::StickBoth
-    } else {
-        Regime::StickSlow
+    let simulated = |stuck_back: bool| {
+        if stuck_back {
+            Regime::StickBoth
+        } else {
+            Regime::StickSlow
+        }
     };
-    Claim::draft(Check::Simulation, "drift-regime", "3.2.2", "Steady regime from the closed form (μ g t_fast >= v_slow + v_fast: stick in both strokes) equals the simulated one (does the block stick while the plate moves back?).")
-        .exact(regime_doc.label(), regime_sim.label())
+    let s = ev.slip_sides;
+    let labels = |r: [Regime; 3]| r.map(Regime::label).join(", ");
+    let expected = labels([
+        predicted(ratio),
+        predicted(0.95 * s.threshold),
+        predicted(1.05 * s.threshold),
+    ]);
+    let computed = labels([
+        simulated(ev.main.stuck_in_backward_stroke),
+        simulated(s.stuck_back.0),
+        simulated(s.stuck_back.1),
+    ]);
+    Claim::draft(
+        Check::Simulation,
+        "drift-regime",
+        "3.2.2",
+        &format!("Steady regime from the closed form (μ g t_fast >= v_slow + v_fast: stick in both strokes) equals the simulated one (does the block stick while the plate moves back?), on the scene (μ g t_fast = {ratio:.3} (v_slow + v_fast)) and at 0.95 and 1.05 (v_slow + v_fast) with the same speeds (a threshold 10 % off either way mislabels one of them)."),
+    )
+    .exact(expected.as_str(), computed.as_str())
 }
 
 /// The closed-form lock time against the simulated first stick.

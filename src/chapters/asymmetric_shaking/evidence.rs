@@ -5,12 +5,11 @@
 //! against this evidence.
 
 use super::sims::{
-    biharmonic, drift_after_lock, run_block, scaled, slip_transient, transient, DriftRun, Law,
-    Numerics, Window,
+    biharmonic, run_block, scaled, slip_transient, transient, DriftRun, Law, Numerics, Window,
 };
 use super::work::{work_precision, WorkRow};
 use super::Scene;
-use crate::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion};
+use crate::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion, Sawtooth};
 use crate::physics::sawtooth::biharmonic::{always_slipping_drift, stick_forever_gamma};
 use crate::physics::sawtooth::{
     drift_velocity_mps, lock_time_s, slipping_impulse_per_mass, steady_regime, Mirrored, Regime,
@@ -88,6 +87,9 @@ pub struct Sides {
     pub above_mps: f64,
     /// The closed-form drift at 0.95 of it (m/s; the sawtooth only).
     pub closed_below_mps: f64,
+    /// Did the block stick while the plate moved back, at 0.95 and at 1.05 of it (the
+    /// sawtooth only)?
+    pub stuck_back: (bool, bool),
 }
 
 /// Everything the claims and figures read.
@@ -283,11 +285,20 @@ fn slip_sides(sc: &Scene, measured: usize) -> Sides {
     let num = Numerics::default();
     let below = scaled(&sc.saw, k, 0.95);
     let above = scaled(&sc.saw, k, 1.05);
+    let after_lock = |saw: &Sawtooth| {
+        let w = Window {
+            transient: transient(saw, k),
+            measured,
+        };
+        run_block(coul, saw, 0.0, w, &num, (0.0, 0.0), 0.0)
+    };
+    let (rb, ra) = (after_lock(&below), after_lock(&above));
     Sides {
         threshold: 1.0,
-        below_mps: drift_after_lock(coul, &below, k, measured, &num),
-        above_mps: drift_after_lock(coul, &above, k, measured, &num),
+        below_mps: rb.mean_velocity_mps,
+        above_mps: ra.mean_velocity_mps,
         closed_below_mps: drift_velocity_mps(&below, k),
+        stuck_back: (rb.stuck_in_backward_stroke, ra.stuck_in_backward_stroke),
     }
 }
 
@@ -324,5 +335,6 @@ fn stick_sides(sc: &Scene, vb: f64) -> Sides {
         below_mps: drift_at(0.95 * g_stick),
         above_mps: drift_at(1.05 * g_stick),
         closed_below_mps: 0.0,
+        stuck_back: (false, false),
     }
 }

@@ -13,6 +13,7 @@ pub mod claims;
 pub mod evidence;
 mod figures;
 mod mutations;
+pub use mutations::PRINTS_NO_NUMBER;
 pub mod sims;
 pub mod statements;
 pub mod work;

@@ -17,6 +17,8 @@ pub struct Statements {
     /// The regime test mu g t_fast >= v_slow + v_fast for sticking in both strokes
     /// (`false`); `true` reverses it.
     pub regime_reversed: bool,
+    /// ... with the threshold k (v_slow + v_fast) (derived k = 1).
+    pub regime_threshold: f64,
     /// The workbook's lock time, scaled by this factor (derived 1).
     pub lock_factor: f64,
     /// v_d(mirror) = s v_d (derived s = -1).
@@ -45,6 +47,7 @@ pub const PRINTED: Statements = Statements {
     nonlinear_changes: true,
     drift_factor: 1.0,
     regime_reversed: false,
+    regime_threshold: 1.0,
     lock_factor: 1.0,
     mirror_sign: -1.0,
     printed_fast_left: true,

@@ -26,6 +26,7 @@ pub mod claims;
 pub mod evidence;
 mod figures;
 mod mutations;
+pub use mutations::PRINTS_NO_NUMBER;
 pub mod regimes;
 pub mod scene;
 pub mod statements;
