@@ -127,7 +127,9 @@ fn drift_vs_asymmetry(sc: &Scene, quick: bool, dir: &Path) -> Result<Vec<String>
             .line(&format!("always slipping, Γₓ = {gamma}"), theory)
             .points(&format!("simulation, Γₓ = {gamma}"), pts);
     }
-    save_panels(&[p1, p2], 2, dir, "drift-vs-asymmetry")
+    // Stacked for the book's column (~750 px): an 800-px panel shows at ~94 %, its
+    // 12.9-px ticks and legend at ~12 px (side by side, 1600 px at 47 %: 6 px).
+    save_panels(&[p1, p2], 1, dir, "drift-vs-asymmetry")
 }
 
 /// Bi-harmonic drift against the drive number.
@@ -239,5 +241,7 @@ fn work_precision(rows: &[WorkRow], dir: &Path) -> Result<Vec<String>> {
             .hline(1e-12, "claim tolerance"),
         );
     }
-    save_panels(&charts, 2, dir, "work-precision")
+    // Stacked for the book's column (~750 px): an 800-px panel shows at ~94 %, its
+    // 12.9-px ticks and legend at ~12 px (side by side, 1600 px at 47 %: 6 px).
+    save_panels(&charts, 1, dir, "work-precision")
 }
