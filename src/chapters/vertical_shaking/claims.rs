@@ -16,6 +16,7 @@ pub fn all(doc: &Statements, ev: &Evidence) -> Vec<Claim> {
         viscous_constant(doc, ev),
         sliding_contact(doc, ev),
         small_force(doc, ev),
+        landing_sticks(doc, ev),
         flight_time(doc, ev),
         bias_law(doc, ev),
         period_doublings(doc, ev),
@@ -346,4 +347,32 @@ pub fn chladni_patterns(_doc: &Statements, ev: &Evidence) -> Claim {
     )
     .values(">= 0.99", end, "fraction, 0.01 of Γ from the band's edge")
     .confirmed_if(end >= 0.99)
+}
+
+/// "With an applied sideways load that is less than mu times the average normal force,
+/// there is motion during the flight phase that is extinguished at the next collision":
+/// with Coulomb friction at the impact it holds only below b* (closed form of
+/// [`super::landing`]), located on the exact model by bisection on the bias.
+pub fn landing_sticks(doc: &Statements, ev: &Evidence) -> Claim {
+    let ((located, half), closed) = ev.landing;
+    let closed = doc.landing_closed_form_factor * closed;
+    // The located b* is known to its last bracket; the closed form to round-off (60
+    // halvings; the flight by 200 bisections): the bracket plus 1e-9.
+    let tol = half + 1e-9;
+    let printed_holds = located >= doc.landing_stick_bound;
+    let corrected_holds = (located - closed).abs() <= tol;
+    let draft = Claim::draft(
+        Check::SecondMethod,
+        "landing-extinguishes-flight-motion",
+        "3.1.2",
+        &format!(
+            "As printed: for a sideways load F < μ m g the motion gained in flight is extinguished at the next collision (the law's 'instantaneous sticking collisions'). With Coulomb friction at the impact (e = 0, tangential impulse at most μ times the normal one) it holds only while the sideways speed at landing, gained by slip before take-off and by the bias in flight, is at most μ |v_n|: for F < b* μ m g, b* = {closed:.4} at Γ = 2 (closed form: slip from sin(ω t_s) = (1 - b)/Γ to the take-off, ballistic flight, landing speed v_n; μ cancels). Located on the exact model by bisection on b (first landing after a take-off from rest sticks or not): {located:.4} ± {half:.1e}. Above b*, the landing slides and the law's sticking-collision picture fails although F < μ m g: an unstated assumption (small F), not an error of the law's range."
+        ),
+    )
+    .values(closed, located, tol);
+    if printed_holds {
+        draft.confirmed_if(corrected_holds)
+    } else {
+        draft.approximation_if(corrected_holds)
+    }
 }

@@ -48,6 +48,10 @@ pub struct Evidence {
     pub doublings: Vec<(u32, f64, f64, String, String)>,
     /// The Chladni demonstration.
     pub chladni: Chladni,
+    /// The largest bias (fraction of mu m g) whose landing after a flight from rest
+    /// sticks, at Gamma = 2: located on the exact model `(b*, half bracket)`, and the
+    /// closed form of [`super::landing`].
+    pub landing: ((f64, f64), f64),
     /// The law's decomposition: per Gamma, the drifts of the exact model, sticking
     /// impacts, no contact slip, and the four steps to the law (m/s).
     pub decomposition: Vec<[f64; 8]>,
@@ -152,6 +156,14 @@ pub fn gather(scene: &Scene, quick: bool) -> Evidence {
         law_range: law_range(scene, quick),
         doublings: doublings(scene, quick),
         chladni: demonstrate(scene, quick, transient, observe),
+        landing: {
+            let at2 = scene.at_gamma(2.0);
+            let iters = if quick { 12 } else { 20 };
+            (
+                super::landing::located_bound(&at2, iters),
+                super::landing::closed_form_bound(&at2),
+            )
+        },
         decomposition: decomposition(scene, transient, observe),
         work: work_precision(scene, quick),
         stats,

@@ -25,6 +25,7 @@ pub mod chladni;
 pub mod claims;
 pub mod evidence;
 mod figures;
+pub mod landing;
 mod mutations;
 pub use mutations::PRINTS_NO_NUMBER;
 pub mod regimes;

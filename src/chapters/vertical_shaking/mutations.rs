@@ -49,6 +49,16 @@ pub const PRINTS_NO_NUMBER: &[(&str, &str)] = &[
 /// number are listed in [`PRINTS_NO_NUMBER`].
 const EDITS: &[DocEdit<Statements>] = &[
     (
+        "landing-extinguishes-flight-motion",
+        "b* -> 1.1 b* (10 %)",
+        |d| d.landing_closed_form_factor = 1.1,
+    ),
+    (
+        "landing-extinguishes-flight-motion",
+        "b* -> 0.9 b* (10 %)",
+        |d| d.landing_closed_form_factor = 0.9,
+    ),
+    (
         "contact-fraction-to-zero",
         "fraction -> 0 replaced by -> 0.05",
         |d| d.contact_limit = 0.05,

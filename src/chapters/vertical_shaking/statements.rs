@@ -27,6 +27,12 @@ pub struct Statements {
     pub gamma_n_factor: f64,
     /// The drift threshold 1 + s b (derived s = -1).
     pub bias_sign: f64,
+    /// The flight's sideways motion is extinguished at the next collision for biases up
+    /// to this fraction of mu m g (printed: 1, "a sideways load that is less than mu
+    /// times the average normal force").
+    pub landing_stick_bound: f64,
+    /// The workbook's closed-form b* of `super::landing`, scaled by this factor (derived 1).
+    pub landing_closed_form_factor: f64,
 }
 
 /// The document as printed.
@@ -42,4 +48,6 @@ pub const PRINTED: Statements = Statements {
     pd_scale: 1.0,
     gamma_n_factor: 1.0,
     bias_sign: -1.0,
+    landing_stick_bound: 1.0,
+    landing_closed_form_factor: 1.0,
 };
