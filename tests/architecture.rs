@@ -16,14 +16,10 @@ use std::path::{Path, PathBuf};
 
 /// Cycles inside chapter folders still to be taken apart (chapter, files in the cycle,
 /// sorted). Issue 20 of the tracker names them.
-const KNOWN_CYCLES: &[(&str, &[&str])] = &[
-    ("asymmetric_shaking", &["claims", "work"]),
-    (
-        "stick_state_machine",
-        &["claims", "rule_claims", "slide_rules"],
-    ),
-    ("vertical_shaking", &["claims", "doc"]),
-];
+const KNOWN_CYCLES: &[(&str, &[&str])] = &[(
+    "stick_state_machine",
+    &["claims", "rule_claims", "slide_rules"],
+)];
 
 /// Every `.rs` file below `dir`.
 fn rust_files(dir: &Path) -> Vec<PathBuf> {

@@ -14,7 +14,7 @@
 //! round-off (~1e-15 per event, a few hundred events): 1e-12 (m/s or s). DP5 runs of the
 //! linear law at rtol = atol = 1e-12: 1e-9 m/s (see `claims::LINEAR_TOL`).
 
-use locomotion_workbook::chapters::asymmetric_shaking::claims::slip_transient;
+use locomotion_workbook::chapters::asymmetric_shaking::sims::slip_transient;
 use locomotion_workbook::chapters::asymmetric_shaking::sims::{run_block, Law, Numerics, Window};
 use locomotion_workbook::cli::run_cli;
 use locomotion_workbook::physics::plate::{Axis, Biharmonic, Harmonic, PlateMotion, Sawtooth};
@@ -384,4 +384,43 @@ fn bad_input_exits_2_with_one_line_naming_the_flag() {
         "--no-figures",
     ]);
     assert_eq!(code, 0, "{err}");
+}
+
+/// Issue 21: every claim of the chapter that is not a consistency check has a mutation
+/// that changes a number its statement prints by 10 % (its description says "10 %")
+/// and flips its verdict, or is listed in `PRINTS_NO_NUMBER` with the reason (and
+/// then some mutation flips it).
+#[test]
+fn every_document_claim_flips_under_a_10_percent_mutation() {
+    use locomotion_workbook::chapters::{self, Context};
+    use locomotion_workbook::report::Check;
+    let report =
+        chapters::run_default("asymmetric-shaking", &Context::headless(true)).expect("runs");
+    let mutations = chapters::mutations("asymmetric-shaking");
+    let listed = chapters::asymmetric_shaking::PRINTS_NO_NUMBER;
+    let mut missing = Vec::new();
+    for c in report
+        .claims
+        .iter()
+        .filter(|c| c.check != Check::Consistency)
+    {
+        let no_number = listed.iter().any(|(id, _)| *id == c.id);
+        let flips = mutations
+            .iter()
+            .filter(|m| m.claim_id == c.id && (no_number || m.description.contains("10 %")))
+            .any(|m| (m.run)().verdict != c.verdict);
+        if !flips {
+            missing.push(c.id.clone());
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "claims without a flipping 10 % mutation: {missing:?}"
+    );
+    for (id, why) in listed {
+        assert!(
+            report.claims.iter().any(|c| c.id == *id) && !why.is_empty(),
+            "listed claim {id} is not in the report"
+        );
+    }
 }

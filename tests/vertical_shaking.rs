@@ -130,8 +130,8 @@ fn quick_json_has_every_result_and_no_failed_claim() {
             "flight_time_over_period",
             "contact_fraction",
             "mean_velocity_mps",
-            "mu_eff",
-            "mu_eff_law",
+            "mu_eff_from_force",
+            "mu_eff_from_drift",
         ],
     );
     let b = boundaries(&v);
@@ -171,7 +171,7 @@ fn quick_summary_snapshot() {
             "flight_time_over_period",
             "contact_fraction",
             "mean_velocity_mps",
-            "mu_eff_law",
+            "mu_eff_from_drift",
         ],
     );
     s.push_str(&format!(
@@ -192,4 +192,42 @@ fn quick_summary_snapshot() {
         s.push_str(&format!("near {g}: {near:.3}\n"));
     }
     insta::assert_snapshot!(s);
+}
+
+/// Issue 21: every claim of the chapter that is not a consistency check has a mutation
+/// that changes a number its statement prints by 10 % (its description says "10 %")
+/// and flips its verdict, or is listed in `PRINTS_NO_NUMBER` with the reason (and
+/// then some mutation flips it).
+#[test]
+fn every_document_claim_flips_under_a_10_percent_mutation() {
+    use locomotion_workbook::chapters::{self, Context};
+    use locomotion_workbook::report::Check;
+    let report = chapters::run_default("vertical-shaking", &Context::headless(true)).expect("runs");
+    let mutations = chapters::mutations("vertical-shaking");
+    let listed = chapters::vertical_shaking::PRINTS_NO_NUMBER;
+    let mut missing = Vec::new();
+    for c in report
+        .claims
+        .iter()
+        .filter(|c| c.check != Check::Consistency)
+    {
+        let no_number = listed.iter().any(|(id, _)| *id == c.id);
+        let flips = mutations
+            .iter()
+            .filter(|m| m.claim_id == c.id && (no_number || m.description.contains("10 %")))
+            .any(|m| (m.run)().verdict != c.verdict);
+        if !flips {
+            missing.push(c.id.clone());
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "claims without a flipping 10 % mutation: {missing:?}"
+    );
+    for (id, why) in listed {
+        assert!(
+            report.claims.iter().any(|c| c.id == *id) && !why.is_empty(),
+            "listed claim {id} is not in the report"
+        );
+    }
 }

@@ -2,8 +2,9 @@
 //! drift against the asymmetry, drift against the drive number, the regime map, and
 //! the work-precision chart. Sweeps here feed figures only.
 
-use super::claims::{biharmonic, drift_after_lock, slip_transient, Traces};
-use super::sims::{run_block, Law, Numerics, Window};
+use super::evidence::Evidence;
+use super::sims::{biharmonic, drift_after_lock, run_block, slip_transient, Law, Numerics, Window};
+use super::work::WorkRow;
 use super::Scene;
 use crate::error::Result;
 use crate::physics::plate::{PlateMotion, Sawtooth};
@@ -14,17 +15,23 @@ use crate::sweep::{linspace, logspace, par_map};
 use std::path::Path;
 
 /// Draws every figure into `dir`; returns the written paths.
-pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<String>> {
+pub fn draw(sc: &Scene, quick: bool, ev: &Evidence, dir: &Path) -> Result<Vec<String>> {
     let mut paths = Vec::new();
+    paths.extend(velocities(sc, ev, dir)?);
+    paths.extend(drift_vs_asymmetry(sc, quick, dir)?);
+    paths.extend(drift_vs_drive(sc, quick, dir)?);
+    paths.extend(regime_map(sc, dir)?);
+    if let Some((_, rows)) = &ev.work {
+        paths.extend(work_precision(rows, dir)?);
+    }
+    Ok(paths)
+}
+
+/// Velocities over a few periods, both laws.
+fn velocities(sc: &Scene, ev: &Evidence, dir: &Path) -> Result<Vec<String>> {
     let saw = sc.saw;
     let k = sc.k_mps2();
-    let coul = Law::Coulomb {
-        k_mps2: sc.k_mps2(),
-    };
-    let num = Numerics::default();
-    let measured = if quick { 2 } else { 6 };
-
-    // 1. Velocities over a few periods, both laws.
+    let (coulomb, linear) = (&ev.main.trace, &ev.linear.trace);
     let ms = |v: &[(f64, f64, f64)], i: usize| -> Vec<(f64, f64)> {
         v.iter()
             .map(|p| (p.0 * 1e3, if i == 1 { p.1 } else { p.2 }))
@@ -34,7 +41,7 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     // The closed-form periodic velocity from the first whole period after the lock.
     let t_lock = lock_time_s(&saw, k, 0.0);
     let t_from = (t_lock / saw.period_s()).ceil() * saw.period_s();
-    let t_to = tr.coulomb.last().map_or(t_from, |p| p.0);
+    let t_to = coulomb.last().map_or(t_from, |p| p.0);
     let steady: Vec<(f64, f64)> = linspace(t_from, t_to, 800)
         .into_iter()
         .map(|t| (t * 1e3, steady_velocity_mps(&saw, k, t)))
@@ -44,8 +51,8 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
         "time (ms)",
         "velocity (m/s)",
     )
-    .dashed("plate", ms(&tr.coulomb, 2))
-    .line("block (simulated)", ms(&tr.coulomb, 1))
+    .dashed("plate", ms(coulomb, 2))
+    .line("block (simulated)", ms(coulomb, 1))
     .points(
         "closed-form periodic velocity",
         steady.into_iter().step_by(10).collect(),
@@ -57,12 +64,19 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
         "time (ms)",
         "velocity (m/s)",
     )
-    .dashed("plate", ms(&tr.linear, 2))
-    .line("block (simulated)", ms(&tr.linear, 1))
+    .dashed("plate", ms(linear, 2))
+    .line("block (simulated)", ms(linear, 1))
     .hline(0.0, "zero");
-    paths.extend(save_panels(&[c1, c2], 1, dir, "velocities")?);
+    save_panels(&[c1, c2], 1, dir, "velocities")
+}
 
-    // 2. Drift against the asymmetry: sawtooth speed ratio, bi-harmonic eps.
+/// Drift against the asymmetry: sawtooth speed ratio, bi-harmonic eps.
+fn drift_vs_asymmetry(sc: &Scene, quick: bool, dir: &Path) -> Result<Vec<String>> {
+    let saw = sc.saw;
+    let k = sc.k_mps2();
+    let coul = Law::Coulomb { k_mps2: k };
+    let num = Numerics::default();
+    let measured = if quick { 2 } else { 6 };
     let ratios = linspace(1.25, 6.0, if quick { 4 } else { 12 });
     let a = saw.slow_velocity_mps;
     let sim_r: Vec<(f64, f64)> = par_map(&ratios, "sawtooth ratio sweep", |&r| {
@@ -113,9 +127,18 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
             .line(&format!("always slipping, Γₓ = {gamma}"), theory)
             .points(&format!("simulation, Γₓ = {gamma}"), pts);
     }
-    paths.extend(save_panels(&[p1, p2], 2, dir, "drift-vs-asymmetry")?);
+    // Stacked for the book's column (~750 px): an 800-px panel shows at ~94 %, its
+    // 12.9-px ticks and legend at ~12 px (side by side, 1600 px at 47 %: 6 px).
+    save_panels(&[p1, p2], 1, dir, "drift-vs-asymmetry")
+}
 
-    // 3. Bi-harmonic drift against the drive number.
+/// Bi-harmonic drift against the drive number.
+fn drift_vs_drive(sc: &Scene, quick: bool, dir: &Path) -> Result<Vec<String>> {
+    let saw = sc.saw;
+    let k = sc.k_mps2();
+    let coul = Law::Coulomb { k_mps2: k };
+    let num = Numerics::default();
+    let vb = 0.5 * (saw.slow_velocity_mps + saw.fast_velocity_mps);
     let gammas = logspace(0.5, 100.0, if quick { 6 } else { 30 });
     let mut c3 = Chart::new(
         "Bi-harmonic drift against the drive number",
@@ -148,9 +171,14 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
         );
     }
     c3 = c3.hline(1.0, "limit εV");
-    paths.extend(save_chart(&c3, dir, "drift-vs-drive")?);
+    save_chart(&c3, dir, "drift-vs-drive")
+}
 
-    // 4. Regime map of the sawtooth (closed form) with the boundary y = r (r + 1).
+/// Regime map of the sawtooth (closed form) with the boundary y = r (r + 1).
+fn regime_map(sc: &Scene, dir: &Path) -> Result<Vec<String>> {
+    let saw = sc.saw;
+    let a = saw.slow_velocity_mps;
+    let y = sc.k_mps2() * saw.slow_duration_s / a;
     let rs = linspace(1.05, 4.0, 60);
     let ys = linspace(0.05, 20.0, 60);
     let values: Vec<Vec<f64>> = ys
@@ -178,42 +206,42 @@ pub fn draw(sc: &Scene, quick: bool, tr: &Traces, dir: &Path) -> Result<Vec<Stri
     ))
     .overlay(Series::points("this scene", here))
     .legend(Legend::UpperLeft); // over the uniform zero-drift region, off the boundary
-    paths.extend(save_heatmap(&h, dir, "regime-map")?);
+    save_heatmap(&h, dir, "regime-map")
+}
 
-    // 5. Work-precision (full mode: the rows come from the checks).
-    if !tr.work.is_empty() {
-        let floor = 1e-17; // errors of exactly 0 drawn at the floor
-        let mut charts = Vec::new();
-        for drive in ["sawtooth", "bi-harmonic"] {
-            let pick = |key: &str| -> Vec<(f64, f64)> {
-                tr.work
-                    .iter()
-                    .filter(|w| w.0 == drive && w.1.starts_with(key))
-                    .map(|w| ((w.2 as f64).max(1.0), w.3.max(floor)))
-                    .collect()
-            };
-            let reference = if drive == "sawtooth" {
-                "closed-form drift"
-            } else {
-                "closed-form-flow run"
-            };
-            charts.push(
-                Chart::new(
-                    &format!("{drive}: error of the Coulomb drift against work"),
-                    "right-hand-side evaluations",
-                    &format!("|drift - {reference}| (m/s)"),
-                )
-                .log_x()
-                .log_y()
-                .line_points("DP5, located events (tol 1e-3 … 1e-12)", pick("DP5"))
-                .line_points(
-                    "RK4 fixed step, no event location (T/15 … T/1023)",
-                    pick("RK4"),
-                )
-                .hline(1e-12, "claim tolerance"),
-            );
-        }
-        paths.extend(save_panels(&charts, 2, dir, "work-precision")?);
+/// Work-precision: the error of the Coulomb drift against the work, both drives.
+fn work_precision(rows: &[WorkRow], dir: &Path) -> Result<Vec<String>> {
+    let floor = 1e-17; // errors of exactly 0 drawn at the floor
+    let mut charts = Vec::new();
+    for drive in ["sawtooth", "bi-harmonic"] {
+        let pick = |key: &str| -> Vec<(f64, f64)> {
+            rows.iter()
+                .filter(|w| w.0 == drive && w.1.starts_with(key))
+                .map(|w| ((w.2 as f64).max(1.0), w.3.max(floor)))
+                .collect()
+        };
+        let reference = if drive == "sawtooth" {
+            "closed-form drift"
+        } else {
+            "closed-form-flow run"
+        };
+        charts.push(
+            Chart::new(
+                &format!("{drive}: error of the Coulomb drift against work"),
+                "right-hand-side evaluations",
+                &format!("|drift - {reference}| (m/s)"),
+            )
+            .log_x()
+            .log_y()
+            .line_points("DP5, located events (tol 1e-3 … 1e-12)", pick("DP5"))
+            .line_points(
+                "RK4 fixed step, no event location (T/15 … T/1023)",
+                pick("RK4"),
+            )
+            .hline(1e-12, "claim tolerance"),
+        );
     }
-    Ok(paths)
+    // Stacked for the book's column (~750 px): an 800-px panel shows at ~94 %, its
+    // 12.9-px ticks and legend at ~12 px (side by side, 1600 px at 47 %: 6 px).
+    save_panels(&charts, 1, dir, "work-precision")
 }

@@ -1,14 +1,21 @@
 //! Chapter `asymmetric-shaking` (document section 3.2): linear friction cannot make a
 //! block walk on a zero-mean shaken plate, Coulomb friction can.
 //!
-//! Closed forms: `physics::sawtooth` (two-velocity sawtooth, linear orbit) and
-//! `physics::sawtooth::biharmonic` (smooth drive). Simulation: the event-driven block
-//! model of `physics::block` ([`sims`]). Claims: [`claims`]. Figures: `asymmetric_shaking/figures.rs`.
+//! The chapter shape (ARCHITECTURE.md): the document's statements as data
+//! ([`statements`]), the runs computed once ([`evidence`], on the event-driven block
+//! model of `physics::block` driven by [`sims`], and the work-precision ladder of
+//! [`work`]), the claims as pure functions of both ([`claims`]), the figures, and the
+//! falsification mutations ([`mutations`]: edits of the statements judged by the same
+//! claims). Closed forms: `physics::sawtooth` (two-velocity sawtooth, linear orbit) and
+//! `physics::sawtooth::biharmonic` (smooth drive).
 
 pub mod claims;
-pub mod doc;
+pub mod evidence;
 mod figures;
+mod mutations;
+pub use mutations::PRINTS_NO_NUMBER;
 pub mod sims;
+pub mod statements;
 pub mod work;
 
 use super::{info, Context};
@@ -160,12 +167,6 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
 
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
-    run_with(args, ctx, &doc::Doc::PRINTED)
-}
-
-/// Runs the chapter with the document's statements `doc` (a wrong variant in the
-/// falsification tests).
-pub fn run_with(args: &Args, ctx: &Context, doc: &doc::Doc) -> Result<ChapterReport> {
     let scene = validate(args, ctx.g())?;
     let mut r = info(ID).expect("registered chapter").report();
     r.param("mu", scene.mu);
@@ -175,15 +176,30 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &doc::Doc) -> Result<ChapterRep
     r.param("fast_duration_s", scene.saw.fast_duration_s());
     r.param("viscous_c_per_s", scene.c_per_s);
     r.param("g_mps2", scene.g_mps2);
-    let traces = claims::check_all(&scene, ctx.quick, ctx.figure_dir(ID).is_some(), &mut r, doc);
-    if let Some(dir) = ctx.figure_dir(ID) {
+    let dir = ctx.figure_dir(ID);
+    let ev = evidence::gather(&scene, ctx.quick, dir.is_some());
+    r.result("drift_velocity_coulomb_mps", ev.main.mean_velocity_mps);
+    r.result("drift_velocity_formula_mps", ev.v_formula_mps);
+    r.result("regime", ev.regime.label());
+    r.result("drift_velocity_mirrored_mps", ev.mirrored_mps);
+    r.result("lock_time_s", ev.lock_time_s);
+    r.result("drift_velocity_linear_mps", ev.linear.drifts_mps[0]);
+    r.result("drift_velocity_biharmonic_mps", ev.biharmonic_mps.0);
+    r.result("drift_velocity_biharmonic_formula_mps", ev.biharmonic_mps.1);
+    for c in claims::all(&statements::PRINTED, &ev) {
+        r.claim(c);
+    }
+    if let Some((table, _)) = &ev.work {
+        r.table("work_precision", table.clone());
+    }
+    if let Some(dir) = dir {
         r.figures
-            .extend(figures::draw(&scene, ctx.quick, &traces, &dir)?);
+            .extend(figures::draw(&scene, ctx.quick, &ev, &dir)?);
     }
     Ok(r)
 }
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    doc::mutations()
+    mutations::mutations()
 }

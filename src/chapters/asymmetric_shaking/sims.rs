@@ -8,7 +8,8 @@ use crate::numerics::ode::{Method, Stats, StepControl};
 use crate::physics::block::{
     simulate_block_observed, BlockMode, BlockOptions, BlockParams, BlockStop, BlockSystem,
 };
-use crate::physics::plate::PlateMotion;
+use crate::physics::plate::{Biharmonic, PlateMotion, Sawtooth};
+use crate::physics::sawtooth::lock_time_s;
 
 /// The friction law of the chapter's block (the plates move horizontally only, so the
 /// normal force per unit mass is g and Coulomb friction is bounded by `k = mu g`).
@@ -244,6 +245,48 @@ fn piecewise_constant<P: PlateMotion + ?Sized>(plate: &P) -> bool {
         && (0..64).all(|i| plate.ax_mps2((i as f64 + 0.5) * period / 64.0) == 0.0)
 }
 
+/// The window's ends on the plate's own breakpoint floats when there are some (so no
+/// sliver step is left between the last breakpoint and the end): `(t_a, t_b)` (s).
+fn window_ends<P: PlateMotion + ?Sized>(plate: &P, window: Window) -> (f64, f64) {
+    let period = plate.period_s();
+    let on_grid = |n: usize| {
+        let t = n as f64 * period;
+        match plate.breakpoint_after(t - 1e-9 * period) {
+            Some(b) if (b - t).abs() <= 1e-9 * period => b,
+            _ => t,
+        }
+    };
+    (
+        on_grid(window.transient),
+        on_grid(window.transient + window.measured),
+    )
+}
+
+/// The driver's options for a run from `v0_mps` at rest-frame start on `plate`.
+fn block_options<P: PlateMotion + ?Sized>(
+    plate: &P,
+    v0_mps: f64,
+    window: Window,
+    num: &Numerics,
+) -> BlockOptions {
+    // Fixed steps keep their own step length; otherwise a piecewise-constant plate
+    // needs one guard sample per period.
+    let fixed = matches!(num.hybrid.control, StepControl::Fixed { .. });
+    let samples_per_period = if piecewise_constant(plate) && !fixed {
+        1
+    } else {
+        num.samples_per_period
+    };
+    BlockOptions {
+        hybrid: num.hybrid,
+        closed_forms: num.closed_forms,
+        samples_per_period,
+        transient_periods: window.transient,
+        record_events: false,
+        start: (0.0, [0.0, v0_mps - plate.vx_mps(0.0), 0.0, 0.0]),
+    }
+}
+
 /// Runs a block that starts at x = 0 with velocity `v0_mps` at t = 0 on `plate` over
 /// `window`; traces `trace_s` every `trace_dt` (0: no trace).
 pub fn run_block<P: PlateMotion + ?Sized>(
@@ -255,28 +298,9 @@ pub fn run_block<P: PlateMotion + ?Sized>(
     trace_s: (f64, f64),
     trace_dt: f64,
 ) -> DriftRun {
-    let period = plate.period_s();
     let params = law.params();
     let sys = BlockSystem::new(params, plate);
-    // Fixed steps keep their own step length; otherwise a piecewise-constant plate
-    // needs one guard sample per period.
-    let fixed = matches!(num.hybrid.control, StepControl::Fixed { .. });
-    let samples_per_period = if piecewise_constant(plate) && !fixed {
-        1
-    } else {
-        num.samples_per_period
-    };
-    // Window ends on the plate's own breakpoint floats when there are some (so no
-    // sliver step is left between the last breakpoint and the end).
-    let on_grid = |n: usize| {
-        let t = n as f64 * period;
-        match plate.breakpoint_after(t - 1e-9 * period) {
-            Some(b) if (b - t).abs() <= 1e-9 * period => b,
-            _ => t,
-        }
-    };
-    let t_end = on_grid(window.transient + window.measured);
-    let win = (on_grid(window.transient), t_end);
+    let win = window_ends(plate, window);
     let mut w = Watch {
         sys: &sys,
         window: win,
@@ -290,15 +314,8 @@ pub fn run_block<P: PlateMotion + ?Sized>(
         ends: [None, None],
         trace: Vec::new(),
     };
-    let opts = BlockOptions {
-        hybrid: num.hybrid,
-        closed_forms: num.closed_forms,
-        samples_per_period,
-        transient_periods: window.transient,
-        record_events: false,
-        start: (0.0, [0.0, v0_mps - plate.vx_mps(0.0), 0.0, 0.0]),
-    };
-    let run = simulate_block_observed(&params, plate, t_end, &opts, &mut w);
+    let opts = block_options(plate, v0_mps, window, num);
+    let run = simulate_block_observed(&params, plate, win.1, &opts, &mut w);
     let mean = match w.ends {
         [Some(ya), Some(yb)] if window.measured > 0 && run.outcome == Outcome::Completed => {
             (yb.0 - ya.0) / (win.1 - win.0)
@@ -333,4 +350,53 @@ pub fn run_block<P: PlateMotion + ?Sized>(
 /// Mean block velocity over the window (m/s) of a run from rest.
 pub fn drift<P: PlateMotion + ?Sized>(law: Law, plate: &P, window: Window, num: &Numerics) -> f64 {
     run_block(law, plate, 0.0, window, num, (0.0, 0.0), 0.0).mean_velocity_mps
+}
+
+/// Whole periods for a block started at rest to settle on the bi-harmonic drive: the
+/// distance to the always-slipping orbit decays like `exp(-4 n / Gamma)` per period
+/// (measured: a factor 60 per 10 periods at Gamma = 10, 3.8 at Gamma = 30), so
+/// `10 + 8 Gamma` periods take an O(V) start below 1e-13 m/s.
+pub fn slip_transient(gamma: f64) -> usize {
+    10 + (8.0 * gamma).ceil() as usize
+}
+
+/// Whole periods from rest to the first stick (closed form) plus two: the window after
+/// it is periodic. (One period of margin: when the block reaches the slow speed exactly
+/// at a stroke's end, rounding decides whether it locks then or a period later.)
+pub fn transient(saw: &Sawtooth, k: f64) -> usize {
+    (lock_time_s(saw, k, 0.0) / saw.period_s()).floor() as usize + 2
+}
+
+/// Mean velocity (m/s) of a block from rest on `saw` under `law`, averaged over
+/// `measured` periods after the [`transient`] for friction `k_mps2 = mu g` (m/s^2).
+pub fn drift_after_lock(
+    law: Law,
+    saw: &Sawtooth,
+    k_mps2: f64,
+    measured: usize,
+    num: &Numerics,
+) -> f64 {
+    let window = Window {
+        transient: transient(saw, k_mps2),
+        measured,
+    };
+    drift(law, saw, window, num)
+}
+
+/// A sawtooth with the same speeds whose fast stroke lasts `ratio (a + b)/k`.
+pub fn scaled(saw: &Sawtooth, k: f64, ratio: f64) -> Sawtooth {
+    let tf = ratio * (saw.slow_velocity_mps + saw.fast_velocity_mps) / k;
+    Sawtooth {
+        slow_duration_s: tf * saw.fast_velocity_mps / saw.slow_velocity_mps,
+        ..*saw
+    } // formula: T_s = T_f b / a
+}
+
+/// The bi-harmonic plate with velocity amplitude `v` and drive number `gamma` for `k`.
+pub fn biharmonic(v: f64, gamma: f64, eps: f64, k: f64) -> Biharmonic {
+    Biharmonic {
+        velocity_amplitude_mps: v,
+        omega_rad_s: gamma * k / v,
+        asymmetry: eps,
+    } // formula: Gamma = V omega / (mu g)
 }

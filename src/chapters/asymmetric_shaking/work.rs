@@ -1,15 +1,14 @@
 //! The chapter's work-precision table (full mode only; also a figure): the sawtooth
 //! against its closed-form drift, the bi-harmonic drive against the closed-form-flow run.
 
-use super::claims::{biharmonic, slip_transient, transient};
-use super::sims::{run_block, Law, Numerics, Window};
+use super::sims::{biharmonic, run_block, slip_transient, transient, Law, Numerics, Window};
 use crate::physics::plate::{PlateMotion, Sawtooth};
-use crate::report::{fmt_num, ChapterReport};
+use crate::report::fmt_num;
 
 /// Work-precision rows: `(drive, method, rhs evals, |drift error| m/s)`.
 pub type WorkRow = (&'static str, String, u64, f64);
 
-/// Fills the table `work_precision` of `r` and the rows of the figure, for the sawtooth
+/// The table `work_precision` (markdown) and the rows of the figure, for the sawtooth
 /// `saw` (friction `k` = mu g, m/s^2; closed-form drift `v_formula`, m/s) and the
 /// bi-harmonic drive of velocity amplitude `vb` (m/s).
 pub fn work_precision(
@@ -18,9 +17,8 @@ pub fn work_precision(
     vb: f64,
     v_formula: f64,
     num: &Numerics,
-    r: &mut ChapterReport,
-    work: &mut Vec<WorkRow>,
-) {
+) -> (String, Vec<WorkRow>) {
+    let mut work = Vec::new();
     let saw = *saw;
     let coul = Law::Coulomb { k_mps2: k };
     let mut rows = String::from("| drive | method | setting | rhs evaluations | event-location evaluations | error of the drift (m/s) |\n|---|---|---|---|---|---|\n");
@@ -87,5 +85,5 @@ pub fn work_precision(
             work.push((drive, method.to_string(), d.stats.rhs_evals, err));
         }
     }
-    r.table("work_precision", rows);
+    (rows, work)
 }

@@ -19,15 +19,8 @@
 //!   `Gamma(x, y) <= 1 - b`, a band around each nodal line that narrows as `Gamma_0` grows.
 
 use super::scene::{run as run_scene, Model, Scene};
-use crate::error::Result;
 use crate::numerics::ode::{Integrator, Method, StepControl};
-use crate::plot::{
-    save_drawing, save_heatmap, Chart, HeatMap, Legend, Series, WithInset, CHART_SIZE,
-};
-use crate::report::{ChapterReport, Check, Claim, Verdict};
-use serde_json::json;
 use std::f64::consts::PI;
-use std::path::Path;
 
 /// Side of the square plate (m).
 pub const PLATE_SIDE_M: f64 = 0.2;
@@ -231,125 +224,20 @@ pub fn demonstrate(scene: &Scene, quick: bool, transient: usize, observe: usize)
     }
 }
 
-/// The drift-threshold claim: the threshold located by bisection on the block model
-/// against the closed form 1 + s b (printed reading: s = -1, drift once Gamma > 1 - b).
-pub fn threshold_claim(located: f64, bias_sign: f64, accuracy: f64) -> Claim {
-    let closed = 1.0 + bias_sign * BIAS; // formula: drift iff Gamma > 1 - b
-    Claim::close(
-        "chladni-drift-threshold",
-        "3.1.2",
-        &format!(
-            "A block pushed by a bias b μ m g on a vertically vibrating plate drifts once Γ > 1 - b, not only once it flies (Γ > 1): the normal force m g (1 - Γ sin(ω t)) falls to m g (1 - Γ), and friction can no longer hold the bias there. b = {BIAS}: the threshold located by bisection on the block model's mean velocity (tolerance: the last bracket's half-width). Consistency check: the block model's stick test with the normal force m g (1 - Γ sin(ω t)) is the stated argument, so its threshold is 1 - b by construction; no document could fail it here (issue 21), so it is not counted as confirmation."
-        ),
-        closed,
-        located,
-        accuracy,
-    )
-    .with_check(Check::Consistency)
-}
-
-/// Adds the demonstration's claims and its `chladni` result to `r`.
-pub fn report(r: &mut ChapterReport, c: &Chladni, bias_sign: f64) {
+/// The demonstration's `chladni` result (JSON).
+pub fn summary(c: &Chladni) -> serde_json::Value {
     let (located, closed) = c.threshold;
-    r.claim(threshold_claim(located, bias_sign, c.threshold_accuracy));
     let (start, end) = c.in_band;
-    // The bias is imposed down the amplitude's slope, towards the nodal band: that the
-    // grains gather there follows from the imposed direction and the threshold above.
-    // A consistency check of the demonstration, not evidence about the document.
-    r.claim(Claim::judged(
-        "chladni-small-bias-patterns",
-        "3.1.2",
-        &format!(
-            "\"On a modally vibrating plate that has a large enough vibration amplitude, only a small bias would be needed to guide particles to the mode's nodes to form Chladni patterns.\" Grains (the chapter's block, μ = 0.4, e = 0) on a square plate in the mode cos(π x/L) cos(3 π y/L) + cos(3 π x/L) cos(π y/L) with Γ₀ = {GAMMA0} at the antinodes, pushed by a bias of {BIAS} μ m g down the amplitude's slope: fraction of grains resting in the band around the nodal lines where Γ <= 1 - b ({:.0} % of the plate) at the end (at the start: {:.0} %). Consistency: the bias is imposed towards the nodes, so the gathering follows from its direction; the evidence is the drift threshold above (a small bias moves grains wherever Γ > 1 - b).",
-            100.0 * c.band_area_fraction,
-            100.0 * start
-        ),
-        ">= 0.99",
-        end,
-        "fraction, 0.01 of Γ from the band's edge",
-        end >= 0.99,
-        Verdict::Confirmed,
-    ));
-    r.result(
-        "chladni",
-        json!({
-            "gamma0": GAMMA0,
-            "bias": BIAS,
-            "drift_threshold_gamma": located,
-            "drift_threshold_closed_form": closed,
-            "band_area_fraction": c.band_area_fraction,
-            "grains_in_band_start": start,
-            "grains_in_band_end": end,
-            "simulated_time_s": c.t_end_s,
-        }),
-    );
-}
-
-/// Draws the plate with its grains at the start and at the end, and the drift table.
-pub fn draw(dir: &Path, c: &Chladni) -> Result<Vec<String>> {
-    let n = 200;
-    let xs = crate::sweep::linspace(0.0, 100.0 * PLATE_SIDE_M, n);
-    let values: Vec<Vec<f64>> = xs
-        .iter()
-        .map(|&y| xs.iter().map(|&x| gamma_at(x / 100.0, y / 100.0)).collect())
-        .collect();
-    let cm = |ps: &[[f64; 2]]| ps.iter().map(|p| (100.0 * p[0], 100.0 * p[1])).collect();
-    let mut paths = Vec::new();
-    for (name, when, grains) in [
-        ("chladni-start", "at the start", &c.grains.0),
-        (
-            "chladni",
-            &*format!("after {:.0} s", c.t_end_s),
-            &c.grains.1,
-        ),
-    ] {
-        let map = HeatMap::new(
-            &format!("Grains on a plate in a mode, bias b = {BIAS}: {when}"),
-            "x (cm)",
-            "y (cm)",
-            xs.clone(),
-            xs.clone(),
-            values.clone(),
-            "local peak acceleration Γ (1)",
-        )
-        .overlay(Series::points("grains", cm(grains)).color(7))
-        .legend(Legend::Hidden);
-        paths.extend(save_heatmap(&map, dir, name)?);
-    }
-    let table: Vec<(f64, f64)> = c
-        .table
-        .gammas
-        .iter()
-        .copied()
-        .zip(c.table.speeds_mps.iter().copied())
-        .collect();
-    let mm = |v: &[(f64, f64)]| v.iter().map(|p| (p.0, p.1 * 1e3)).collect::<Vec<_>>();
-    let main = Chart::new(
-        &format!("Drift of the block with bias b = {BIAS} (block model)"),
-        "Γ = δ_z ω² / g",
-        "mean velocity (mm/s)",
-    )
-    .line("", mm(&table))
-    .legend(Legend::Hidden);
-    // the inset: the table's points around the threshold, which joins the grid
-    let near: Vec<(f64, f64)> = table
-        .iter()
-        .copied()
-        .filter(|p| (0.8..=1.2).contains(&p.0))
-        .collect();
-    let inset = Chart::new("near the threshold", "Γ", "mm/s")
-        .line_points("", mm(&near))
-        .vline(c.threshold.1, "1 − b")
-        .vline(c.threshold.0, "located")
-        .vline(1.0, "Γ = 1: flights")
-        .legend(Legend::Hidden);
-    let fig = WithInset {
-        main,
-        inset,
-        frac: (0.11, 0.09, 0.37, 0.45),
-    };
-    paths.extend(save_drawing(&fig, dir, "chladni-drift", CHART_SIZE)?);
-    Ok(paths)
+    serde_json::json!({
+        "gamma0": GAMMA0,
+        "bias": BIAS,
+        "drift_threshold_gamma": located,
+        "drift_threshold_closed_form": closed,
+        "band_area_fraction": c.band_area_fraction,
+        "grains_in_band_start": start,
+        "grains_in_band_end": end,
+        "simulated_time_s": c.t_end_s,
+    })
 }
 
 #[cfg(test)]

@@ -1,11 +1,13 @@
 //! Figures of the vertical-shaking chapter (only drawn when figures are on).
 
-use super::claims::gamma_n;
-use super::regimes::{Boundary, SweepPoint};
+use super::chladni::{gamma_at, Chladni, BIAS, PLATE_SIDE_M};
+use super::regimes::{gamma_n, Boundary, SweepPoint};
 use super::scene::Scene;
 use crate::error::Result;
 use crate::ladder as work;
-use crate::plot::{save_chart, Chart, Legend};
+use crate::plot::{
+    save_chart, save_drawing, save_heatmap, Chart, HeatMap, Legend, Series, WithInset, CHART_SIZE,
+};
 use std::path::Path;
 
 /// Draws every figure; returns the written paths.
@@ -126,4 +128,71 @@ fn regime_class(r: &super::regimes::Regime) -> &'static str {
         (_, _, true) => "rests, two or more flights per cycle",
         (_, _, false) => "never rests",
     }
+}
+
+/// The Chladni demonstration: draws the plate with its grains at the start and at the end, and the drift table.
+pub fn chladni(dir: &Path, c: &Chladni) -> Result<Vec<String>> {
+    let n = 200;
+    let xs = crate::sweep::linspace(0.0, 100.0 * PLATE_SIDE_M, n);
+    let values: Vec<Vec<f64>> = xs
+        .iter()
+        .map(|&y| xs.iter().map(|&x| gamma_at(x / 100.0, y / 100.0)).collect())
+        .collect();
+    let cm = |ps: &[[f64; 2]]| ps.iter().map(|p| (100.0 * p[0], 100.0 * p[1])).collect();
+    let mut paths = Vec::new();
+    for (name, when, grains) in [
+        ("chladni-start", "at the start", &c.grains.0),
+        (
+            "chladni",
+            &*format!("after {:.0} s", c.t_end_s),
+            &c.grains.1,
+        ),
+    ] {
+        let map = HeatMap::new(
+            &format!("Grains on a plate in a mode, bias b = {BIAS}: {when}"),
+            "x (cm)",
+            "y (cm)",
+            xs.clone(),
+            xs.clone(),
+            values.clone(),
+            "local peak acceleration Γ (1)",
+        )
+        .overlay(Series::points("grains", cm(grains)).color(7))
+        .legend(Legend::Hidden);
+        paths.extend(save_heatmap(&map, dir, name)?);
+    }
+    let table: Vec<(f64, f64)> = c
+        .table
+        .gammas
+        .iter()
+        .copied()
+        .zip(c.table.speeds_mps.iter().copied())
+        .collect();
+    let mm = |v: &[(f64, f64)]| v.iter().map(|p| (p.0, p.1 * 1e3)).collect::<Vec<_>>();
+    let main = Chart::new(
+        &format!("Drift of the block with bias b = {BIAS} (block model)"),
+        "Γ = δ_z ω² / g",
+        "mean velocity (mm/s)",
+    )
+    .line("", mm(&table))
+    .legend(Legend::Hidden);
+    // the inset: the table's points around the threshold, which joins the grid
+    let near: Vec<(f64, f64)> = table
+        .iter()
+        .copied()
+        .filter(|p| (0.8..=1.2).contains(&p.0))
+        .collect();
+    let inset = Chart::new("near the threshold", "Γ", "mm/s")
+        .line_points("", mm(&near))
+        .vline(c.threshold.1, "1 − b")
+        .vline(c.threshold.0, "located")
+        .vline(1.0, "Γ = 1: flights")
+        .legend(Legend::Hidden);
+    let fig = WithInset {
+        main,
+        inset,
+        frac: (0.11, 0.09, 0.37, 0.45),
+    };
+    paths.extend(save_drawing(&fig, dir, "chladni-drift", CHART_SIZE)?);
+    Ok(paths)
 }

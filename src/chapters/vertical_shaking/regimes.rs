@@ -3,6 +3,12 @@
 
 use super::scene::{run, Model, Scene, Stats};
 use crate::sweep::par_map;
+use std::f64::consts::PI;
+
+/// Gamma_n = sqrt(1 + (n pi)^2): a flight from rest lasts exactly n periods.
+pub fn gamma_n(n: f64) -> f64 {
+    (1.0 + (n * PI).powi(2)).sqrt() // formula: Gamma_n = sqrt(1 + (n pi)^2)
+}
 
 /// The character of the long-time motion.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -1,0 +1,152 @@
+//! Falsification: edits of the document's statements, each judged by the same claim
+//! functions ([`super::claims`]) on the evidence of the default scene in quick mode,
+//! computed once.
+
+use super::claims;
+use super::evidence::{gather, Evidence};
+use super::statements::{Statements, PRINTED};
+use crate::chapters::{default_args, Context};
+use crate::report::{Claim, DocEdit, Mutation};
+use std::sync::OnceLock;
+
+/// The default scene's evidence in quick mode, computed once per process.
+fn evidence() -> &'static Evidence {
+    static EV: OnceLock<Evidence> = OnceLock::new();
+    EV.get_or_init(|| {
+        let scene = super::validate(&default_args(), Context::G_DEFAULT_MPS2)
+            .expect("default flags are valid");
+        gather(&scene, true, false)
+    })
+}
+
+/// The claim `id` judged under the statements `doc`.
+fn judge(id: &str, doc: &Statements) -> Claim {
+    claims::all(doc, evidence())
+        .into_iter()
+        .find(|c| c.id == id)
+        .unwrap_or_else(|| panic!("no claim {id} in this chapter"))
+}
+
+/// The claims of the chapter that print no number a 10 % change could move, with the
+/// reason; their mutations flip the sign, inequality or statement instead.
+pub const PRINTS_NO_NUMBER: &[(&str, &str)] = &[
+    (
+        "nonlinear-law-changes-result",
+        "a statement that the result changes (a non-linear law gives a drift), no number: the mutation says it does not",
+    ),
+    (
+        "stroke-inequalities",
+        "inequalities between the two strokes (v_l > v_r, t_r > t_l), no number: the mutation prints the corrected ones",
+    ),
+    (
+        "drift-direction",
+        "a direction (the bias runs along the slow stroke), no number: the mutation reverses it",
+    ),
+];
+
+/// The falsification mutations (a data table): every document claim gets a 10 %
+/// change of a number its statement prints ("x -> 1.1 x"; thresholds both ways), and
+/// a sign or an inequality reversed where it states one. The claims that print no
+/// number are listed in [`PRINTS_NO_NUMBER`].
+const EDITS: &[DocEdit<Statements>] = &[
+    (
+        "linear-no-drift",
+        "no drift -> a drift of 10 % of the mean stroke speed",
+        |d| d.linear_drift_fraction = 0.1,
+    ),
+    (
+        "nonlinear-law-changes-result",
+        "a non-linear law changes the result -> it does not",
+        |d| d.nonlinear_changes = false,
+    ),
+    (
+        "drift-closed-form",
+        "v_slow - mu g t_fast^2/T -> v_slow - 1.1 mu g t_fast^2/T (10 %)",
+        |d| d.drift_factor = 1.1,
+    ),
+    (
+        "drift-closed-form",
+        "v_slow - mu g t_fast^2/T -> v_slow - 0.9 mu g t_fast^2/T (10 %)",
+        |d| d.drift_factor = 0.9,
+    ),
+    ("drift-regime", "mu g t_fast >= v_slow + v_fast -> <", |d| {
+        d.regime_reversed = true
+    }),
+    (
+        "drift-regime",
+        "mu g t_fast >= v_slow + v_fast -> >= 1.1 (v_slow + v_fast) (10 %)",
+        |d| d.regime_threshold = 1.1,
+    ),
+    (
+        "drift-regime",
+        "mu g t_fast >= v_slow + v_fast -> >= 0.9 (v_slow + v_fast) (10 %)",
+        |d| d.regime_threshold = 0.9,
+    ),
+    ("lock-time", "t* -> 1.1 t* (10 %)", |d| d.lock_factor = 1.1),
+    ("mirror-reverses", "v_d(mirror) = -v_d -> +v_d", |d| {
+        d.mirror_sign = 1.0
+    }),
+    (
+        "mirror-reverses",
+        "v_d(mirror) = -v_d -> -1.1 v_d (10 %)",
+        |d| d.mirror_sign = -1.1,
+    ),
+    (
+        "stroke-inequalities",
+        "printed v_l > v_r, t_r > t_l -> the corrected v_l < v_r, t_l > t_r",
+        |d| d.printed_fast_left = false,
+    ),
+    (
+        "drift-direction",
+        "bias along the slow stroke -> against it",
+        |d| d.along_slow_stroke = false,
+    ),
+    (
+        "slip-impulse",
+        "J = mu m g (t_l - t_r) -> 1.1 mu m g (t_l - t_r) (10 %)",
+        |d| d.impulse_factor = 1.1,
+    ),
+    (
+        "reaches-slow-speed",
+        "reaches v_l -> reaches 1.1 v_l (10 %)",
+        |d| d.reach_factor = 1.1,
+    ),
+    (
+        "locomotion-needs-slip",
+        "mu g t_fast < v_slow + v_fast -> < 3 (v_slow + v_fast)",
+        |d| d.slip_threshold = 3.0,
+    ),
+    (
+        "locomotion-needs-slip",
+        "mu g t_fast < v_slow + v_fast -> < 1.1 (v_slow + v_fast) (10 %)",
+        |d| d.slip_threshold = 1.1,
+    ),
+    (
+        "locomotion-needs-slip",
+        "mu g t_fast < v_slow + v_fast -> < 0.9 (v_slow + v_fast) (10 %)",
+        |d| d.slip_threshold = 0.9,
+    ),
+    (
+        "biharmonic-always-slipping",
+        "1 - pi^2/(2 Gamma^2) -> 1 - 1.1 pi^2/(2 Gamma^2) (10 %)",
+        |d| d.biharmonic_factor = 1.1,
+    ),
+    ("biharmonic-stuck", "Gamma_stick -> 1.5 Gamma_stick", |d| {
+        d.stick_gamma_factor = 1.5
+    }),
+    (
+        "biharmonic-stuck",
+        "Gamma_stick -> 1.1 Gamma_stick (10 %)",
+        |d| d.stick_gamma_factor = 1.1,
+    ),
+    (
+        "biharmonic-stuck",
+        "Gamma_stick -> 0.9 Gamma_stick (10 %)",
+        |d| d.stick_gamma_factor = 0.9,
+    ),
+];
+
+/// The falsification mutations (see [`EDITS`]).
+pub fn mutations() -> Vec<Mutation> {
+    Mutation::from_edits(PRINTED, EDITS.iter().copied(), judge)
+}

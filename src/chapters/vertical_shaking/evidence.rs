@@ -1,0 +1,394 @@
+//! The runs of the chapter, computed once into one [`Evidence`] value: the scene, the
+//! regime sweep and its located boundaries, the fast-drive limits, the runs near the
+//! thresholds and near Gamma_n, the Chladni demonstration, the law's decomposition and
+//! the work-precision ladder. Nothing here reads the document's statements: the claims
+//! of [`super::claims`] judge them against this evidence.
+
+use super::chladni::{demonstrate, Chladni};
+use super::regimes::{self, gamma_n, Boundary, SweepPoint};
+use super::scene::{run, Model, Scene, Stats};
+use crate::ladder::WorkPoint;
+use crate::physics::block::{simulate_block, BlockOptions, BlockParams};
+use crate::physics::plate::PlateMotion;
+use std::f64::consts::PI;
+
+/// Everything the claims, tables and figures read.
+#[derive(Debug, Clone)]
+pub struct Evidence {
+    /// The scene.
+    pub scene: Scene,
+    /// Quick mode (shorter runs, looser brackets).
+    pub quick: bool,
+    /// The scene after its transient.
+    pub stats: Stats,
+    /// The first take-off from rest (rad of the plate's phase).
+    pub takeoff_phase_rad: f64,
+    /// The regime sweep over 1 <= Gamma <= 10.
+    pub sweep: Vec<SweepPoint>,
+    /// Its located boundaries.
+    pub bounds: Vec<Boundary>,
+    /// Does the block take off within 50 periods at Gamma = 0.999 and 1.001?
+    pub leaves: (bool, bool),
+    /// The fast-drive limits.
+    pub fast: FastLimits,
+    /// The block kept sliding: mean friction / (mu x mean normal force), and whether it
+    /// slid all along (no stick, no reversal, some landings).
+    pub sliding: (f64, bool),
+    /// Small forces: drifts at Gamma = 1.05 for F = 0.01, 0.001, 0.0001 mu m g, and at
+    /// Gamma = 0.95 for F = 0.001 mu m g (m/s).
+    pub small_force: (Vec<f64>, f64),
+    /// Runs just below Gamma_n, n = 1, 2, 3.
+    pub near_gamma_n: Vec<NearGammaN>,
+    /// The scene's own t_f g/v_z and (v_ave/v_z)/mu_eff (NaN without bias).
+    pub here: (f64, f64),
+    /// Where the laws hold over Gamma = 2 ... 40.
+    pub law_range: LawRange,
+    /// The multiplier-located period doublings checked by the classifier: (n, Gamma,
+    /// half-gap, label below, label above).
+    pub doublings: Vec<(u32, f64, f64, String, String)>,
+    /// The Chladni demonstration.
+    pub chladni: Chladni,
+    /// The largest bias (fraction of mu m g) whose landing after a flight from rest
+    /// sticks, at Gamma = 2: located on the exact model `(b*, half bracket)`, and the
+    /// closed form of [`super::landing`].
+    pub landing: ((f64, f64), f64),
+    /// The law's decomposition: per Gamma, the drifts of the exact model, sticking
+    /// impacts, no contact slip, and the four steps to the law (m/s).
+    pub decomposition: Vec<[f64; 8]>,
+    /// The work-precision ladder.
+    pub work: Vec<WorkPoint>,
+}
+
+/// Contact fraction and viscous constant as omega grows at fixed delta_z.
+#[derive(Debug, Clone)]
+pub struct FastLimits {
+    /// Contact fractions at 1, 2, 4, 8 x the frequency.
+    pub fractions: Vec<f64>,
+    /// c = F/(m v_ave) (1/s) at 1, 2, 4, 8, 16, 32 x the frequency.
+    pub cs: Vec<f64>,
+}
+
+/// Runs at Gamma_n (1 - eps): t_f g/v_z and (v_ave/v_z)/mu_eff.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NearGammaN {
+    /// n.
+    pub n: f64,
+    /// `(t_f g/v_z, law ratio)` at eps = 1e-6.
+    pub at_1e6: (f64, f64),
+    /// The same at eps = 1e-5.
+    pub at_1e5: (f64, f64),
+    /// The law ratio of the no-contact-slip model at eps = 1e-6.
+    pub law_noslip: f64,
+}
+
+/// One law's share of Gamma values within 10 %.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RangeStat {
+    /// Values within 10 %.
+    pub inside: usize,
+    /// Largest error and its Gamma.
+    pub worst: (f64, f64),
+    /// Gamma values off by more than 10 %.
+    pub out: Vec<i32>,
+}
+
+/// The laws' errors over Gamma = 2 ... 40.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct LawRange {
+    /// Step of the Gamma values.
+    pub step: usize,
+    /// Number of values.
+    pub n: usize,
+    /// t_f = 2 v_z/g.
+    pub flight: RangeStat,
+    /// mu_eff = v_ave/v_z.
+    pub law: RangeStat,
+}
+
+/// The chapter's bias for the law checks: the scene's, or 0.1 without one.
+fn law_bias(scene: &Scene) -> f64 {
+    if scene.bias > 0.0 {
+        scene.bias
+    } else {
+        0.1
+    }
+}
+
+/// Runs everything once for `scene`.
+pub fn gather(scene: &Scene, quick: bool) -> Evidence {
+    let (transient, observe) = super::budget(quick);
+    let stats = run(scene, Model::Exact, transient, observe);
+    let hop = run(scene, Model::Exact, 0, 2);
+    let takeoff_phase_rad = hop
+        .rest_takeoff_phases_rad
+        .first()
+        .copied()
+        .unwrap_or(f64::NAN);
+    let n = if quick { 19 } else { 181 };
+    let gammas = crate::sweep::linspace(1.0, 10.0, n);
+    let sweep = regimes::sweep(scene, &gammas, transient, observe);
+    let iters = if quick { 10 } else { 16 };
+    let bounds = regimes::boundaries(scene, &sweep, transient, observe, iters);
+    let here_ratio = if scene.bias > 0.0 {
+        (stats.cycle_velocity_mps / scene.vz_mps()) / (scene.bias * scene.mu)
+    } else {
+        f64::NAN
+    };
+    let here = (
+        stats.mean_flight_s() * scene.g_mps2 / scene.vz_mps(),
+        here_ratio,
+    );
+    Evidence {
+        scene: *scene,
+        quick,
+        takeoff_phase_rad,
+        sweep,
+        bounds,
+        leaves: (leaves(scene, 0.999), leaves(scene, 1.001)),
+        fast: fast_limits(scene, quick),
+        sliding: sliding(scene),
+        small_force: small_force(scene),
+        near_gamma_n: [1.0, 2.0, 3.0]
+            .iter()
+            .map(|&n| near_gamma_n(scene, n, quick))
+            .collect(),
+        here,
+        law_range: law_range(scene, quick),
+        doublings: doublings(scene, quick),
+        chladni: demonstrate(scene, quick, transient, observe),
+        landing: {
+            let at2 = scene.at_gamma(2.0);
+            let iters = if quick { 12 } else { 20 };
+            (
+                super::landing::located_bound(&at2, iters),
+                super::landing::closed_form_bound(&at2),
+            )
+        },
+        decomposition: decomposition(scene, transient, observe),
+        work: work_precision(scene, quick),
+        stats,
+    }
+}
+
+/// Does the block take off within 50 periods at `gamma`?
+fn leaves(scene: &Scene, gamma: f64) -> bool {
+    run(&scene.at_gamma(gamma), Model::Exact, 0, 50)
+        .run
+        .total_counts
+        .takeoffs
+        > 0
+}
+
+/// Contact fraction and c = F/(m v_ave) as omega grows at fixed delta_z: from the
+/// amplitude of Gamma = 2 at the chapter's frequency, with a bias of at least 0.05.
+fn fast_limits(scene: &Scene, quick: bool) -> FastLimits {
+    let (transient, observe) = super::budget(quick);
+    let base = Scene {
+        gamma: 2.0,
+        bias: law_bias(scene),
+        ..*scene
+    };
+    let at = |k: f64| Scene {
+        frequency_hz: k * base.frequency_hz,
+        gamma: base.gamma * k * k,
+        ..base
+    };
+    let mut fractions = Vec::new();
+    let mut cs = Vec::new();
+    for k in [1.0, 2.0, 4.0, 8.0] {
+        let s = at(k);
+        let stk = run(&s, Model::Exact, transient, 4 * observe);
+        fractions.push(stk.run.contact_fraction);
+        cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
+    }
+    // the viscous constant further out, where the law's windows (up to +-15 % of
+    // error, issue 21) weigh less against the change in c: to 64 x the frequency
+    for k in [16.0, 32.0] {
+        let s = at(k);
+        // a flight lasts ~ 2 v_z/g = Gamma/pi periods: the window holds 40 of them
+        let flight_periods = (s.gamma / PI).ceil() as usize;
+        let stk = run(
+            &s,
+            Model::Exact,
+            transient.max(5 * flight_periods),
+            (4 * observe).max(40 * flight_periods),
+        );
+        cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
+    }
+    FastLimits { fractions, cs }
+}
+
+/// A block kept sliding over 60 periods: mean friction / (mu x mean normal force), and
+/// whether it slid all along.
+fn sliding(scene: &Scene) -> (f64, bool) {
+    let plate = scene.plate();
+    let t_end = 60.0 * plate.period_s();
+    let p = BlockParams::coulomb(scene.g_mps2, scene.mu, 0.0);
+    let v0 = 2.0 * scene.mu * scene.g_mps2 * t_end; // fast enough never to stop
+    let opts = BlockOptions {
+        start: (0.0, [0.0, v0, 0.0, 0.0]),
+        transient_periods: 0,
+        ..BlockOptions::default()
+    };
+    let sl = simulate_block(&p, &plate, t_end, &opts);
+    let friction = (sl.y_end[1] - v0) / t_end; // formula: <f> = delta v_x / t
+    let normal = scene.g_mps2 + sl.y_end[3] / t_end; // formula: <N>/m = g + delta v_z / t
+    let ratio = -friction / (scene.mu * normal);
+    let always_slides = sl.total_counts.slip_to_stick == 0
+        && sl.total_counts.reversals == 0
+        && sl.total_counts.landings > 0;
+    (ratio, always_slides)
+}
+
+/// Drifts with small forces just above and just below Gamma = 1 (m/s).
+fn small_force(scene: &Scene) -> (Vec<f64>, f64) {
+    let v = |gamma: f64, bias: f64| {
+        let s = Scene {
+            bias,
+            ..scene.at_gamma(gamma)
+        };
+        run(&s, Model::Exact, 0, 50).cycle_velocity_mps
+    };
+    let above = [1e-2, 1e-3, 1e-4].iter().map(|&b| v(1.05, b)).collect();
+    (above, v(0.95, 1e-3))
+}
+
+/// Mean flight time and drift just below Gamma_n (the block rests between flights of
+/// n periods, the limit the document's law assumes): `(t_f g/v_z, (v_ave/v_z)/(F/m g))`
+/// at Gamma_n (1 - eps).
+fn at_gamma_n(scene: &Scene, n: f64, eps: f64, model: Model, quick: bool) -> (f64, f64) {
+    let (transient, observe) = super::budget(quick);
+    let s = Scene {
+        bias: law_bias(scene),
+        ..scene.at_gamma(gamma_n(n) * (1.0 - eps))
+    };
+    let st = run(&s, model, transient, observe);
+    let tf = st.mean_flight_s() * s.g_mps2 / s.vz_mps(); // formula: t_f / (v_z/g)
+    let law = (st.cycle_velocity_mps / s.vz_mps()) / (s.bias * s.mu); // formula: (v_ave/v_z)/mu_eff
+    (tf, law)
+}
+
+/// The runs just below Gamma_n.
+fn near_gamma_n(scene: &Scene, n: f64, quick: bool) -> NearGammaN {
+    NearGammaN {
+        n,
+        at_1e6: at_gamma_n(scene, n, 1e-6, Model::Exact, quick),
+        at_1e5: at_gamma_n(scene, n, 1e-5, Model::Exact, quick),
+        law_noslip: at_gamma_n(scene, n, 1e-6, Model::NoContactSlip, quick).1,
+    }
+}
+
+/// Where the laws hold: over Gamma = 2, 3, ..., 40 (every second value in quick mode),
+/// the simulated t_f g/v_z against 2 and (v_ave/v_z)/mu_eff against 1: the share of the
+/// Gamma values at which each is within 10 %, the largest error and where it occurs.
+fn law_range(scene: &Scene, quick: bool) -> LawRange {
+    let (transient, observe) = super::budget(quick);
+    let b = law_bias(scene);
+    let step = if quick { 2 } else { 1 };
+    let mut out = LawRange {
+        step,
+        ..LawRange::default()
+    };
+    for gi in (2..=40).step_by(step) {
+        let gamma = gi as f64;
+        let s = Scene {
+            gamma,
+            bias: b,
+            ..*scene
+        };
+        // flights of up to ~Gamma/pi periods: windows of 10 of them at least
+        let fp = (gamma / PI).ceil() as usize;
+        let st = run(
+            &s,
+            Model::Exact,
+            transient.max(5 * fp),
+            observe.max(10 * fp),
+        );
+        let tf_err = st.mean_flight_s() * s.g_mps2 / s.vz_mps() / 2.0 - 1.0; // formula: t_f/(2 v_z/g) - 1
+        let law_err = (s.bias * s.mu) / (st.cycle_velocity_mps / s.vz_mps()) - 1.0; // formula: mu_eff/(v_ave/v_z) - 1
+        out.n += 1;
+        for (err, stat) in [(tf_err, &mut out.flight), (law_err, &mut out.law)] {
+            if err.abs() <= 0.1 {
+                stat.inside += 1;
+            } else {
+                stat.out.push(gi);
+            }
+            if err.is_finite() && err.abs() > stat.worst.0.abs() {
+                stat.worst = (err, gamma);
+            }
+        }
+    }
+    out
+}
+
+/// The multiplier-located period doublings (n = 1, 2, 3) classified after a long
+/// transient just below and above.
+fn doublings(scene: &Scene, quick: bool) -> Vec<(u32, f64, f64, String, String)> {
+    // Near the doubling the multiplier falls like ~5 per unit Gamma, so at 0.01 away
+    // |lambda| < 0.96 and 2000 flights-worth of transient leave < 1e-30 of a deviation.
+    let (d, long) = if quick { (0.01, 2000) } else { (0.005, 4000) };
+    (1..=3u32)
+        .map(|k| {
+            let pd = regimes::period_doubling_gamma(f64::from(k));
+            let below = regimes::regime_at(scene, pd - d, long, 60).label();
+            let above = regimes::regime_at(scene, pd + d, long, 60).label();
+            (k, pd, d, below, above)
+        })
+        .collect()
+}
+
+/// The law's error taken apart: each approximation switched on in turn. Per Gamma:
+/// `[Gamma, exact, sticking impacts, no contact slip, flight-weighted, mean flight,
+/// take-off speed, law]` (m/s but Gamma).
+fn decomposition(scene: &Scene, transient: usize, observe: usize) -> Vec<[f64; 8]> {
+    let mut gammas = vec![1.5, 2.0, 3.0, 5.0, 8.0, gamma_n(3.0) * (1.0 - 1e-6)];
+    if !gammas.iter().any(|g| (g - scene.gamma).abs() < 1e-9) {
+        gammas.push(scene.gamma);
+    }
+    gammas.sort_by(f64::total_cmp);
+    gammas
+        .into_iter()
+        .map(|g| {
+            let sc = scene.at_gamma(g);
+            let b = sc.bias * sc.mu * sc.g_mps2;
+            let va = run(&sc, Model::Exact, transient, observe).cycle_velocity_mps;
+            let vb = run(&sc, Model::StickingImpacts, transient, observe).cycle_velocity_mps;
+            let c = run(&sc, Model::NoContactSlip, transient, observe);
+            let vd = 0.5 * b * c.flight_weighted_s(); // formula: v = b sum t_f^2 / (2 sum t_f)
+            let ve = 0.5 * b * c.mean_flight_s(); // formula: v = b <t_f>/2
+            let vf = sc.bias * sc.mu * c.mean_takeoff_speed_mps(); // formula: t_f = 2 v_to/g
+            [
+                g,
+                va,
+                vb,
+                c.cycle_velocity_mps,
+                vd,
+                ve,
+                vf,
+                sc.law_velocity_mps(),
+            ]
+        })
+        .collect()
+}
+
+/// Work against accuracy: 20 periods from rest; reference: the closed-form run.
+fn work_precision(scene: &Scene, quick: bool) -> Vec<WorkPoint> {
+    let plate = scene.plate();
+    let params = scene.params(Model::Exact);
+    let end = 20.0 * plate.period_s();
+    let model = |o: &BlockOptions| {
+        let o = BlockOptions {
+            transient_periods: 0,
+            ..*o
+        };
+        simulate_block(&params, &plate, end, &o)
+    };
+    let reference = model(&BlockOptions::default()).mean_velocity_mps;
+    let vz = scene.vz_mps();
+    let scale = if reference.abs() > 1e-12 * vz {
+        reference.abs()
+    } else {
+        vz
+    };
+    crate::ladder::work_precision(&model, reference, scale, quick)
+}
