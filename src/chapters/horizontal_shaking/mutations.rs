@@ -1,0 +1,50 @@
+//! Falsification: edits of the statements, judged by the same claim functions on the
+//! evidence of the default scene (quick mode), computed once.
+
+use super::evidence::{gather, Evidence};
+use super::statements::{Statements, PRINTED};
+use crate::report::{Claim, DocEdit, Mutation};
+use std::sync::OnceLock;
+
+/// The claim `id` judged against the statements `st` on the default scene's evidence.
+fn judge(id: &str, st: &Statements) -> Claim {
+    static EVIDENCE: OnceLock<Evidence> = OnceLock::new();
+    let ev = EVIDENCE.get_or_init(|| {
+        let args: super::Args = crate::chapters::default_args();
+        let ctx = crate::chapters::Context::headless(true);
+        let scene = super::validate(&args, &ctx).expect("default flags are valid");
+        gather(&scene, true)
+    });
+    super::claims::all(st, ev)
+        .into_iter()
+        .find(|c| c.id == id)
+        .expect("claim id of this chapter")
+}
+
+/// The falsification mutations: each statement's coefficient off by 10 % (or more
+/// where the statement has slack), the direction reversed.
+pub fn all() -> Vec<Mutation> {
+    let list: Vec<DocEdit<Statements>> = vec![
+        (
+            "fast-shaking-zero-mean-friction",
+            "mean friction -> 0 replaced by -> 0.05 mu m g",
+            |d| d.fast_limit = 0.05,
+        ),
+        (
+            "remaining-friction-viscous",
+            "viscous F ~ v -> F ~ v^1.1",
+            |d| d.friction_exponent = 1.1,
+        ),
+        (
+            "arcsin-law-large-gamma",
+            "sin(pi F/(2 mu m g)) -> sin(1.1 pi F/(2 mu m g))",
+            |d| d.arcsin_factor = 1.1,
+        ),
+        (
+            "booktop-slides-at-small-tilt",
+            "slides down the tilt -> up the tilt",
+            |d| d.slides_down = false,
+        ),
+    ];
+    Mutation::from_edits(PRINTED, list, judge)
+}
