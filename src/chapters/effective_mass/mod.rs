@@ -23,6 +23,7 @@ use super::{info, Context};
 use crate::error::{open_interval, range, Result};
 use crate::report::ChapterReport;
 pub use evidence::{bisect, golden_max, rod_lock_angles_closed_form, rod_ratio};
+pub use mutations::PRINTS_NO_NUMBER;
 
 /// Flags of the chapter.
 #[derive(clap::Args, Debug, Clone)]

@@ -18,6 +18,7 @@ use crate::error::{blame, check, half_open, num, range, Result};
 use crate::report::ChapterReport;
 use drift::Scene;
 pub use drift::{gamma_for_1pct, relative_error};
+pub use mutations::PRINTS_NO_NUMBER;
 
 mod claims;
 pub mod drift;

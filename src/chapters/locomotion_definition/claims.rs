@@ -11,13 +11,18 @@ pub fn all(st: &Statements) -> Vec<Claim> {
         .iter()
         .map(|c| {
             let said = c.locomotion != (st.flipped == Some(c.id));
-            Claim::draft(
+            let draft = Claim::draft(
                 Check::LiteralExecution,
                 c.id,
                 "1, sailing as locomotion",
                 c.statement,
-            )
-            .exact(said, locomotes(st.rule, c.object, c.media, c.dragged))
+            );
+            let at = |v| locomotes(st, v, c.media, c.dragged);
+            match c.sharp {
+                // the example and the point 5 % from the boundary: [example, sharp]
+                Some(v) => draft.exact(vec![said, said], vec![at(c.object), at(v)]),
+                None => draft.exact(said, at(c.object)),
+            }
         })
         .collect();
     out.push(convex_combination(st));
@@ -36,7 +41,7 @@ fn convex_combination(st: &Statements) -> Claim {
                 s * WIND[0] + (1.0 - s) * WATER[0],
                 s * WIND[1] + (1.0 - s) * WATER[1],
             ];
-            !locomotes(st.rule, v, &[WIND, WATER], false)
+            !locomotes(st, v, &[WIND, WATER], false)
         })
         .count() as u64;
     Claim::draft(Check::LiteralExecution, "convex-combination", "1, sailing as locomotion", "Every v = s v1 + (1 - s) v2 with 0 <= s <= 1 is in the hull (not locomotion): count of the values s = k/64 classified as not locomotion, out of 65.")
@@ -53,7 +58,7 @@ fn three_media(st: &Statements) -> Claim {
     ];
     let ok = three
         .iter()
-        .all(|&(v, loco)| locomotes(st.rule, v, &tri, false) == loco);
+        .all(|&(v, loco)| locomotes(st, v, &tri, false) == loco);
     Claim::draft(Check::LiteralExecution, "three-media", "1, multiple media", "With three media (a triangle of velocities) a velocity inside or on an edge is not locomotion, one 2^-50 m/s beyond the edge is (interior, boundary, outside found exactly).")
         .exact(true, ok)
 }

@@ -21,6 +21,7 @@ use crate::physics::locomotion::{in_exact_range, is_locomotion, reason, V2};
 use crate::plot::save_drawing;
 use crate::report::{ChapterReport, Mutation};
 use figures::{HullFigure, Panel};
+pub use mutations::PRINTS_NO_NUMBER;
 use statements::{CASES, WATER, WIND};
 
 /// Flags of the chapter.
