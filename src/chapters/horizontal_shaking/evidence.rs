@@ -35,6 +35,23 @@ pub struct Evidence {
     pub viscous: Viscous,
     /// The booktop runs.
     pub booktop: Booktop,
+    /// The block's velocity swing over one steady period at Gamma_x = 10 and 100.
+    pub fluctuation: [Fluctuation; 2],
+    /// The bias that keeps a drift of 0.1 V at fixed V, 30 x the frequency.
+    pub fixed_v_bias: f64,
+}
+
+/// The block's velocity over one period of its exact periodic state.
+#[derive(Debug, Clone, Copy)]
+pub struct Fluctuation {
+    /// Gamma_x of the run.
+    pub gamma_x: f64,
+    /// Bias of the run (fraction of mu m g).
+    pub bias: f64,
+    /// (max - min of the block's absolute velocity) / V.
+    pub swing_over_v: f64,
+    /// Sticking segments seen in the period.
+    pub sticks: usize,
 }
 
 /// Largest `|a_xp| / (mu g)` over the sticking instants (no bias) of exact runs at
@@ -113,7 +130,81 @@ pub fn gather(scene: &Scene, quick: bool) -> Evidence {
         fast: fast_shaking(scene),
         viscous: viscous(scene),
         booktop: booktop_runs(scene),
+        // b = 0.5 whatever the chapter's bias: near b = 1 the block sticks at any
+        // Gamma_x and the swing law (no sticking) does not apply
+        fluctuation: [10.0, 100.0].map(|g| {
+            fluctuation(
+                &Scene {
+                    bias: 0.5,
+                    ..*scene
+                }
+                .at_gamma_x(g),
+            )
+        }),
+        fixed_v_bias: fixed_v_bias(scene),
     }
+}
+
+/// Extremes of the block's absolute velocity over the segments of a run (9 samples per
+/// segment, its ends included: the extremes sit at the slip reversals) and its
+/// sticking segments.
+struct Swing<'a> {
+    plate: &'a Harmonic,
+    lo: f64,
+    hi: f64,
+    sticks: usize,
+}
+
+impl Observer<BlockMode, 4> for Swing<'_> {
+    fn segment(&mut self, mode: BlockMode, seg: &Segment<'_, 4>) {
+        if mode == BlockMode::Stick && seg.t1 > seg.t0 {
+            self.sticks += 1;
+        }
+        for k in 0..=8 {
+            let t = seg.t0 + (seg.t1 - seg.t0) * k as f64 / 8.0;
+            let v = seg.eval(t)[1] + self.plate.vx_mps(t);
+            (self.lo, self.hi) = (self.lo.min(v), self.hi.max(v));
+        }
+    }
+}
+
+/// One period of the exact periodic state of `scene`, observed.
+fn fluctuation(scene: &Scene) -> Fluctuation {
+    let steady = steady_drift(scene);
+    let plate = scene.plate();
+    let mut w = Swing {
+        plate: &plate,
+        lo: f64::MAX,
+        hi: f64::MIN,
+        sticks: 0,
+    };
+    let o = BlockOptions {
+        start: (0.0, [0.0, steady.v0_mps - plate.vx_mps(0.0), 0.0, 0.0]),
+        transient_periods: 0,
+        record_events: false,
+        ..BlockOptions::default()
+    };
+    simulate_block_observed(&scene.params(), &plate, plate.period_s(), &o, &mut w);
+    Fluctuation {
+        gamma_x: scene.gamma_x(),
+        bias: scene.bias,
+        swing_over_v: (w.hi - w.lo) / scene.velocity_amplitude_mps(),
+        sticks: w.sticks,
+    }
+}
+
+/// The bias that keeps the exact drift at 0.1 V when the frequency is 30 x the
+/// scene's and the amplitude 1/30 of it (V = delta_x omega fixed, Gamma_x 30 x), from
+/// the scene at Gamma_x >= 10 (so that Gamma_x >= 300, where the averaged law that
+/// judges it is within 1e-4).
+fn fixed_v_bias(scene: &Scene) -> f64 {
+    let scene = &scene.at_gamma_x(scene.gamma_x().max(10.0));
+    let s = Scene {
+        frequency_hz: 30.0 * scene.frequency_hz,
+        amplitude_m: scene.amplitude_m / 30.0,
+        ..*scene
+    };
+    bias_for_drift(&s, 0.1 * scene.velocity_amplitude_mps())
 }
 
 /// Largest `|a_xp| / (mu g)` over the sticking instants of a run (11 samples per

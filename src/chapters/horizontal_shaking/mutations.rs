@@ -57,6 +57,21 @@ pub fn all() -> Vec<Mutation> {
             |d| d.arcsin_factor = 1.1,
         ),
         (
+            "velocity-fluctuation-small",
+            "swing (1 - b^2) pi V/Gamma_x -> 1.1 x (10 %)",
+            |d| d.fluctuation_coeff *= 1.1,
+        ),
+        (
+            "fast-shaking-needs-growing-v",
+            "(2/pi) asin(v/V) at fixed V -> 1.1 x (10 %)",
+            |d| d.fixed_v_coeff *= 1.1,
+        ),
+        (
+            "fast-shaking-needs-growing-v",
+            "at fixed V the mean friction -> 0 too (the reading the claim rules out)",
+            |d| d.fixed_v_coeff = 0.0,
+        ),
+        (
             "booktop-slides-at-small-tilt",
             "slides down the tilt -> up the tilt",
             |d| d.slides_down = false,

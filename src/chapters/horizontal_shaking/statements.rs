@@ -17,6 +17,14 @@ pub struct Statements {
     pub tilt_factor: f64,
     /// Booktop: the shaken coin slides down the tilt (`true`, printed) or up.
     pub slides_down: bool,
+    /// "The fluctuation in object velocities is small": the workbook's exact swing
+    /// (peak to peak, over V) is (1 - b^2) k / Gamma_x while the block never sticks
+    /// (derived k = pi).
+    pub fluctuation_coeff: f64,
+    /// "As the frequency goes to infinity ... the average force tends to zero", read at
+    /// fixed amplitude: at fixed V = delta_x omega instead the mean friction at v tends
+    /// to k asin(v/V) mu m g (derived k = 2/pi), not zero.
+    pub fixed_v_coeff: f64,
 }
 
 /// The document as printed.
@@ -27,4 +35,6 @@ pub const PRINTED: Statements = Statements {
     arcsin_factor: 1.0,
     tilt_factor: 1.0,
     slides_down: true,
+    fluctuation_coeff: std::f64::consts::PI,
+    fixed_v_coeff: std::f64::consts::FRAC_2_PI,
 };
