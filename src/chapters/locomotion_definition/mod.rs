@@ -91,7 +91,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
             panels: vec![scene, sailing],
         };
         r.figures
-            .extend(save_drawing(&fig, &dir, "convex-hull", (1400, 650))?);
+            .extend(save_drawing(&fig, &dir, "convex-hull", fig.size_px())?);
     }
     Ok(r)
 }
