@@ -223,3 +223,48 @@ fn bad_input_is_one_line_naming_the_flag_with_exit_code_2() {
         );
     }
 }
+
+/// Issue 21: every document claim (every claim whose check is not `consistency`) has a
+/// mutation that moves a number its statement prints by 10 % (description "10 %") and
+/// flips its verdict, or is listed in `PRINTS_NO_NUMBER` with its reason (and then
+/// some other mutation, a reversed sign or verdict, flips it).
+#[test]
+fn every_document_claim_flips_under_a_10_percent_mutation() {
+    use locomotion_workbook::chapters::{self, effective_mass::PRINTS_NO_NUMBER, Context};
+    use locomotion_workbook::report::Check;
+    let id = "effective-mass";
+    let r = chapters::run_default(id, &Context::headless(true)).expect("runs");
+    let muts = chapters::mutations(id);
+    let mut missing = Vec::new();
+    let mut listed_seen = 0;
+    for c in r.claims.iter().filter(|c| c.check != Check::Consistency) {
+        let of_claim: Vec<_> = muts.iter().filter(|m| m.claim_id == c.id).collect();
+        let flips = |ten: bool| {
+            of_claim
+                .iter()
+                .filter(|m| !ten || m.description.contains("10 %"))
+                .any(|m| (m.run)().verdict != c.verdict)
+        };
+        let listed = PRINTS_NO_NUMBER.iter().find(|(i, _)| *i == c.id);
+        match listed {
+            Some((_, why)) => {
+                listed_seen += 1;
+                assert!(!why.is_empty(), "{}: a listed claim needs its reason", c.id);
+                if !flips(false) {
+                    missing.push(format!("{} (listed, but no mutation flips it)", c.id));
+                }
+            }
+            None if !flips(true) => missing.push(c.id.clone()),
+            None => {}
+        }
+    }
+    assert_eq!(
+        listed_seen,
+        PRINTS_NO_NUMBER.len(),
+        "a listed id is not a document claim"
+    );
+    assert!(
+        missing.is_empty(),
+        "claims with no flipping 10 % mutation: {missing:?}"
+    );
+}

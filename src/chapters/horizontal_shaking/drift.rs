@@ -133,3 +133,39 @@ pub fn averaged_law_error(scene: &Scene) -> f64 {
     let exact = steady_drift(scene).drift_mps;
     ((scene.averaged_drift_mps() - exact) / exact).abs()
 }
+
+/// Relative error of the averaged law (`|law - exact| / |exact|`; over V when the
+/// exact drift vanishes, as at zero bias).
+pub fn relative_error(scene: &Scene, exact: f64) -> f64 {
+    let denom = if exact.abs() > 1e-12 * scene.velocity_amplitude_mps() {
+        exact.abs()
+    } else {
+        scene.velocity_amplitude_mps()
+    };
+    (scene.averaged_drift_mps() - exact).abs() / denom
+}
+
+/// The Gamma_x above which the averaged law is within 1 %: bisection in log Gamma_x on
+/// the exact relative error, bracketed by the last crossing of 1 % in `sweep`.
+/// Returns `(gamma, bracket width)`.
+pub fn gamma_for_1pct(scene: &Scene, sweep: &[(f64, f64, f64)], iterations: usize) -> (f64, f64) {
+    let err = |g: f64| {
+        let s = scene.at_gamma_x(g);
+        relative_error(&s, steady_drift(&s).drift_mps) - 0.01
+    };
+    let last_above = sweep.iter().rposition(|&(_, e, _)| e > 0.01);
+    let (mut a, mut b) = match last_above {
+        Some(i) if i + 1 < sweep.len() => (sweep[i].0.ln(), sweep[i + 1].0.ln()),
+        Some(_) => return (f64::INFINITY, 0.0),
+        None => return (sweep[0].0, 0.0),
+    };
+    for _ in 0..iterations {
+        let m = 0.5 * (a + b);
+        if err(m.exp()) > 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    (b.exp(), b.exp() - a.exp())
+}

@@ -7,18 +7,25 @@
 //! `<f> = -(2/pi) mu m g arcsin(v/V)`, so the drift is `V sin(pi b/2)`. The chapter
 //! checks the document's claims, charts where the averaged law stops being good enough
 //! (relative error against Gamma_x) and locates the Gamma_x of 1 % error by bisection.
+//!
+//! Shape: `statements.rs` (the statements as data), `evidence.rs` (the runs, once),
+//! `claims.rs` (pure functions of both), `figures.rs` (figures and tables),
+//! `mutations.rs`; `drift.rs` holds the exact periodic drift; this file: flags and
+//! orchestration.
 
 use super::{report_with_g, Context};
 use crate::error::{blame, check, half_open, num, range, Result};
-use crate::physics::block::{simulate_block, BlockOptions};
-use crate::physics::plate::PlateMotion;
 use crate::report::ChapterReport;
-use crate::sweep::{logspace, par_map};
-use drift::{steady_drift, Scene};
+use drift::Scene;
+pub use drift::{gamma_for_1pct, relative_error};
+pub use mutations::PRINTS_NO_NUMBER;
 
-pub mod claims;
+mod claims;
 pub mod drift;
+mod evidence;
 mod figures;
+mod mutations;
+mod statements;
 
 /// Flags of the chapter: the document's scene (a coin on a hand-shaken book).
 #[derive(clap::Args, Debug, Clone)]
@@ -39,42 +46,6 @@ pub struct Args {
     /// 1e-6 the drift is within the rounding of the exact periodic solution); default 0.5.
     #[arg(long, default_value_t = 0.5)]
     pub bias: f64,
-}
-
-/// Relative error of the averaged law (`|law - exact| / |exact|`; over V when the
-/// exact drift vanishes, as at zero bias).
-pub fn relative_error(scene: &Scene, exact: f64) -> f64 {
-    let denom = if exact.abs() > 1e-12 * scene.velocity_amplitude_mps() {
-        exact.abs()
-    } else {
-        scene.velocity_amplitude_mps()
-    };
-    (scene.averaged_drift_mps() - exact).abs() / denom
-}
-
-/// The Gamma_x above which the averaged law is within 1 %: bisection in log Gamma_x on
-/// the exact relative error, bracketed by the last crossing of 1 % in `sweep`.
-/// Returns `(gamma, bracket width)`.
-pub fn gamma_for_1pct(scene: &Scene, sweep: &[(f64, f64, f64)], iterations: usize) -> (f64, f64) {
-    let err = |g: f64| {
-        let s = scene.at_gamma_x(g);
-        relative_error(&s, steady_drift(&s).drift_mps) - 0.01
-    };
-    let last_above = sweep.iter().rposition(|&(_, e, _)| e > 0.01);
-    let (mut a, mut b) = match last_above {
-        Some(i) if i + 1 < sweep.len() => (sweep[i].0.ln(), sweep[i + 1].0.ln()),
-        Some(_) => return (f64::INFINITY, 0.0),
-        None => return (sweep[0].0, 0.0),
-    };
-    for _ in 0..iterations {
-        let m = 0.5 * (a + b);
-        if err(m.exp()) > 0.0 {
-            a = m;
-        } else {
-            b = m;
-        }
-    }
-    (b.exp(), b.exp() - a.exp())
 }
 
 /// Smallest nonzero bias accepted (fraction of mu m g): see `validate`.
@@ -155,120 +126,55 @@ pub fn validate(args: &Args, ctx: &Context) -> Result<Scene> {
 
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
-    run_with(args, ctx, &claims::Doc::PRINTED)
-}
-
-/// Runs the chapter with the document's statements `doc` (a wrong variant in the
-/// falsification tests).
-pub fn run_with(args: &Args, ctx: &Context, doc: &claims::Doc) -> Result<ChapterReport> {
     let scene = validate(args, ctx)?;
-    let (mu, amp, freq, bias) = (scene.mu, scene.amplitude_m, scene.frequency_hz, scene.bias);
     let (mut r, _) = report_with_g(
         "horizontal-shaking",
         ctx,
         &[
-            ("mu", mu),
-            ("amplitude_m", amp),
-            ("frequency_hz", freq),
-            ("bias", bias),
+            ("mu", scene.mu),
+            ("amplitude_m", scene.amplitude_m),
+            ("frequency_hz", scene.frequency_hz),
+            ("bias", scene.bias),
         ],
     )?;
-    let vamp = scene.velocity_amplitude_mps();
-    let gamma_x = scene.gamma_x();
-
-    // The exact periodic drift and the averaged law.
-    let exact = steady_drift(&scene);
-    let law = scene.averaged_drift_mps();
-    let err = relative_error(&scene, exact.drift_mps);
-
-    // Relative error against Gamma_x (at the chapter's bias, or b = 0.01 at zero bias).
-    let err_scene = Scene {
-        bias: if bias > 0.0 { bias } else { 0.01 },
-        ..scene
-    };
-    let n_sweep = if ctx.quick { 9 } else { 25 };
-    let gammas = logspace(1.0, 1000.0, n_sweep);
-    // (Gamma_x, relative error, exact drift m/s)
-    let sweep: Vec<(f64, f64, f64)> = par_map(&gammas, "averaged-law error", |&gx| {
-        let s = err_scene.at_gamma_x(gx);
-        let ex = steady_drift(&s).drift_mps;
-        (gx, relative_error(&s, ex), ex)
-    });
-    let iters = if ctx.quick { 12 } else { 40 };
-    let (g1, g1_width) = gamma_for_1pct(&err_scene, &sweep, iters);
-    // The error falls as C / Gamma_x^2: C from the largest Gamma_x of the sweep.
-    let (g_hi, e_hi, _) = sweep[sweep.len() - 1];
-    let coeff = e_hi * g_hi * g_hi;
-
-    r.result("velocity_amplitude_mps", vamp);
-    r.result("gamma_x", gamma_x);
-    r.result("drift_velocity_mps", exact.drift_mps);
-    r.result("drift_velocity_averaged_mps", law);
-    r.result("averaged_law_relative_error", err);
-    r.result("gamma_x_for_1pct", g1);
-    r.result("gamma_x_for_1pct_bracket", g1_width);
-    r.result("averaged_law_error_times_gamma_x_squared", coeff);
-
-    claims::add(&mut r, &scene, ctx, g1, &sweep, doc)?;
-
-    let rows: Vec<String> = sweep
-        .iter()
-        .map(|&(gx, e, ex)| {
-            let s = err_scene.at_gamma_x(gx);
-            let v = s.velocity_amplitude_mps();
-            format!(
-                "| {:.3} | {:.5} | {:.5} | {:.2e} |",
-                gx,
-                ex / v,
-                s.averaged_drift_mps() / v,
-                e
-            )
-        })
-        .collect();
-    r.table(
-        "error-vs-gamma",
-        format!(
-            "| Γₓ | exact drift / V | averaged law / V | relative error |\n|---|---|---|---|\n{}\n",
-            rows.join("\n")
-        ),
-    );
-
-    // Work against accuracy: 20 periods from the exact periodic state.
-    let plate = scene.plate();
-    let period = plate.period_s();
-    let model = |o: &BlockOptions| {
-        let o = BlockOptions {
-            start: (0.0, [0.0, exact.v0_mps - plate.vx_mps(0.0), 0.0, 0.0]),
-            transient_periods: 0,
-            ..*o
-        };
-        simulate_block(&scene.params(), &plate, 20.0 * period, &o)
-    };
-    let scale = if exact.drift_mps.abs() > 1e-12 * vamp {
-        exact.drift_mps.abs()
-    } else {
-        vamp
-    };
-    let wp = crate::ladder::work_precision(&model, exact.drift_mps, scale, ctx.quick);
+    let ev = evidence::gather(&scene, ctx.quick);
+    results(&mut r, &ev);
+    for claim in claims::all(&statements::PRINTED, &ev) {
+        r.claim(claim);
+    }
+    r.result("booktop_tilt_deg", ev.booktop.small_tilt_deg);
+    r.result("booktop_drift_mps", ev.booktop.drift_mps);
+    r.table("error-vs-gamma", figures::error_table(&ev));
+    let wp = evidence::work_precision(&ev, ctx.quick);
     r.table("work-precision", crate::ladder::table(&wp));
-
     if let Some(dir) = ctx.figure_dir("horizontal-shaking") {
-        let paths = figures::draw(
-            &dir,
-            &scene,
-            &err_scene,
-            &sweep,
-            g1,
-            exact.v0_mps,
-            &wp,
-            ctx.quick,
-        )?;
-        r.figures.extend(paths);
+        r.figures.extend(figures::draw(&dir, &ev, &wp, ctx.quick)?);
     }
     Ok(r)
 }
 
+/// The chapter's named results from the evidence.
+fn results(r: &mut ChapterReport, ev: &evidence::Evidence) {
+    let scene = &ev.scene;
+    // The error falls as C / Gamma_x^2: C from the largest Gamma_x of the sweep.
+    let (g_hi, e_hi, _) = ev.sweep[ev.sweep.len() - 1];
+    r.result("velocity_amplitude_mps", scene.velocity_amplitude_mps());
+    r.result("gamma_x", scene.gamma_x());
+    r.result("drift_velocity_mps", ev.exact.drift_mps);
+    r.result("drift_velocity_averaged_mps", scene.averaged_drift_mps());
+    r.result(
+        "averaged_law_relative_error",
+        relative_error(scene, ev.exact.drift_mps),
+    );
+    r.result("gamma_x_for_1pct", ev.g1.0);
+    r.result("gamma_x_for_1pct_bracket", ev.g1.1);
+    r.result(
+        "averaged_law_error_times_gamma_x_squared",
+        e_hi * g_hi * g_hi,
+    );
+}
+
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    claims::mutations()
+    mutations::all()
 }

@@ -1,0 +1,153 @@
+//! The computations behind the claims, done once: the uniform rod's mass matrix of the
+//! contact point (the mobility matrix inverted), the document's force derivation
+//! evaluated as vectors, the impulse ratios from the mass matrices and from the
+//! Newton-Euler impulse equations (a second method) at the chosen angle, at 30 and at
+//! 45 degrees, and the rod's best angle by golden-section search.
+
+use super::{LENGTH_M, MASS_KG};
+use crate::physics::rigid::{
+    contact_acceleration, effective_mass, impulse_for_velocity_change, in_stick_frame, jam_ratio,
+    rod_contact_offset, stick_normal, tip_contact_offset, RigidBody,
+};
+use nalgebra::{Matrix2, Vector2};
+
+/// Golden-section search for the maximum (moved down to the numerics layer).
+pub use crate::numerics::search::golden_max;
+
+/// The uniform rod of the scene.
+pub fn rod() -> RigidBody {
+    RigidBody::uniform_rod(MASS_KG, LENGTH_M)
+}
+
+/// Mass matrices (world frame) of the uniform rod and of the point-mass model.
+pub fn matrices(theta: f64) -> (Matrix2<f64>, Matrix2<f64>) {
+    let m_rod = effective_mass(&rod(), rod_contact_offset(theta, LENGTH_M));
+    let m_pm = effective_mass(
+        &RigidBody::point_mass(MASS_KG),
+        tip_contact_offset(theta, LENGTH_M),
+    );
+    (m_rod, m_pm)
+}
+
+/// `J_l / J_v` of the uniform rod from its mass matrix.
+pub fn rod_ratio(theta: f64) -> f64 {
+    jam_ratio(&matrices(theta).0)
+}
+
+/// `J_l / J_v` of the point-mass model from its mass matrix.
+pub fn point_mass_ratio(theta: f64) -> f64 {
+    jam_ratio(&matrices(theta).1)
+}
+
+/// Bisection for the root of `f` on `[a, b]` (a sign change required), to `tol`.
+pub fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> f64 {
+    let fa = f(a);
+    while b - a > tol {
+        let m = 0.5 * (a + b);
+        if (f(m) > 0.0) == (fa > 0.0) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
+}
+
+/// Angles (rad) where the rod's impulse ratio equals mu, from the closed form
+/// `3q/(4+q^2) = mu`, i.e. `q = (3 -+ sqrt(9 - 16 mu^2)) / (2 mu)`. None for
+/// `mu >= 3/4` (the rod then never slips under a vertical impulse) and for `mu = 0`.
+pub fn rod_lock_angles_closed_form(mu: f64) -> Option<(f64, f64)> {
+    let disc = 9.0 - 16.0 * mu * mu;
+    if mu <= 0.0 || disc <= 0.0 {
+        return None;
+    }
+    // formula: smaller root of mu q^2 - 3 q + 4 mu = 0, (3 - sqrt(D))/(2 mu), written
+    // as 8 mu/(3 + sqrt(D)) (the same number without the cancellation at small mu)
+    let q1 = 8.0 * mu / (3.0 + disc.sqrt());
+    let q2 = 4.0 / q1; // formula: the product of the roots is 4
+    Some((q1.atan(), q2.atan()))
+}
+
+/// The impulse ratios `J_l/J_v` at one angle, by two methods.
+#[derive(Debug, Clone, Copy)]
+pub struct Ratios {
+    /// The lean angle (rad).
+    pub theta: f64,
+    /// Point-mass model, from its inverted mass matrix.
+    pub point_mass: f64,
+    /// Uniform rod, from its inverted mass matrix.
+    pub rod: f64,
+    /// Point-mass model, Newton-Euler impulse equations (I_G = 0).
+    pub point_mass_ne: f64,
+    /// Uniform rod, Newton-Euler impulse equations (a 5x5 linear solve).
+    pub rod_ne: f64,
+}
+
+/// The ratios at `theta` (rad).
+pub fn ratios_at(theta: f64) -> Ratios {
+    let (m_rod, m_pm) = matrices(theta);
+    let up = Vector2::new(0.0, 1.0);
+    let ne = |b: RigidBody, off: Vector2<f64>| {
+        impulse_for_velocity_change(&b, off, up)
+            .map(|i| i.impulse.x / i.impulse.y)
+            .unwrap_or(f64::NAN)
+    };
+    Ratios {
+        theta,
+        point_mass: jam_ratio(&m_pm),
+        rod: jam_ratio(&m_rod),
+        point_mass_ne: ne(
+            RigidBody::point_mass(MASS_KG),
+            tip_contact_offset(theta, LENGTH_M),
+        ),
+        rod_ne: ne(rod(), rod_contact_offset(theta, LENGTH_M)),
+    }
+}
+
+/// Everything the claims and results read.
+#[derive(Debug, Clone)]
+pub struct Evidence {
+    /// The rod's mass matrix in stick coordinates (kg).
+    pub stick: Matrix2<f64>,
+    /// The document's derivation with a unit force (1 N) across the stick at C:
+    /// acceleration of G (m/s^2, vector), dω/dt (rad/s^2), acceleration of C (vector).
+    pub a_g: Vector2<f64>,
+    /// See `a_g`.
+    pub omega_dot: f64,
+    /// See `a_g`.
+    pub a_c: Vector2<f64>,
+    /// The unit normal across the stick.
+    pub normal: Vector2<f64>,
+    /// The rod's I_G (kg m^2).
+    pub inertia_kgm2: f64,
+    /// The ratios at the chosen angle.
+    pub at: Ratios,
+    /// ... at 30 degrees (q, 1/q and q^2 differ).
+    pub at30: Ratios,
+    /// ... at 45 degrees (the document's example).
+    pub at45: Ratios,
+    /// The rod's angle of largest ratio (rad), golden-section search.
+    pub best_rad: f64,
+}
+
+/// The computations at lean angle `theta` (rad).
+pub fn gather(theta: f64) -> Evidence {
+    let (m_rod, _) = matrices(theta);
+    let (a_g, omega_dot, a_c) = contact_acceleration(
+        &rod(),
+        rod_contact_offset(theta, LENGTH_M),
+        stick_normal(theta),
+    );
+    Evidence {
+        stick: in_stick_frame(&m_rod, theta),
+        a_g,
+        omega_dot,
+        a_c,
+        normal: stick_normal(theta),
+        inertia_kgm2: rod().inertia_kgm2,
+        at: ratios_at(theta),
+        at30: ratios_at(30f64.to_radians()),
+        at45: ratios_at(std::f64::consts::FRAC_PI_4),
+        best_rad: golden_max(rod_ratio, 0.0, std::f64::consts::FRAC_PI_2 - 1e-9, 1e-12),
+    }
+}

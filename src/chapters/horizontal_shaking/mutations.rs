@@ -1,0 +1,81 @@
+//! Falsification: edits of the statements, judged by the same claim functions on the
+//! evidence of the default scene (quick mode), computed once. Each printed number is
+//! moved by 10 %; the claims whose statement prints no number are in
+//! [`PRINTS_NO_NUMBER`] with the reason: `booktop-slides-at-small-tilt` ("the coin will
+//! slide in the direction of any small tilt": a direction, judged by reversing it; the
+//! printed "5 oscillations/s" and "something like 20 degrees" are the scene, not a
+//! threshold of the statement).
+
+use super::evidence::{gather, Evidence};
+use super::statements::{Statements, PRINTED};
+use crate::report::{Claim, DocEdit, Mutation};
+use std::sync::OnceLock;
+
+/// The claim `id` judged against the statements `st` on the default scene's evidence.
+fn judge(id: &str, st: &Statements) -> Claim {
+    static EVIDENCE: OnceLock<Evidence> = OnceLock::new();
+    let ev = EVIDENCE.get_or_init(|| {
+        let args: super::Args = crate::chapters::default_args();
+        let ctx = crate::chapters::Context::headless(true);
+        let scene = super::validate(&args, &ctx).expect("default flags are valid");
+        gather(&scene, true)
+    });
+    super::claims::all(st, ev)
+        .into_iter()
+        .find(|c| c.id == id)
+        .expect("claim id of this chapter")
+}
+
+/// The chapter's document claims whose statement prints no number, and why.
+pub const PRINTS_NO_NUMBER: &[(&str, &str)] = &[(
+    "booktop-slides-at-small-tilt",
+    "'the coin will slide in the direction of any small tilt': a direction (the mutation reverses it); 5 oscillations/s and 20 degrees describe the scene, not a threshold",
+)];
+
+/// The falsification mutations: each statement's coefficient off by 10 % (or more
+/// where the statement has slack), the direction reversed.
+pub fn all() -> Vec<Mutation> {
+    let list: Vec<DocEdit<Statements>> = vec![
+        (
+            "fast-shaking-zero-mean-friction",
+            "mean friction -> 0 replaced by -> 0.1 mu m g (10 % of the Coulomb friction mu m g; 0 has no 10 %)",
+            |d| d.fast_limit = 0.1,
+        ),
+        (
+            "fast-shaking-zero-mean-friction",
+            "mean friction -> 0 replaced by -> 0.05 mu m g",
+            |d| d.fast_limit = 0.05,
+        ),
+        (
+            "remaining-friction-viscous",
+            "viscous F ~ v -> F ~ v^1.1 (exponent 10 %)",
+            |d| d.friction_exponent = 1.1,
+        ),
+        (
+            "arcsin-law-large-gamma",
+            "sin(pi F/(2 mu m g)) -> sin(1.1 pi F/(2 mu m g)) (10 %)",
+            |d| d.arcsin_factor = 1.1,
+        ),
+        (
+            "velocity-fluctuation-small",
+            "swing (1 - b^2) pi V/Gamma_x -> 1.1 x (10 %)",
+            |d| d.fluctuation_coeff *= 1.1,
+        ),
+        (
+            "fast-shaking-needs-growing-v",
+            "(2/pi) asin(v/V) at fixed V -> 1.1 x (10 %)",
+            |d| d.fixed_v_coeff *= 1.1,
+        ),
+        (
+            "fast-shaking-needs-growing-v",
+            "at fixed V the mean friction -> 0 too (the reading the claim rules out)",
+            |d| d.fixed_v_coeff = 0.0,
+        ),
+        (
+            "booktop-slides-at-small-tilt",
+            "slides down the tilt -> up the tilt",
+            |d| d.slides_down = false,
+        ),
+    ];
+    Mutation::from_edits(PRINTED, list, judge)
+}
