@@ -18,10 +18,6 @@ use std::path::{Path, PathBuf};
 /// sorted). Issue 20 of the tracker names them.
 const KNOWN_CYCLES: &[(&str, &[&str])] = &[
     ("asymmetric_shaking", &["claims", "work"]),
-    (
-        "stick_state_machine",
-        &["claims", "rule_claims", "slide_rules"],
-    ),
     ("vertical_shaking", &["claims", "doc"]),
 ];
 

@@ -239,3 +239,25 @@ pub fn scenes_table(ev: &Evidence) -> String {
     ));
     s
 }
+
+/// What the checks look at: the evidence runs and this run (with its parameters).
+pub struct Ctx<'a> {
+    /// The evidence runs.
+    pub ev: &'a Evidence,
+    /// This run (physical rules).
+    pub main: &'a RunSummary,
+    /// This run's parameters.
+    pub p: &'a StickParams,
+    /// This run's relative (= absolute) tolerance (the evidence runs use 1e-10).
+    pub rtol: f64,
+}
+
+impl Ctx<'_> {
+    /// The traced evidence runs with their parameters.
+    pub fn runs(&self) -> [(&RunSummary, &StickParams); 2] {
+        [
+            (&self.ev.authors, &self.ev.params[0]),
+            (&self.ev.jamming, &self.ev.params[1]),
+        ]
+    }
+}

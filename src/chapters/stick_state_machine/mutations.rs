@@ -2,9 +2,10 @@
 //! document's statement (a flipped sign, a swapped inequality, a transposed rule, a
 //! coefficient off by 10 %, the other reading). Each mutation must change the verdict.
 
-use super::claims::{self, Ctx};
-use super::doc::{Doc, Test};
+use super::claims;
+use super::evidence::Ctx;
 use super::evidence::{collect, Evidence, EVIDENCE_RTOL};
+use super::statements::{Statements, Test, PRINTED};
 use crate::chapters::Context;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
@@ -29,7 +30,7 @@ fn evidence() -> &'static (Evidence, RunSummary, StickParams) {
 }
 
 /// The claim `id` judged under `d` on the quick evidence.
-pub fn judge(id: &str, d: &Doc) -> Claim {
+pub fn judge(id: &str, d: &Statements) -> Claim {
     let (ev, main, p) = evidence();
     claims::all(
         d,
@@ -45,7 +46,7 @@ pub fn judge(id: &str, d: &Doc) -> Claim {
     .expect("the mutated claim exists")
 }
 
-fn m(id: &'static str, what: &'static str, f: fn(&mut Doc)) -> DocEdit<Doc> {
+fn m(id: &'static str, what: &'static str, f: fn(&mut Statements)) -> DocEdit<Statements> {
     (id, what, f)
 }
 
@@ -60,7 +61,17 @@ const LESS_MINUS: Test = Test {
 
 /// Every mutation of the chapter.
 pub fn all() -> Vec<Mutation> {
-    let edits = vec![
+    let mut edits = equation_edits();
+    edits.extend(collision_edits());
+    edits.extend(table1_edits());
+    edits.extend(algorithm_edits());
+    edits.extend(slide_algorithm_edits());
+    Mutation::from_edits(PRINTED, edits, judge)
+}
+
+/// Edits of C.1 to C.15 and the sentences of section 4.
+fn equation_edits() -> Vec<DocEdit<Statements>> {
+    vec![
         m(
             "c3-c5-flight-closed-form",
             "C.3 rate k/gamma -> 1.1 k/gamma",
@@ -100,12 +111,16 @@ pub fn all() -> Vec<Mutation> {
             "C.14 -theta'^2 cos -> +theta'^2 cos",
             |d| d.c14_w2 = 1.0,
         ),
-        m("c10-c13-c14-x-rows", "C.13 x_p'' = -mu F_z/m -> +mu F_z/m", |d| {
-            d.c13_x = 1.0
-        }),
-        m("c10-c13-c14-x-rows", "C.10 x_p'' = mu F_z/m -> 1.1 mu F_z/m", |d| {
-            d.c10_x = 1.1
-        }),
+        m(
+            "c10-c13-c14-x-rows",
+            "C.13 x_p'' = -mu F_z/m -> +mu F_z/m",
+            |d| d.c13_x = 1.0,
+        ),
+        m(
+            "c10-c13-c14-x-rows",
+            "C.10 x_p'' = mu F_z/m -> 1.1 mu F_z/m",
+            |d| d.c10_x = 1.1,
+        ),
         m(
             "c10-c13-c14-x-rows",
             "C.14 x_c'' row: -theta'^2 sin -> +theta'^2 sin",
@@ -114,14 +129,22 @@ pub fn all() -> Vec<Mutation> {
         m("c12-blank", "C.12 printed (the derived equation)", |d| {
             d.c12_printed = true
         }),
-        m("s43-two-dof-mode", "the sentence names the sliding mode", |d| {
-            d.pivot_two_dof = false
-        }),
+        m(
+            "s43-two-dof-mode",
+            "the sentence names the sliding mode",
+            |d| d.pivot_two_dof = false,
+        ),
         m(
             "s43-p-moves-vertically",
             "P does not move vertically",
             |d| d.s43_p_vertical = false,
         ),
+    ]
+}
+
+/// Edits of C.15 and section 4.4 (the collision).
+fn collision_edits() -> Vec<DocEdit<Statements>> {
+    vec![
         m(
             "c15-angular-momentum",
             "C.15 -r x v / L^2 -> +r x v / L^2",
@@ -140,6 +163,12 @@ pub fn all() -> Vec<Mutation> {
             "after collision theta = 1.1 theta_0 (0.03 rad in the jamming scene, 0.043 in the authors')",
             |d| d.reset_offset_rad = 0.03,
         ),
+    ]
+}
+
+/// Edits of Table 1's rows.
+fn table1_edits() -> Vec<DocEdit<Statements>> {
+    vec![
         m("t1-slide-left", "Sliding Left v_x < 0 -> v_x > 0", |d| {
             d.t1_left_v = 1.0
         }),
@@ -148,6 +177,12 @@ pub fn all() -> Vec<Mutation> {
             "Sliding Right v_x < 0 -> v_x > 0",
             |d| d.t1_right_v = 1.0,
         ),
+    ]
+}
+
+/// Edits of Algorithms 1 and 2.
+fn algorithm_edits() -> Vec<DocEdit<Statements>> {
+    vec![
         m("a1-slide-right-test", "mu F_z + F_x > 0 -> < 0", |d| {
             d.a1_right = LESS_PLUS
         }),
@@ -214,6 +249,12 @@ pub fn all() -> Vec<Mutation> {
             "assign x_c' before the test",
             |d| d.a2_test_before_assign = false,
         ),
+    ]
+}
+
+/// Edits of Algorithms 3 and 4 and of the phase-sequence claim.
+fn slide_algorithm_edits() -> Vec<DocEdit<Statements>> {
+    vec![
         m(
             "a3-hinge-while-slipping",
             "hinge test only once the slip stopped",
@@ -237,6 +278,5 @@ pub fn all() -> Vec<Mutation> {
             "events taken at step ends (no location)",
             |d| d.sequence_located = false,
         ),
-    ];
-    Mutation::from_edits(Doc::PRINTED, edits, judge)
+    ]
 }

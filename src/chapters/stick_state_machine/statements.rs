@@ -1,8 +1,10 @@
-//! The document's statements of sections 4 and 5 as data: each check reads the
-//! coefficient, sign, inequality or rule it tests from a [`Doc`], so a falsification
-//! test can feed it a wrong variant ([`super::mutations`]).
+//! The document's statements of sections 4 and 5 as data, no logic: each claim
+//! (`claims.rs`) reads the coefficient, sign, inequality or rule it tests from a
+//! [`Statements`], so a falsification mutation (`mutations.rs`) can feed it a wrong
+//! variant.
 
-/// A printed inequality on the hinge forces, `mu F_z + fx_sign F_x (> or <) 0`.
+/// A printed inequality on the hinge forces, `mu F_z + fx_sign F_x (> or <) 0`
+/// (evaluated by `rule_claims::fires`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Test {
     /// Sign of `F_x` in the test (1).
@@ -11,30 +13,9 @@ pub struct Test {
     pub greater: bool,
 }
 
-impl Test {
-    /// Whether the test fires for the forces `(fx, fz)` (N) at friction `mu` (1).
-    pub fn fires(&self, mu: f64, fx: f64, fz: f64) -> bool {
-        self.fires_at(mu, fx, fz, 0.0)
-    }
-
-    /// [`Test::fires`] at a switch, read to the event accuracy `tol_n` (N): the state
-    /// the simulator switched at lies past the edge `v = 0` by at most that much, and
-    /// evaluating `v` again (exact trigonometry instead of the carried one) moves it
-    /// by rounding, so `v < tol_n` counts as past the edge (`< 0`) and `v > tol_n` as
-    /// inside it (`> 0`).
-    pub fn fires_at(&self, mu: f64, fx: f64, fz: f64, tol_n: f64) -> bool {
-        let v = mu * fz + self.fx_sign * fx;
-        if self.greater {
-            v > tol_n
-        } else {
-            v < tol_n
-        }
-    }
-}
-
-/// The statements, as printed (see [`Doc::PRINTED`]).
+/// The statements (see [`PRINTED`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Doc {
+pub struct Statements {
     /// C.3: `theta' = -flight_rate (k/gamma)(theta - theta_0)` in flight (1).
     pub flight_rate: f64,
     /// C.5: `zddot_p = -flight_gravity g` (1).
@@ -126,57 +107,55 @@ pub struct Doc {
     pub sequence_located: bool,
 }
 
-impl Doc {
-    /// The statements as printed.
-    pub const PRINTED: Doc = Doc {
-        flight_rate: 1.0,
-        flight_gravity: 1.0,
-        c3_general: true,
-        c6_plate: 1.0,
-        c6_spring: 1.0,
-        c6_conservation: true,
-        c9_mu: -1.0,
-        c11_mu: 1.0,
-        c14_w2: -1.0,
-        c15_sign: -1.0,
-        c15_axis: [0.0, 0.0, 1.0],
-        reset_offset_rad: 0.0,
-        s43_p_vertical: true,
-        c10_x: 1.0,
-        c13_x: -1.0,
-        c14_xc_w2: -1.0,
-        c12_printed: false,
-        pivot_two_dof: true,
-        t1_left_v: -1.0,
-        t1_right_v: -1.0,
-        a1_right: Test {
-            fx_sign: 1.0,
-            greater: true,
-        },
-        a1_left: Test {
-            fx_sign: -1.0,
-            greater: true,
-        },
-        a1_flight_positive: true,
-        a1_vertical_flight: true,
-        abort_absolute: true,
-        a2_tan_abs: false,
-        rcp_from_c: true,
-        a2_impulse_if_nonnegative: true,
-        a2_theta_sign: 1.0,
-        a2_hinge_lt: true,
-        a2_slide_is_else: false,
-        last_assert_wins: true,
-        a2_left_if_fx_positive: true,
-        a2_tension_flight: true,
-        a2_dead_branch: true,
-        a2_test_before_assign: true,
-        a2_free_sign: -1.0,
-        slide_hinge_while_slipping: true,
-        slide_to_other: true,
-        slide_abort: true,
-        slide_flight_on_fx: true,
-        sequence_rtols: [1e-10, 1e-8],
-        sequence_located: true,
-    };
-}
+/// The statements as printed.
+pub const PRINTED: Statements = Statements {
+    flight_rate: 1.0,
+    flight_gravity: 1.0,
+    c3_general: true,
+    c6_plate: 1.0,
+    c6_spring: 1.0,
+    c6_conservation: true,
+    c9_mu: -1.0,
+    c11_mu: 1.0,
+    c14_w2: -1.0,
+    c15_sign: -1.0,
+    c15_axis: [0.0, 0.0, 1.0],
+    reset_offset_rad: 0.0,
+    s43_p_vertical: true,
+    c10_x: 1.0,
+    c13_x: -1.0,
+    c14_xc_w2: -1.0,
+    c12_printed: false,
+    pivot_two_dof: true,
+    t1_left_v: -1.0,
+    t1_right_v: -1.0,
+    a1_right: Test {
+        fx_sign: 1.0,
+        greater: true,
+    },
+    a1_left: Test {
+        fx_sign: -1.0,
+        greater: true,
+    },
+    a1_flight_positive: true,
+    a1_vertical_flight: true,
+    abort_absolute: true,
+    a2_tan_abs: false,
+    rcp_from_c: true,
+    a2_impulse_if_nonnegative: true,
+    a2_theta_sign: 1.0,
+    a2_hinge_lt: true,
+    a2_slide_is_else: false,
+    last_assert_wins: true,
+    a2_left_if_fx_positive: true,
+    a2_tension_flight: true,
+    a2_dead_branch: true,
+    a2_test_before_assign: true,
+    a2_free_sign: -1.0,
+    slide_hinge_while_slipping: true,
+    slide_to_other: true,
+    slide_abort: true,
+    slide_flight_on_fx: true,
+    sequence_rtols: [1e-10, 1e-8],
+    sequence_located: true,
+};
