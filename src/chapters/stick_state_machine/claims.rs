@@ -49,7 +49,7 @@ fn equations(d: &Statements, c: &Ctx) -> Vec<Claim> {
     for (run, q) in c.runs() {
         let k = q.stiffness_nm_per_rad / q.damping_nms_per_rad;
         for x in &run.trace {
-            let r = (x.y[OM] + k * (x.y[TH] - q.theta0_rad)).abs();
+            let r = (x.y[OM] + d.flight_rate * k * (x.y[TH] - q.theta0_rad)).abs(); // C.3 as stated
             if x.mode == Mode::Flight {
                 flight_res = flight_res.max(r);
             } else {
@@ -249,7 +249,7 @@ fn slide_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
     } else {
         slide_dof
     };
-    v.push(Claim::draft(Check::ClosedForm, "s43-two-dof-mode", "4.3", &format!("As printed (Sliding Left): \"Thus in the pivot mode the system has two degrees of freedom, i.e., it can slide as well as change its angle\". Correct: the sliding mode has two (x_c and θ: 3 coordinates less the one constraint z_c = z_s); the pivot has one ({pivot_dof}: x_c' = 0 too), as section 4.2 itself says: the sentence names the wrong mode. Degrees of freedom of the mode the sentence names.")).values(json!(2), json!(stated), "exact").printed_or_corrected(stated == 2, slide_dof == 2 && pivot_dof == 1));
+    v.push(Claim::draft(Check::ClosedForm, "s43-two-dof-mode", "4.3", &format!("As printed (Sliding Left): \"Thus in the pivot mode the system has two degrees of freedom, i.e., it can slide as well as change its angle\". Correct: the sliding mode has two (x_c and θ: 3 coordinates less the one constraint z_c = z_s); the pivot has one ({pivot_dof}: x_c' = 0 too), as section 4.2 itself says: the sentence names the wrong mode. Degrees of freedom of the mode the sentence names.")).values(json!(2), json!(stated), "exact").printed_or_corrected(stated as f64 == d.s43_dof, slide_dof as f64 == d.s43_dof && pivot_dof == 1));
     v.push(Claim::draft(Check::Simulation, "s43-p-moves-vertically", "4.3", "As printed (Sliding Left): \"C is constrained to be on the platform but moves to the left while the point P moves down vertically\". Correct: P is accelerated sideways by the friction force, x_p'' = μ F_z/m (C.10): P does not move vertically. RMS of x_p' over RMS of z_p' at the slide-left samples (vertical: below 1e-3).").values(json!(0.0), json!(ratio), "1e-3").printed_or_corrected(if d.s43_p_vertical { vertical } else { !vertical }, nl > 0 && !vertical));
     v
 }
@@ -281,7 +281,7 @@ fn collision_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
             let [_, _, vxp, vzp] = m.tip(&y);
             let uz = vzp - m.plate(l.t_s).1;
             let rate = |th: f64| -(th.sin() * uz - th.cos() * vxp) / q.length_m; // formula: -(r x u)/L^2
-            let th_doc = q.theta0_rad + d.reset_offset_rad;
+            let th_doc = d.reset_factor * q.theta0_rad + d.reset_offset_rad; // formula: theta = theta_0 after the collision
             let (w_act, w_doc) = (rate(l.theta_rad), rate(th_doc));
             dev = dev.max((l.theta_rad - th_doc).abs());
             rate_err = rate_err.max((w_doc - w_act).abs() / w_act.abs().max(1e-300));

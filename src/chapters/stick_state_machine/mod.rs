@@ -33,7 +33,9 @@ mod slide_rules;
 mod statements;
 mod table1_claims;
 
+pub use cycle_report::COARSER_THAN_10_PERCENT;
 pub use events::{events_csv, EVENTS_CAP};
+pub use mutations::NO_PRINTED_NUMBER;
 pub use setup::{max_duration_s, setup, PHASE_ROUNDING_MAX, SECONDS_PER_CYCLE};
 
 use super::Context;
@@ -136,7 +138,8 @@ pub struct Args {
     /// Torsion-spring stiffness k (N m/rad, 0 to 100) [scene: 10].
     #[arg(long)]
     pub stiffness: Option<f64>,
-    /// Torsion damper gamma (N m s/rad, 0 to 0.1) [scene: 0.01].
+    /// Torsion damper gamma (N m s/rad, 0 to 0.1; above 0 when k > 0: the massless rod's
+    /// flight needs it) [scene: 0.01].
     #[arg(long)]
     pub damping: Option<f64>,
     /// Coulomb friction coefficient mu at the foot C (1, 0 to 2) [scene: 0.4].
@@ -319,7 +322,15 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     if args.events.is_some() {
         rec.sequence_cap = EVENTS_CAP; // every switch, up to the cap (then the cut is said)
     }
-    let (physical, mut main, fired) = main_run::run_main(args, &p, dur, &opts, rec);
+    let (mut physical, mut main, mut fired) = main_run::run_main(args, &p, dur, &opts, rec);
+    let mut main_opts = opts; // the evidence runs keep the chosen method
+    if let Some(o) = main_run::dopri5_fallback(&physical, &opts) {
+        let why = format!("DOP853 produced a non-finite state ({}); the run was repeated with DOPRI5 at the same tolerance (near the vertical the slides' C.14 divides by sin(θ) and the order-8 stages overflow)", physical.outcome.label());
+        eprintln!("note: {why}");
+        r.result("contact_method_fallback", why);
+        (physical, main, fired) = main_run::run_main(args, &p, dur, &o, rec);
+        main_opts = o;
+    }
     bar.finish_and_clear();
     if let Some(path) = &args.events {
         events::write_events(&mut r, path, &main).map_err(|e| events::events_error(args, &e))?;
@@ -330,7 +341,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     sensitivity::start_note(&mut r, &p, args.start);
     if args.rules == Rules::Physical {
         sensitivity::tolerance_sensitivity(
-            &mut r, &p, args.start, dur, &opts, args.rtol, &physical,
+            &mut r, &p, args.start, dur, &main_opts, args.rtol, &physical,
         );
     }
 
@@ -355,7 +366,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     );
 
     if let Some(dir) = ctx.figure_dir(ID) {
-        let paths = figures::draw_all(&dir, &p, &physical, &ev, ctx, &opts)?;
+        let paths = figures::draw_all(&dir, &p, &physical, &ev, ctx, &main_opts)?;
         r.figures.extend(paths);
         r.figures
             .extend(cycle_report::figure(&dir, &ev, &opts, ctx)?);

@@ -3,12 +3,12 @@
 //! violated, `OnViolation`) and, for Algorithms 3 and 4, the reading in which the rules
 //! run at every instant (`Continuous`); each reading gets its own claim.
 
-use super::evidence::state_at;
 use super::evidence::Ctx;
+use super::evidence::{cone_exterior, cone_interior, keeps_cone, state_at};
 use super::impulse::newton_euler;
 use super::statements::{Statements, Test};
 use crate::physics::stick::run::RunSummary;
-use crate::physics::stick::{Mode, State, StickModel, NSTATE, OM, TH, VXC, XC, ZC};
+use crate::physics::stick::{Mode, State, StickModel, StickParams, NSTATE, OM, TH, VXC, XC, ZC};
 use crate::report::{Check, Claim};
 use serde_json::json;
 
@@ -32,6 +32,28 @@ fn landing_states(c: &Ctx) -> Vec<(StickModel, f64, State, Mode)> {
                     other => other,
                 };
                 v.push((m, l.t_s, z, to));
+            }
+        }
+    }
+    v
+}
+
+/// The first landing state of each scene turned to the angles `theta = +-atan(s mu)`,
+/// s = 0.5, 0.9, 0.95, 1.05, 1.1, 1.5: impacts just inside and outside the friction
+/// cone, where a sticking test whose coefficient of mu is off by 10 % misjudges.
+fn edge_states(states: &[(StickModel, f64, State, Mode)]) -> Vec<(StickModel, f64, State, Mode)> {
+    let mut v = Vec::new();
+    let mut seen: Vec<StickParams> = Vec::new();
+    for (m, t, y, to) in states {
+        if seen.contains(&m.p) {
+            continue;
+        }
+        seen.push(m.p);
+        for s in [0.5, 0.9, 0.95, 1.05, 1.1, 1.5] {
+            for sign in [-1.0, 1.0] {
+                let mut z = *y;
+                z[TH] = sign * (s * m.p.mu).atan(); // formula: |tan(theta)| = s mu
+                v.push((*m, *t, z, *to));
             }
         }
     }
@@ -76,8 +98,45 @@ pub fn c15_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
         off = off.max(cross.iter().map(|x| x.abs()).fold(0.0, f64::max) / norm);
         n += 1;
     }
+    v.push(c15_every_collision(d, &states));
     v.push(Claim::draft(Check::ClosedForm, "c15-axis", "C.15", "As printed: H = ((x_p - x_c)(z_p' - z_c') - (z_p - z_c) x_p') m k, along k, the vertical. Correct: in the x-z plane r x v points along j (out of the plane): r x (v_p - z_s' k) = ((z_p - z_c) x_p' - (x_p - x_c)(z_p' - z_s')) j, so the printed bracket is the component along -j (the formula C.15 uses is right, its axis is not). |axis x (r x v)| / |r x v| at the landing states (0: parallel).").values(json!(0.0), json!(off), "1e-12").printed_or_corrected(n > 0 && off <= 1e-12, n > 0));
     v
+}
+
+/// Section 4.4 applies C.15 (C stuck, the impulse along the rod) at every collision.
+fn c15_every_collision(d: &Statements, states: &[(StickModel, f64, State, Mode)]) -> Claim {
+    let (mut infeasible, mut routed, mut judged) = (0usize, 0usize, 0usize);
+    for (m, t, y, _) in states {
+        let ne = newton_euler(m, *t, y);
+        // C.15's premise: the plate supplies the impulse that stops C, inside the cone
+        // and compressive (formula: |J_x| <= mu J_z, J along the rod towards P)
+        let supplied = ne.jx.abs() <= m.p.mu * ne.jz && ne.along_rod(y[TH]) > 0.0;
+        let sticking = y[TH].tan().abs() <= m.p.mu && ne.along_rod(y[TH]) > 0.0;
+        if d.s44_every_collision || sticking {
+            judged += 1;
+            infeasible += usize::from(!supplied);
+        }
+        routed += usize::from(!supplied && !sticking);
+    }
+    let all_infeasible = states
+        .iter()
+        .filter(|(m, t, y, _)| {
+            let ne = newton_euler(m, *t, y);
+            !(ne.jx.abs() <= m.p.mu * ne.jz && ne.along_rod(y[TH]) > 0.0)
+        })
+        .count();
+    let printed = judged > 0 && infeasible == 0;
+    // corrected: C.15 at the sticking collisions only; every other one is a collision
+    // Algorithm 2 sends to its impulse-free branch (|tan θ| > μ or the rod lengthening)
+    let corrected = judged > 0 && all_infeasible > 0 && routed == all_infeasible;
+    Claim::draft(
+        Check::SecondMethod,
+        "s44-c15-every-collision",
+        "4.4",
+        &format!("As printed: \"A collision event happens when the stick exits the flight phase. After collision θ = θ₀ while θ' needs to be evaluated by equating the angular moment H about the point C before and after\" (C.15), for every collision. C.15's premise is an impulse that stops C, along the massless rod, which the plate can supply only inside the friction cone and compressive. Correct: C.15 holds at the sticking collisions (|tan θ| <= μ, the rod shortening); at the others Algorithm 2's impulse-free branch applies (C slides, P keeps its velocity), which section 4.4 does not mention. Evidence: the Newton-Euler impulse (a linear solve, independent of C.15) at every landing of both scenes and their mirror images: collisions{} at which the plate cannot supply it ({all_infeasible} of {}, all of them sent to the impulse-free branch by Algorithm 2's tests).", if d.s44_every_collision { "" } else { " (sticking ones, as stated)" }, states.len()),
+    )
+    .values(json!(0), json!(infeasible), "exact")
+    .printed_or_corrected(printed, corrected)
 }
 
 /// The claims of Algorithms 1 to 4 and the phase sequence.
@@ -92,34 +151,42 @@ pub fn all(d: &Statements, c: &Ctx) -> Vec<Claim> {
     v
 }
 
-/// Contact forces `(mu, F_x, F_z)` strictly inside the friction cone, drawn by a closed
-/// form rather than selected from the simulation: F_z = 1 N, F_x = s mu F_z for
-/// s = -0.95, -0.9, ..., 0.95, at mu = 0.1, 0.4, 1 and 2. A test of a pivot's exit must
-/// fire at none of them (the contact holds there); that a test fires at all of them is
-/// algebra, not simulation.
-fn cone_interior() -> Vec<(f64, f64, f64)> {
-    let mut v = Vec::new();
-    for mu in [0.1, 0.4, 1.0, 2.0] {
-        for k in -19..=19 {
-            let s = 0.05 * k as f64;
-            v.push((mu, s * mu, 1.0));
-        }
-    }
-    v
-}
-
 /// Whether the printed test `t` fires for the forces `(fx, fz)` (N) at friction `mu`
 /// (1), read to the accuracy `tol_n` (N): at a switch the state lies past the edge
 /// `v = 0` by at most the event accuracy, and evaluating `v` again (exact trigonometry
 /// instead of the carried one) moves it by rounding, so `v < tol_n` counts as past the
 /// edge (`< 0`) and `v > tol_n` as inside it (`> 0`); `tol_n = 0` away from switches.
 pub fn fires(t: &Test, mu: f64, fx: f64, fz: f64, tol_n: f64) -> bool {
-    let v = mu * fz + t.fx_sign * fx; // formula: mu F_z + s F_x
+    let v = t.mu_coef * mu * fz + t.fx_sign * fx; // formula: c mu F_z + s F_x
     if t.greater {
         v > tol_n
     } else {
         v < tol_n
     }
+}
+
+/// `t` with its inequality reversed (the correction of Algorithm 1's slide tests).
+fn reversed(t: &Test) -> Test {
+    Test {
+        greater: !t.greater,
+        ..*t
+    }
+}
+
+/// Whether the reversed test `t` is the exit test of its cone edge on the closed-form
+/// samples: it fires at none of the cone's interior, and at an exterior force exactly
+/// when the force lies beyond the edge `mu F_z + fx_sign F_x = 0` (the true edge,
+/// coefficient of mu 1).
+fn reversed_is_exit(t: &Test) -> bool {
+    let r = reversed(t);
+    let inside = cone_interior()
+        .iter()
+        .all(|s| !fires(&r, s.0, s.1, s.2, 0.0));
+    let outside = cone_exterior().iter().all(|s| {
+        let beyond = s.0 * s.2 + t.fx_sign * s.1 < 0.0; // formula: mu F_z + s F_x < 0
+        fires(&r, s.0, s.1, s.2, 0.0) == beyond
+    });
+    inside && outside
 }
 
 fn frac(a: usize, b: usize) -> f64 {
@@ -153,7 +220,8 @@ fn alg1(d: &Statements, c: &Ctx) -> Vec<Claim> {
             .iter()
             .filter(|s| fires(&test, s.0, s.1, s.2, 0.0))
             .count();
-        v.push(Claim::draft(Check::ClosedForm, id, "Alg. 1", &format!("As printed: if {printed}. Correct: {fix}. {reading} Fraction of the cone's interior at which the stated test fires.")).values(json!(0.0), json!(frac(fires, n)), "0").printed_or_corrected(n > 0 && fires == 0, n > 0));
+        let corrected = n > 0 && reversed_is_exit(&test);
+        v.push(Claim::draft(Check::ClosedForm, id, "Alg. 1", &format!("As printed: if {printed}. Correct: {fix}. {reading} The correction (the stated inequality reversed, its coefficients kept) must fire at none of the interior and exactly at the forces beyond its edge (|s| = 1.05 to 1.5): a coefficient of μ off by 10 % misplaces the edge. Fraction of the cone's interior at which the stated test fires.")).values(json!(0.0), json!(frac(fires, n)), "0").printed_or_corrected(n > 0 && fires == 0, corrected));
     }
     let fires = cone
         .iter()
@@ -235,10 +303,10 @@ fn alg1_on_violation(d: &Statements, c: &Ctx) -> Claim {
             // corrected: slide right / left beyond the cone's edges, flight if tensile
             // and the flight lifts C
             let mut fixed = None;
-            if mu * f.fz + f.fx < tol {
+            if fires(&reversed(&d.a1_right), mu, f.fx, f.fz, tol) {
                 fixed = Some(Mode::SlideRight);
             }
-            if mu * f.fz - f.fx < tol {
+            if fires(&reversed(&d.a1_left), mu, f.fx, f.fz, tol) {
                 fixed = Some(Mode::SlideLeft);
             }
             if f.fz < tol && matches!(m.takeoff(t, &y), crate::physics::stick::rules::Next::To(..))
@@ -250,7 +318,7 @@ fn alg1_on_violation(d: &Statements, c: &Ctx) -> Claim {
             n += 1;
         }
     }
-    Claim::draft(Check::LiteralExecution, "a1-exits", "Alg. 1, Table 1", "Reading: Table 1's caption (HINGE runs when the reaction leaves the cone or turns tensile). Algorithm 1 executed as printed, in order, the last assignment winning, at every pivot exit of both scenes: it must choose the mode the contact conditions chose. The tests are read at the switch state to the event accuracy tol = 1e-9 m g (that state lies past the edge by at most tol): v < tol counts as < 0, v > tol as > 0. As printed, at an exit through the cone's edge F_x = μ F_z the reversed slide-right test and 'F_z > 0 -> FLIGHT' both fire, and FLIGHT wins. Exits at which the printed algorithm agrees (of all exits).").values(json!(n), json!(agree), "exact").printed_or_corrected(n > 0 && agree == n, n > 0 && agree_fix == n)
+    Claim::draft(Check::LiteralExecution, "a1-exits", "Alg. 1, Table 1", "Reading: Table 1's caption (HINGE runs when the reaction leaves the cone or turns tensile). Algorithm 1 executed as printed, in order, the last assignment winning, at every pivot exit of both scenes: it must choose the mode the contact conditions chose. The tests are read at the switch state to the event accuracy tol = 1e-9 m g (that state lies past the edge by at most tol): v < tol counts as < 0, v > tol as > 0. As printed, at an exit through the cone's edge F_x = μ F_z the reversed slide-right test and 'F_z > 0 -> FLIGHT' both fire, and FLIGHT wins. The correction reverses the two slide tests (their coefficients kept) and lifts off only when F_z < 0 and the flight lifts C. Exits at which the printed algorithm agrees (of all exits).").values(json!(n), json!(agree), "exact").printed_or_corrected(n > 0 && agree == n, n > 0 && agree_fix == n)
 }
 
 fn alg2_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
@@ -273,10 +341,16 @@ fn alg2_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
                 th.tan().abs()
             } else {
                 th.tan()
-            } <= m.p.mu)
+            } <= d.a2_tan_mu * m.p.mu)
                 != in_cone,
         );
-        dis_fix += usize::from((th.tan().abs() <= m.p.mu) != in_cone);
+    }
+    // the correction |tan(theta)| <= mu (its coefficient kept) at the landings and at
+    // landing states turned to angles just inside and outside the cone's edge
+    for (m, t, y, _) in states.iter().chain(&edge_states(&states)) {
+        let ne = newton_euler(m, *t, y);
+        let in_cone = ne.jx.abs() <= m.p.mu * ne.jz.abs();
+        dis_fix += usize::from((y[TH].tan().abs() <= d.a2_tan_mu * m.p.mu) != in_cone);
     }
     let n = states.len();
     v.push(Claim::draft(Check::SecondMethod, "a2-tan-test", "Alg. 2", "As printed: a sticking impact if tan(θ) <= μ. Correct: |tan(θ)| <= μ: the Newton-Euler impulse lies along the rod, |J_x|/|J_z| = |tan(θ)|. Landings of both scenes and their mirror images (the scenes lean to +x only) at which the stated test disagrees with 'the Newton-Euler impulse lies inside the cone'.").values(json!(0), json!(dis), "exact").printed_or_corrected(n > 0 && dis == 0, n > 0 && dis_fix == 0));
@@ -297,7 +371,7 @@ fn alg2_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
         dis_fix += usize::from((ux * fx + uz * fz < 0.0) != compressive);
         let l = m.p.length_m;
         let om = d.a2_theta_sign * (rx * uz - rz * ux) / (l * l);
-        let om_fix = -(fx * uz - fz * ux) / (l * l);
+        let om_fix = -d.a2_theta_sign * (fx * uz - fz * ux) / (l * l); // the sign of C.15 added
         let scale = ne.omega_after.abs() + 1.0;
         dis_th += usize::from((om - ne.omega_after).abs() > 1e-12 * scale);
         dis_th_fix += usize::from((om_fix - ne.omega_after).abs() > 1e-12 * scale);
@@ -372,20 +446,25 @@ fn alg2_hinge(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let ps = cone_interior();
     let n = ps.len();
     let mut v = Vec::new();
+    let c_mu = d.a2_hinge_mu;
     let hinge = |s: &(f64, f64, f64), lt: bool| {
         let (mu, fx, fz) = *s;
         if lt {
-            mu * fz < fx.abs()
+            c_mu * mu * fz < fx.abs()
         } else {
-            mu * fz >= fx.abs()
+            c_mu * mu * fz >= fx.abs()
         }
     };
     let keeps = ps.iter().filter(|s| hinge(s, d.a2_hinge_lt)).count();
-    v.push(Claim::draft(Check::ClosedForm, "a2-hinge-test", "Alg. 2", "As printed: if μ F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= μ F_z (inside the cone), as the authors' code has it (fsm.m, STRIKE_0: |F_x| < μ F_y -> HINGE; STUCK: μ F_y >= |F_x| -> HINGE). Evidence: closed form, the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2), not samples the simulator's own guard selected. Fraction of it at which the stated test chooses HINGE (must be 1).").values(json!(1.0), json!(frac(keeps, n)), "exact").printed_or_corrected(n > 0 && keeps == n, n > 0));
+    // the correction (the inequality reversed, its coefficient kept) keeps every force
+    // inside the cone and none outside it
+    let corrected = n > 0 && keeps_cone(|s| hinge(s, !d.a2_hinge_lt));
+    v.push(Claim::draft(Check::ClosedForm, "a2-hinge-test", "Alg. 2", "As printed: if μ F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= μ F_z (inside the cone), as the authors' code has it (fsm.m, STRIKE_0: |F_x| < μ F_y -> HINGE; STUCK: μ F_y >= |F_x| -> HINGE). Evidence: closed form, the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2), not samples the simulator's own guard selected. The correction (the inequality reversed, its coefficient kept) must also choose HINGE at none of the forces outside the cone (|s| = 1.05 to 1.5): a coefficient of μ off by 10 % misplaces the edge. Fraction of the interior at which the stated test chooses HINGE (must be 1).").values(json!(1.0), json!(frac(keeps, n)), "exact").printed_or_corrected(n > 0 && keeps == n, corrected));
     // the block "if hinge then HINGE; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT", executed
     let mut ends_hinge = 0usize;
     for s in &ps {
-        let h = hinge(s, false);
+        let (mu, fx, fz) = *s;
+        let h = mu * fz >= fx.abs(); // the corrected hinge test
         let mut next = None;
         if h {
             next = Some(Mode::Pivot);

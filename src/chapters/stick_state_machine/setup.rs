@@ -1,7 +1,7 @@
 //! The flags checked and turned into the run's parameters, duration and options.
 
 use super::{scene_params, Args, Context};
-use crate::error::{check, range, Result};
+use crate::error::{check, range, Result, WorkbookError};
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::StepControl;
 use crate::physics::stick::StickParams;
@@ -99,6 +99,14 @@ fn rod_flags(args: &Args, base: &StickParams) -> Result<(f64, f64, f64, f64, f64
         "N m s/rad",
         "0 to 10 x the authors' damper",
     )?;
+    if c == 0.0 && k > 0.0 {
+        // formula: in flight the massless rod's moment balance is k (theta - theta_0) + gamma theta' = 0 (C.3)
+        return Err(WorkbookError::bad_input(
+            "--damping",
+            c,
+            "0 < value <= 0.1 (N m s/rad) when --stiffness is above 0: in flight the massless rod follows θ' = -(k/γ)(θ - θ₀) (C.3), undetermined at γ = 0 (0 is accepted only with --stiffness 0)",
+        ));
+    }
     let mu = range(
         "--mu",
         args.mu.unwrap_or(base.mu),

@@ -4,8 +4,8 @@
 //! zero; `fsm.m` of toshankarghosh/toothpicks switches on the event code). The reading
 //! in which the rules run at every instant is excluded and not judged.
 
-use super::evidence::state_at;
 use super::evidence::Ctx;
+use super::evidence::{keeps_cone, state_at};
 use super::statements::Statements;
 use crate::physics::stick::{Mode, State, StickModel, StickParams, VXC};
 use crate::report::{Check, Claim};
@@ -48,7 +48,7 @@ struct SlideExits {
 fn slide_exits(d: &Statements, c: &Ctx, mode: Mode, other: Mode) -> SlideExits {
     let hinge_ok = |m: &StickModel, t: f64, y: &State| {
         let f = m.pivot_eval(t, y);
-        m.p.mu * f.fz >= f.fx.abs()
+        d.slide_hinge_mu * m.p.mu * f.fz >= f.fx.abs()
     };
     // The reading in which the rules run at every instant of the slide is not judged:
     // Table 1's caption ("The inequalities are checked for violation. If an inequality
@@ -121,8 +121,10 @@ pub fn alg34(d: &Statements, c: &Ctx, mode: Mode) -> Vec<Claim> {
         lifts,
         lift_abort,
     } = slide_exits(d, c, mode, other);
-    // Alg. 3 and 4 print the same lines mirrored and are judged on the same lift-offs
-    // (of either slide): Alg. 4's claims share Alg. 3's numbers and count once.
+    let c_mu = d.slide_hinge_mu;
+    let hinge_test_right = keeps_cone(|s| c_mu * s.0 * s.2 >= s.1.abs()); // formula: c mu F_z >= |F_x|
+                                                                          // Alg. 3 and 4 print the same lines mirrored and are judged on the same lift-offs
+                                                                          // (of either slide): Alg. 4's claims share Alg. 3's numbers and count once.
     let same = |c: Claim, id: &str| {
         if key == "a4" {
             c.same_finding_as(&format!("a3-{id}"))
@@ -135,7 +137,7 @@ pub fn alg34(d: &Statements, c: &Ctx, mode: Mode) -> Vec<Claim> {
     } else {
         ""
     };
-    v.push(same(Claim::draft(Check::Simulation, &format!("{key}-hinge-while-slipping"), alg, &format!("Reading: Table 1's caption ({name} runs Alg. when an inequality is violated: the slip stops or F_z reaches 0), which the authors' fsm.m confirms (a switch on the event code: STUCK runs the hinge test, FLIGHT does not). As printed, without that dispatch, the hinge test also runs at a lift-off (F_z = 0) while C still slips, and then stops C without an impulse. Lift-offs from either slide (Alg. 3 and 4 print the same lines, mirrored) in both scenes at which the stated test fires while C slips.{shared}")).values(json!(0), json!(lift_hinge), "0").printed_or_corrected(lift_hinge == 0, true), "hinge-while-slipping"));
+    v.push(same(Claim::draft(Check::Simulation, &format!("{key}-hinge-while-slipping"), alg, &format!("Reading: Table 1's caption ({name} runs Alg. when an inequality is violated: the slip stops or F_z reaches 0), which the authors' fsm.m confirms (a switch on the event code: STUCK runs the hinge test, FLIGHT does not). As printed, without that dispatch, the hinge test also runs at a lift-off (F_z = 0) while C still slips, and then stops C without an impulse. Lift-offs from either slide (Alg. 3 and 4 print the same lines, mirrored) in both scenes at which the stated test fires while C slips. The correction keeps the test and runs it at slip stops only; as a test it must keep the contact at every force inside the cone and at none outside (closed form, |F_x| = s μ F_z, |s| <= 0.95 and 1.05 to 1.5): a coefficient of μ off by 10 % fails there.{shared}")).values(json!(0), json!(lift_hinge), "0").printed_or_corrected(lift_hinge == 0, hinge_test_right), "hinge-while-slipping"));
     v.push(Claim::draft(Check::Consistency, &format!("{key}-other-slide"), alg, &format!("Reading: Table 1's caption. At a slip stop of {name}: HINGE if the hinge forces are inside the cone, else {other_name} (its F_z > 0), as the authors' fsm.m does (case STUCK). Slip stops of both scenes at which the stated rule picks the mode the contact conditions took. A consistency check: the workbook's contact rules make the same choice at a slip stop (`select_contact`), so no document could fail it here.")).values(json!(stops), json!(stop_agree), "exact").printed_or_corrected(stops > 0 && stop_agree == stops, false));
     v.push(same(Claim::draft(Check::Simulation, &format!("{key}-abort"), alg, &format!("As printed ({name}): if the new slide's F_z <= 0, ABORT. The authors' fsm.m runs this line only at a slip stop (case STUCK, the other slide's F_y <= 0); a lift-off is its own event (FLIGHT). Without the dispatch, as printed, it also runs at a lift-off: there a vanishing normal force is a lift-off (FLIGHT; read as assignments, the later 'F_z = 0 -> FLIGHT' line overrides the ABORT when F_z is exactly 0). Lift-offs from either slide (the same line, mirrored; the simulation continued in flight) at which the stated line aborts.{shared}")).values(json!(0), json!(lift_abort), "0").printed_or_corrected(lifts > 0 && lift_abort == 0, lifts > 0), "abort"));
     v.push(same(
