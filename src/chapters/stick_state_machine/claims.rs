@@ -8,7 +8,7 @@
 
 use super::evidence::{flight_error, pendulum_error, Ctx, Evidence, PENDULUM_EPS};
 use super::statements::{Statements, PRINTED};
-use super::{rule_claims, table1_claims};
+use super::{collision_claims, rule_claims, table1_claims};
 use crate::physics::stick::run::{RunSummary, StickOutcome};
 use crate::physics::stick::{Mode, StickModel, StickParams, OM, TH};
 use crate::report::{ChapterReport, Check, Claim};
@@ -63,7 +63,7 @@ fn equations(d: &Statements, c: &Ctx) -> Vec<Claim> {
     v.push(Claim::draft(Check::Simulation, "c3-relaxation-flight-only", "C.3", "As printed, C.3 lists θ' = -(k/γ)(θ - θ₀) among the general kinematics of C (beside C.1, C.2, C.4). It is the flight's moment balance (C.8 with F = 0) and holds only in flight; in contact the plate's moment changes θ'. Largest |θ' + (k/γ)(θ - θ₀)| (rad/s) at contact samples (flight samples: below 1e-9).").values(json!(0.0), json!(contact_res), "1e-9 rad/s").printed_or_corrected(if d.c3_general { general_holds } else { flight_ok }, flight_ok && contact_res > 1e-9));
     v.extend(pivot_claims(d, c));
     v.extend(slide_claims(d, c));
-    v.extend(collision_claims(d, c));
+    v.extend(collision_section(d, c));
     v
 }
 
@@ -255,7 +255,7 @@ fn slide_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
 }
 
 /// C.14's singularity, C.15 and section 4.4.
-fn collision_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
+fn collision_section(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let ev = c.ev;
     let mut v = Vec::new();
     let both = [&ev.authors, &ev.jamming, c.main];
@@ -264,7 +264,7 @@ fn collision_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
         .filter(|s| matches!(&s.outcome, StickOutcome::Invalid(w) if w.contains("C.14")))
         .count();
     v.push(Claim::draft(Check::Consistency, "c14-singular-at-vertical", "C.14", "C.14 divides by sin(θ): the slides are undefined with the rod vertical. The workbook stops such a run as invalid (reason given); none of the scenes' runs reaches it.").values(0, sing as u64, "exact").confirmed_if(sing == 0));
-    v.extend(rule_claims::c15_claims(d, c));
+    v.extend(collision_claims::c15_claims(d, c));
     // The reset's effect, not a chosen angle: C.15's rate after the impact,
     // theta'+ = -(r x u)/L^2 with r = L (sin, cos) and u = v_P - z_s' k, computed with the
     // lever at the landing angle and at the document's theta_0 (+ its offset), at every

@@ -5,12 +5,13 @@
 //! rule of Algorithms 1 to 4 gets a claim (see `claims.rs`).
 //!
 //! Shape (ARCHITECTURE.md): `statements.rs` (the document's statements as data),
-//! `evidence.rs` (the runs, computed once), `claims.rs` with its parts `rule_claims.rs`,
-//! `slide_rules.rs` and `table1_claims.rs` (pure functions of statements and evidence),
+//! `evidence.rs` (the runs, computed once), `claims.rs` with its parts `collision_claims.rs`,
+//! `rule_claims.rs`, `slide_rules.rs` and `table1_claims.rs` (pure functions of statements and evidence),
 //! `figures.rs`, `mutations.rs`; the limit-cycle section has its own `cycle_claims.rs`
 //! and `cycle_report.rs`. This file: the flags and the orchestration.
 
 mod claims;
+mod collision_claims;
 pub mod cycle_claims;
 mod cycle_report;
 mod events;
