@@ -16,10 +16,7 @@ use std::path::{Path, PathBuf};
 
 /// Cycles inside chapter folders still to be taken apart (chapter, files in the cycle,
 /// sorted). Issue 20 of the tracker names them.
-const KNOWN_CYCLES: &[(&str, &[&str])] = &[(
-    "stick_state_machine",
-    &["claims", "rule_claims", "slide_rules"],
-)];
+const KNOWN_CYCLES: &[(&str, &[&str])] = &[];
 
 /// Every `.rs` file below `dir`.
 fn rust_files(dir: &Path) -> Vec<PathBuf> {

@@ -1,67 +1,23 @@
 //! One claim per equation (C.1 to C.15), per row of Table 1 and per quantitative sentence
 //! of section 4; the rules of Algorithms 1 to 4 are in `rule_claims.rs`.
 //!
-//! Every check reads the document's statement from a [`Doc`] (the printed one in the
+//! Every check reads the document's statement from a [`Statements`] (the printed one in the
 //! report, a wrong variant in the falsification tests). A rule-level verdict is
 //! `confirmed` when the printed statement holds on the evidence, `erratum` when it fails
 //! and the stated correction holds, `failed` when neither does.
 
-use super::doc::Doc;
-use super::evidence::{flight_error, pendulum_error, Evidence, EVIDENCE_RTOL, PENDULUM_EPS};
-use super::rule_claims;
-use crate::physics::stick::run::RunSummary;
-use crate::physics::stick::{CollisionAngle, Mode, StickModel, StickParams, OM, TH, VXC};
-use crate::report::{ChapterReport, Check, Claim, Verdict};
-use serde_json::{json, Value};
-
-/// What the checks look at: the evidence runs and this run (with its parameters).
-pub struct Ctx<'a> {
-    /// The evidence runs.
-    pub ev: &'a Evidence,
-    /// This run (physical rules).
-    pub main: &'a RunSummary,
-    /// This run's parameters.
-    pub p: &'a StickParams,
-    /// This run's relative (= absolute) tolerance (the evidence runs use 1e-10).
-    pub rtol: f64,
-}
-
-impl Ctx<'_> {
-    /// The traced evidence runs with their parameters.
-    pub fn runs(&self) -> [(&RunSummary, &StickParams); 2] {
-        [
-            (&self.ev.authors, &self.ev.params[0]),
-            (&self.ev.jamming, &self.ev.params[1]),
-        ]
-    }
-}
-
-/// A claim whose verdict compares the printed statement and the correction: confirmed
-/// if the printed one holds, erratum if only the correction holds, failed otherwise.
-#[allow(clippy::too_many_arguments)]
-pub fn rule(
-    id: &str,
-    sec: &str,
-    st: &str,
-    exp: Value,
-    comp: Value,
-    tol: &str,
-    printed_holds: bool,
-    corrected_holds: bool,
-    kind: Check,
-) -> Claim {
-    let (holds, v) = if printed_holds {
-        (true, Verdict::Confirmed)
-    } else {
-        (corrected_holds, Verdict::Erratum)
-    };
-    Claim::judged(id, sec, st, exp, comp, tol, holds, v).with_check(kind)
-}
+use super::evidence::{flight_error, pendulum_error, Ctx, Evidence, PENDULUM_EPS};
+use super::statements::{Statements, PRINTED};
+use super::{collision_claims, rule_claims, table1_claims};
+use crate::physics::stick::run::{RunSummary, StickOutcome};
+use crate::physics::stick::{Mode, StickModel, StickParams, OM, TH};
+use crate::report::{ChapterReport, Check, Claim};
+use serde_json::json;
 
 /// Every claim of the chapter under the statements `d`.
-pub fn all(d: &Doc, c: &Ctx) -> Vec<Claim> {
+pub fn all(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let mut v = equations(d, c);
-    v.extend(table1(d, c));
+    v.extend(table1_claims::all(d, c));
     v.extend(rule_claims::all(d, c));
     v
 }
@@ -74,35 +30,26 @@ pub fn add_all(
     p: &StickParams,
     rtol: f64,
 ) {
-    for claim in all(&Doc::PRINTED, &Ctx { ev, main, p, rtol }) {
+    for claim in all(&PRINTED, &Ctx { ev, main, p, rtol }) {
         r.claim(claim);
     }
 }
 
-fn frac(a: usize, b: usize) -> f64 {
-    if b == 0 {
-        0.0
-    } else {
-        a as f64 / b as f64
-    }
-}
-
 /// C.1 to C.15 and the sentences of section 4.
-fn equations(d: &Doc, c: &Ctx) -> Vec<Claim> {
+fn equations(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let ev = c.ev;
     let pa = &ev.params[0];
     let mut v = Vec::new();
     // C.3, C.5: DP5 at rtol 1e-12 over 20 ms: its error is ~1e-13 m; 1e-9 m leaves room
     // for 1e4 times that and is 1e-4 of the smallest change a 10 % coefficient error makes
     let fe = flight_error(pa, d.flight_rate, d.flight_gravity);
-    v.push(Claim::close("c3-c5-flight-closed-form", "C.3, C.5", "In flight P is ballistic (C.5) and θ relaxes as θ' = -(k/γ)(θ - θ₀) (C.3): the workbook's closed form equals a Dormand-Prince integration (rtol 1e-12) of the document's equations, every 0.5 ms over 20 ms (m or rad).", 0.0, fe, 1e-9).with_check(Check::SecondMethod));
+    v.push(Claim::draft(Check::SecondMethod, "c3-c5-flight-closed-form", "C.3, C.5", "In flight P is ballistic (C.5) and θ relaxes as θ' = -(k/γ)(θ - θ₀) (C.3): the workbook's closed form equals a Dormand-Prince integration (rtol 1e-12) of the document's equations, every 0.5 ms over 20 ms (m or rad).").close(0.0, fe, 1e-9));
     // C.3's third row in contact: the spring-damper torque balances a contact moment
-    let rate = pa.stiffness_nm_per_rad / pa.damping_nms_per_rad;
     let (mut flight_res, mut contact_res) = (0.0f64, 0.0f64);
     for (run, q) in c.runs() {
         let k = q.stiffness_nm_per_rad / q.damping_nms_per_rad;
         for x in &run.trace {
-            let r = (x.y[OM] + k * (x.y[TH] - q.theta0_rad)).abs();
+            let r = (x.y[OM] + d.flight_rate * k * (x.y[TH] - q.theta0_rad)).abs(); // C.3 as stated
             if x.mode == Mode::Flight {
                 flight_res = flight_res.max(r);
             } else {
@@ -113,16 +60,15 @@ fn equations(d: &Doc, c: &Ctx) -> Vec<Claim> {
     // in flight the closed form gives theta' exactly (rounding of k/gamma d: 1e-12 rad/s)
     let flight_ok = flight_res <= 1e-9;
     let general_holds = flight_ok && contact_res <= 1e-9;
-    v.push(rule("c3-relaxation-flight-only", "C.3", "As printed, C.3 lists θ' = -(k/γ)(θ - θ₀) among the general kinematics of C (beside C.1, C.2, C.4). It is the flight's moment balance (C.8 with F = 0) and holds only in flight; in contact the plate's moment changes θ'. Largest |θ' + (k/γ)(θ - θ₀)| (rad/s) at contact samples (flight samples: below 1e-9).", json!(0.0), json!(contact_res), "1e-9 rad/s", if d.c3_general { general_holds } else { flight_ok }, flight_ok && contact_res > 1e-9, Check::Simulation));
-    let _ = rate;
+    v.push(Claim::draft(Check::Simulation, "c3-relaxation-flight-only", "C.3", "As printed, C.3 lists θ' = -(k/γ)(θ - θ₀) among the general kinematics of C (beside C.1, C.2, C.4). It is the flight's moment balance (C.8 with F = 0) and holds only in flight; in contact the plate's moment changes θ'. Largest |θ' + (k/γ)(θ - θ₀)| (rad/s) at contact samples (flight samples: below 1e-9).").values(json!(0.0), json!(contact_res), "1e-9 rad/s").printed_or_corrected(if d.c3_general { general_holds } else { flight_ok }, flight_ok && contact_res > 1e-9));
     v.extend(pivot_claims(d, c));
     v.extend(slide_claims(d, c));
-    v.extend(collision_claims(d, c));
+    v.extend(collision_section(d, c));
     v
 }
 
 /// C.6, C.7 and section 4.2's wording.
-fn pivot_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
+fn pivot_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let ev = c.ev;
     let pa = &ev.params[0];
     let mut v = Vec::new();
@@ -130,7 +76,7 @@ fn pivot_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
     let e2 = pendulum_error(pa, &ev.pendulum[1], 2.0 * PENDULUM_EPS, d.c6_spring);
     let ratio = e2 / e1.max(1e-300);
     // the neglected terms are O(eps^2): ratio 4 for doubled eps; 1e-7 rad is ~10 eps^2
-    v.push(Claim::judged("c6-pivot-small-motion", "C.6", "Pivot: m L² θ'' = (g + z_s'') m L sin(θ) - k(θ - θ₀) - γ θ'. On a still plate, small motions about the static angle follow the damped linearised pendulum with W0² = (k - m g L cos(θ_f))/(m L²) taken from C.6; the difference is second order in the amplitude (ratio for amplitudes 2A vs A near 4, A = 1e-4 rad).", 4.0, ratio, "|ratio - 4| <= 0.5 and error(A) <= 1e-7 rad", (ratio - 4.0).abs() <= 0.5 && e1 <= 1e-7, Verdict::Confirmed).with_check(Check::ClosedForm));
+    v.push(Claim::draft(Check::ClosedForm, "c6-pivot-small-motion", "C.6", "Pivot: m L² θ'' = (g + z_s'') m L sin(θ) - k(θ - θ₀) - γ θ'. On a still plate, small motions about the static angle follow the damped linearised pendulum with W0² = (k - m g L cos(θ_f))/(m L²) taken from C.6; the difference is second order in the amplitude (ratio for amplitudes 2A vs A near 4, A = 1e-4 rad).").values(4.0, ratio, "|ratio - 4| <= 0.5 and error(A) <= 1e-7 rad").confirmed_if((ratio - 4.0).abs() <= 0.5 && e1 <= 1e-7));
     // C.6 into C.7, F = m (a_P + g e_z), then the moment balance C.8 about P
     let mut worst = 0.0f64;
     let mut scale = 0.0f64;
@@ -161,17 +107,40 @@ fn pivot_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
     }
     // a few roundings of N m terms of size m g L: 1e-12 of the scale; 1e-9 leaves 1e3
     let tol = 1e-9 * scale;
-    v.push(Claim::judged("c6-c7-c8-balance", "C.6, C.7, C.8", "C.6 (with the plate term +z_s'') put into C.7 gives the force F = m(a_P + g e_z) that satisfies the moment balance about P, C.8, at every pivot sample of both scenes on the vibrating plate. Largest |C.8 residual| (N m).", 0.0, worst, tol, worst <= tol && scale > 0.0, Verdict::Confirmed).with_check(Check::ClosedForm));
+    v.push(Claim::draft(Check::ClosedForm, "c6-c7-c8-balance", "C.6, C.7, C.8", "C.6 (with the plate term +z_s'') put into C.7 gives the force F = m(a_P + g e_z) that satisfies the moment balance about P, C.8, at every pivot sample of both scenes on the vibrating plate. Largest |C.8 residual| (N m).").values(0.0, worst, tol).confirmed_if(worst <= tol && scale > 0.0));
     let holds_conserved = h_rate <= 1e-9;
-    v.push(rule("c6-balance-not-conservation", "4.2", "As printed: C.6 follows \"from the conservation of angular momentum (m L² θ'' = H/C)\" about C. Correct: it is the angular-momentum *balance* about C, a point accelerating with the plate: the torque of gravity plus the pseudo-force -m z_s'' (hence g + z_s''), spring and damper change H = m L² θ'. Largest |dH/dt| / (m g L) at pivot samples, dH/dt = m L² θ'' from C.6's right side (a closed form of the torques, evaluated at the simulated states).", json!(0.0), json!(h_rate), "1e-9 (conserved)", if d.c6_conservation { holds_conserved } else { !holds_conserved }, !holds_conserved, Check::ClosedForm));
+    v.push(Claim::draft(Check::ClosedForm, "c6-balance-not-conservation", "4.2", "As printed: C.6 follows \"from the conservation of angular momentum (m L² θ'' = H/C)\" about C. Correct: it is the angular-momentum *balance* about C, a point accelerating with the plate: the torque of gravity plus the pseudo-force -m z_s'' (hence g + z_s''), spring and damper change H = m L² θ'. Largest |dH/dt| / (m g L) at pivot samples, dH/dt = m L² θ'' from C.6's right side (a closed form of the torques, evaluated at the simulated states).").values(json!(0.0), json!(h_rate), "1e-9 (conserved)").printed_or_corrected(if d.c6_conservation { holds_conserved } else { !holds_conserved }, !holds_conserved));
     v
 }
 
-/// C.8 to C.14 and section 4.3's sentences.
-fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
-    let mut v = Vec::new();
+/// Residuals of the slide equations at the slide samples of both evidence runs.
+struct SlideResiduals {
+    /// Largest C.8 residual (N m).
+    c8: f64,
+    /// Largest C.4 residual, relative to g + |z_s''|.
+    c4: f64,
+    /// The same at the slide-left samples only.
+    c4_left: f64,
+    /// Largest m g L of the scenes (N m).
+    scale: f64,
+    /// Slide samples, and slide-left samples.
+    n: usize,
+    /// See `n`.
+    nl: usize,
+    /// Sums of x_p'^2 and z_p'^2 at the slide-left samples.
+    vx2: f64,
+    /// See `vx2`.
+    vz2: f64,
+    /// Largest relative difference of the C.10/C.13 first rows from Newton's law.
+    rows_x: f64,
+    /// Largest relative difference of C.14's x_c'' row from C.1 differentiated twice.
+    row_xc: f64,
+}
+
+/// C.8 to C.14 evaluated as stated in `d` at the slide samples.
+fn slide_residuals(d: &Statements, c: &Ctx) -> SlideResiduals {
     let (mut c8, mut c4, mut scale, mut n) = (0.0f64, 0.0f64, 0.0f64, 0usize);
-    let (mut vx_rms, mut vz_rms, mut nl) = (0.0, 0.0, 0usize);
+    let (mut vx_rms, mut vz_rms, mut nl) = (0.0f64, 0.0f64, 0usize);
     let mut c4_left = 0.0f64;
     // C.10/C.13 first rows against Newton's law for P (m x_p'' = F_x, F_x = sigma mu F_z
     // from Table 1), and C.14's x_c'' row against C.1 differentiated twice (x_c'' = x_p''
@@ -226,9 +195,38 @@ fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
             }
         }
     }
+    SlideResiduals {
+        c8,
+        c4,
+        c4_left,
+        scale,
+        n,
+        nl,
+        vx2: vx_rms,
+        vz2: vz_rms,
+        rows_x,
+        row_xc,
+    }
+}
+
+/// C.8 to C.14 and section 4.3's sentences.
+fn slide_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
+    let SlideResiduals {
+        c8,
+        c4,
+        c4_left,
+        scale,
+        n,
+        nl,
+        vx2: vx_rms,
+        vz2: vz_rms,
+        rows_x,
+        row_xc,
+    } = slide_residuals(d, c);
+    let mut v = Vec::new();
     let tol8 = 1e-9 * scale;
     // C.4 residual relative to g + |z_s''|: roundings of terms near 1/sin: 1e-9
-    v.push(Claim::judged("c9-c14-slide-equations", "C.8 to C.14", "The slides: F_z from C.9 (left, L(-μ cos + sin)) and C.11 (right, L(μ cos + sin)) with F_x = +-μ F_z satisfy the moment balance C.8; with C.10/C.13 for P and C.14 for θ'' the foot keeps to the plate (C.4 gives z_c'' = z_s''). Largest C.8 residual (N m) at the slide samples of both scenes; the C.4 residual (relative) must stay below 1e-9 too.", 0.0, c8, tol8, n > 0 && c8 <= tol8 && c4 <= 1e-9, Verdict::Confirmed).with_check(Check::ClosedForm));
+    v.push(Claim::draft(Check::ClosedForm, "c9-c14-slide-equations", "C.8 to C.14", "The slides: F_z from C.9 (left, L(-μ cos + sin)) and C.11 (right, L(μ cos + sin)) with F_x = +-μ F_z satisfy the moment balance C.8; with C.10/C.13 for P and C.14 for θ'' the foot keeps to the plate (C.4 gives z_c'' = z_s''). Largest C.8 residual (N m) at the slide samples of both scenes; the C.4 residual (relative) must stay below 1e-9 too.").values(0.0, c8, tol8).confirmed_if(n > 0 && c8 <= tol8 && c4 <= 1e-9));
     let ratio = if nl > 0 {
         (vx_rms / vz_rms.max(1e-300)).sqrt()
     } else {
@@ -236,12 +234,12 @@ fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
     };
     let vertical = ratio <= 1e-3;
     // roundings of a few terms of the scale: 1e-12
-    v.push(Claim::judged("c10-c13-c14-x-rows", "C.10, C.13, C.14", "The horizontal rows: C.10 x_p'' = μ F_z/m (sliding left), C.13 x_p'' = -μ F_z/m (sliding right) against Newton's law for P with Table 1's friction (m x_p'' = F_x = +-μ F_z), and C.14's third row x_c'' = -μ F_z/m - L(-θ'² sin θ + θ'' cos θ) against C.1 differentiated twice (x_c'' = x_p'' - L(θ'' cos θ - θ'² sin θ)), at the slide samples of both scenes. Largest difference relative to μ F_z/m + L θ'² + L |θ''|.", 0.0, rows_x.max(row_xc), 1e-12, n > 0 && rows_x <= 1e-12 && row_xc <= 1e-12, Verdict::Confirmed).with_check(Check::ClosedForm));
+    v.push(Claim::draft(Check::ClosedForm, "c10-c13-c14-x-rows", "C.10, C.13, C.14", "The horizontal rows: C.10 x_p'' = μ F_z/m (sliding left), C.13 x_p'' = -μ F_z/m (sliding right) against Newton's law for P with Table 1's friction (m x_p'' = F_x = +-μ F_z), and C.14's third row x_c'' = -μ F_z/m - L(-θ'² sin θ + θ'' cos θ) against C.1 differentiated twice (x_c'' = x_p'' - L(θ'' cos θ - θ'² sin θ)), at the slide samples of both scenes. Largest difference relative to μ F_z/m + L θ'² + L |θ''|.").values(0.0, rows_x.max(row_xc), 1e-12).confirmed_if(n > 0 && rows_x <= 1e-12 && row_xc <= 1e-12));
     // C.12: the sliding-left angle equation is not printed. Derived (the C.14 row with
     // C.9's F_z: theta'' = ((z_s'' - z_p'')/L - theta'^2 cos)/sin), it keeps the foot on
     // the plate (C.4: z_c'' = z_s'') at every slide-left sample: the C.4 residual.
     let derived_ok = nl > 0 && c4_left <= 1e-9;
-    v.push(rule("c12-blank", "C.12", "As printed: \"from Eqns. C.10, C.4, thus\" is followed by nothing; C.12, the sliding-left angle equation, is blank, so the sliding-left mode cannot be integrated from the document. Correct: θ'' = (1/sin θ)((z_s'' - z_p'')/L - θ'² cos θ) with z_p'' = F_z/m - g and F_z from C.9 (C.14's angle row, for the left slide); with it the foot stays on the plate: the largest C.4 residual |z_c'' - z_s''|/(g + |z_s''|) at the slide-left samples of both scenes (below 1e-9).", json!("an equation"), json!(c4_left), "1e-9", d.c12_printed && derived_ok, derived_ok, Check::ClosedForm));
+    v.push(Claim::draft(Check::ClosedForm, "c12-blank", "C.12", "As printed: \"from Eqns. C.10, C.4, thus\" is followed by nothing; C.12, the sliding-left angle equation, is blank, so the sliding-left mode cannot be integrated from the document. Correct: θ'' = (1/sin θ)((z_s'' - z_p'')/L - θ'² cos θ) with z_p'' = F_z/m - g and F_z from C.9 (C.14's angle row, for the left slide); with it the foot stays on the plate: the largest C.4 residual |z_c'' - z_s''|/(g + |z_s''|) at the slide-left samples of both scenes (below 1e-9).").values(json!("an equation"), json!(c4_left), "1e-9").printed_or_corrected(d.c12_printed && derived_ok, derived_ok));
     // Degrees of freedom: coordinates (x_c, z_c, theta) minus the mode's constraints
     // (pivot: z_c = z_s and x_c' = 0; a slide: z_c = z_s only).
     let dof = |constraints: usize| 3 - constraints; // formula: DOF = 3 - constraints
@@ -251,20 +249,22 @@ fn slide_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
     } else {
         slide_dof
     };
-    v.push(rule("s43-two-dof-mode", "4.3", &format!("As printed (Sliding Left): \"Thus in the pivot mode the system has two degrees of freedom, i.e., it can slide as well as change its angle\". Correct: the sliding mode has two (x_c and θ: 3 coordinates less the one constraint z_c = z_s); the pivot has one ({pivot_dof}: x_c' = 0 too), as section 4.2 itself says: the sentence names the wrong mode. Degrees of freedom of the mode the sentence names."), json!(2), json!(stated), "exact", stated == 2, slide_dof == 2 && pivot_dof == 1, Check::ClosedForm));
-    v.push(rule("s43-p-moves-vertically", "4.3", "As printed (Sliding Left): \"C is constrained to be on the platform but moves to the left while the point P moves down vertically\". Correct: P is accelerated sideways by the friction force, x_p'' = μ F_z/m (C.10): P does not move vertically. RMS of x_p' over RMS of z_p' at the slide-left samples (vertical: below 1e-3).", json!(0.0), json!(ratio), "1e-3", if d.s43_p_vertical { vertical } else { !vertical }, nl > 0 && !vertical, Check::Simulation));
+    v.push(Claim::draft(Check::ClosedForm, "s43-two-dof-mode", "4.3", &format!("As printed (Sliding Left): \"Thus in the pivot mode the system has two degrees of freedom, i.e., it can slide as well as change its angle\". Correct: the sliding mode has two (x_c and θ: 3 coordinates less the one constraint z_c = z_s); the pivot has one ({pivot_dof}: x_c' = 0 too), as section 4.2 itself says: the sentence names the wrong mode. Degrees of freedom of the mode the sentence names.")).values(json!(2), json!(stated), "exact").printed_or_corrected(stated as f64 == d.s43_dof, slide_dof as f64 == d.s43_dof && pivot_dof == 1));
+    v.push(Claim::draft(Check::Simulation, "s43-p-moves-vertically", "4.3", "As printed (Sliding Left): \"C is constrained to be on the platform but moves to the left while the point P moves down vertically\". Correct: P is accelerated sideways by the friction force, x_p'' = μ F_z/m (C.10): P does not move vertically. RMS of x_p' over RMS of z_p' at the slide-left samples (vertical: below 1e-3).").values(json!(0.0), json!(ratio), "1e-3").printed_or_corrected(if d.s43_p_vertical { vertical } else { !vertical }, nl > 0 && !vertical));
     v
 }
 
 /// C.14's singularity, C.15 and section 4.4.
-fn collision_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
+fn collision_section(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let ev = c.ev;
-    let (pa, pj) = (&ev.params[0], &ev.params[1]);
     let mut v = Vec::new();
     let both = [&ev.authors, &ev.jamming, c.main];
-    let sing = both.iter().filter(|s| matches!(&s.outcome, crate::physics::stick::run::StickOutcome::Invalid(w) if w.contains("C.14"))).count();
-    v.push(Claim::judged("c14-singular-at-vertical", "C.14", "C.14 divides by sin(θ): the slides are undefined with the rod vertical. The workbook stops such a run as invalid (reason given); none of the scenes' runs reaches it.", 0, sing as u64, "exact", sing == 0, Verdict::Confirmed));
-    v.extend(rule_claims::c15_claims(d, c));
+    let sing = both
+        .iter()
+        .filter(|s| matches!(&s.outcome, StickOutcome::Invalid(w) if w.contains("C.14")))
+        .count();
+    v.push(Claim::draft(Check::Consistency, "c14-singular-at-vertical", "C.14", "C.14 divides by sin(θ): the slides are undefined with the rod vertical. The workbook stops such a run as invalid (reason given); none of the scenes' runs reaches it.").values(0, sing as u64, "exact").confirmed_if(sing == 0));
+    v.extend(collision_claims::c15_claims(d, c));
     // The reset's effect, not a chosen angle: C.15's rate after the impact,
     // theta'+ = -(r x u)/L^2 with r = L (sin, cos) and u = v_P - z_s' k, computed with the
     // lever at the landing angle and at the document's theta_0 (+ its offset), at every
@@ -281,7 +281,7 @@ fn collision_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
             let [_, _, vxp, vzp] = m.tip(&y);
             let uz = vzp - m.plate(l.t_s).1;
             let rate = |th: f64| -(th.sin() * uz - th.cos() * vxp) / q.length_m; // formula: -(r x u)/L^2
-            let th_doc = q.theta0_rad + d.reset_offset_rad;
+            let th_doc = d.reset_factor * q.theta0_rad + d.reset_offset_rad; // formula: theta = theta_0 after the collision
             let (w_act, w_doc) = (rate(l.theta_rad), rate(th_doc));
             dev = dev.max((l.theta_rad - th_doc).abs());
             rate_err = rate_err.max((w_doc - w_act).abs() / w_act.abs().max(1e-300));
@@ -298,140 +298,6 @@ fn collision_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
         ev.authors_reset.mean_velocity_mps,
     );
     let speed_err = (vr - va).abs() / va.abs().max(1e-300);
-    v.push(Claim::judged("c15-theta-reset", "4.4", &format!("\"After collision θ = θ₀\", with r_P/C evaluated at θ₀. Holds in the limit of flights much longer than the relaxation time γ/k (1 ms here): the angle at landing differs from θ₀ by (θ_takeoff - θ₀) exp(-k t_flight/γ) (largest here {dev:.1e} rad). Judged by its effect: the largest relative change of C.15's rate after the impact when the lever is taken at θ₀ instead of the landing angle, over the landings of both evidence runs (tolerance 1e-2), and the relative change of the authors' scene's mean speed with the reset ({speed_err:.1e}, tolerance 1e-3, the accuracy at which speeds are quoted). The workbook uses the actual angle (--collision-angle actual) and offers the reset."), 0.0, rate_err, 1e-2, rate_err <= 1e-2 && speed_err <= 1e-3 && ev.authors.hops > 0, Verdict::Approximation).with_check(Check::Simulation));
-    let _ = (pa, pj);
-    let _ = CollisionAngle::Actual;
-    let _ = VXC;
-    v
-}
-
-/// Table 1's rows and the energy budget.
-fn table1(d: &Doc, c: &Ctx) -> Vec<Claim> {
-    let ev = c.ev;
-    let mut v = Vec::new();
-    // Table 1's rules are judged on runs that ended valid: a main run stopped because
-    // no contact mode is consistent (--damping 0 --length-m 1.39 reaches a state where
-    // neither pivot nor slide satisfies Table 1; the outcome says so) has its last step
-    // outside Table 1 by construction, which says nothing about the document.
-    use crate::physics::stick::run::StickOutcome;
-    let main_valid = !matches!(
-        c.main.outcome,
-        StickOutcome::Invalid(_) | StickOutcome::Aborted(_)
-    );
-    let mut both = vec![&ev.authors, &ev.jamming];
-    if main_valid {
-        both.push(c.main);
-    }
-    let vmax = |f: &dyn Fn(&RunSummary) -> f64| both.iter().map(|s| f(s)).fold(0.0, f64::max);
-    let pen = vmax(&|s| s.violations.penetration_m);
-    v.push(Claim::judged("t1-flight", "Table 1", "Flight: h_c > 0, F = 0. Largest penetration of C below the plate at accepted flight steps (m): the event location keeps it at rounding level.", 0.0, pen, 1e-12, pen <= 1e-12, Verdict::Confirmed));
-    // Each run is judged against its own bound (units of m g), from the two errors a
-    // force computed at an accepted step carries. (1) The plate phase omega t is
-    // rounded to eps omega t, which moves the plate acceleration Gamma g cos(omega t)
-    // by up to eps omega t Gamma g; the force moves by up to 9 times that (measured at
-    // 423 Hz, Gamma 29: 7.3e-11 m g), 20 allowed. (2) The state the guard was located on
-    // (rod direction carried, integrated to rtol per step) differs from the canonical
-    // state the check reads by the integration error: rtol relative on forces whose
-    // terms reach (1 + Gamma) m g and the spring's moment over L, k/L (up to 750 m g in
-    // the flags' box). Measured at most 1e-4 of that for rtol 1e-6 .. 1e-2 (the step is
-    // capped by the drive period) and 0.05 at rtol 1e-10. Below rtol 1e-12 double
-    // precision cannot deliver the tolerance: the many tiny steps add roundings (one
-    // scene: 1.6e-10 m g at rtol 1e-14 against 6.6e-13 at 1e-12), so rtol is floored at
-    // 1e-12. A run at a loose rtol gets a loose bound, never a failure.
-    let eps = f64::EPSILON;
-    let pivot_bound = |s: &RunSummary, q: &StickParams, rtol: f64| {
-        let g = q.gamma_accel();
-        let phase = 20.0 * eps * q.plate.omega_rad_s * s.end_time_s.abs() * g; // formula: 20 eps omega t Gamma
-        let spring = q.stiffness_nm_per_rad / (q.mass_kg * q.g_mps2 * q.length_m); // k/(m g L)
-        phase + (1.0 + g + spring) * rtol.max(1e-12) // formula: + (1 + Gamma + k/(m g L)) max(rtol, 1e-12)
-    };
-    let mut judged = vec![
-        (&ev.authors, &ev.params[0], EVIDENCE_RTOL),
-        (&ev.jamming, &ev.params[1], EVIDENCE_RTOL),
-    ];
-    if main_valid {
-        judged.push((c.main, c.p, c.rtol));
-    }
-    let (mut worst_ratio, mut worst_mg, mut slip) = (0.0f64, 0.0f64, 0.0f64);
-    for (s, q, rtol) in &judged {
-        let mg = q.mass_kg * q.g_mps2;
-        let viol = (s.violations.pivot_normal_n.max(s.violations.cone_n)) / mg; // pivot steps only: a slide's F_z = Q/(L (sin - σ μ cos)) is ill-conditioned near the jam edge
-        worst_ratio = worst_ratio.max(viol / pivot_bound(s, q, *rtol));
-        worst_mg = worst_mg.max(viol);
-        slip = slip.max(s.violations.pivot_slip_mps);
-    }
-    v.push(Claim::judged("t1-pivot", "Table 1", &format!("Pivot: h_c = 0, v_x = 0, F_z >= 0, |F_x| <= μ F_z (the simulator's guards enforce it). Largest violation at accepted pivot steps over each run's bound, the force error of the step in units of m g: 20 ε ω t Γ (the rounded plate phase) + (1 + Γ + k/(m g L)) max(rtol, 1e-12) (the integration error on forces whose terms reach (1 + Γ) m g and k/L), rtol {:e} here, 1e-10 for the evidence runs. Largest violation: {:.1e} m g.", c.rtol, worst_mg), 0.0, worst_ratio, 1.0, worst_ratio <= 1.0 && slip == 0.0, Verdict::Confirmed));
-    // Table 1's v_x signs against the friction power: F_x = sigma mu F_z dissipates
-    // (-F_x v_x >= 0) only if v_x has the sign -sigma. A closed form over normal forces
-    // and slip speeds of the printed sign, not the simulated slides (whose slip
-    // direction the simulator's own guard keeps).
-    for (i, id, name, sign) in [
-        (0usize, "t1-slide-left", "Sliding Left", d.t1_left_v),
-        (1, "t1-slide-right-sign", "Sliding Right", d.t1_right_v),
-    ] {
-        let mode = if i == 0 {
-            Mode::SlideLeft
-        } else {
-            Mode::SlideRight
-        };
-        let (mut n, mut ok_doc, mut ok_fix) = (0usize, 0usize, 0usize);
-        for mu in [0.1, 0.4, 2.0] {
-            for fz in [0.5, 1.0, 20.0] {
-                for speed in [1e-3, 0.1, 1.0] {
-                    let fx = mode.sigma() * mu * fz; // Table 1: F_x = sigma mu F_z
-                    n += 1;
-                    ok_doc += usize::from(-fx * (sign * speed) >= 0.0); // formula: friction power -F_x v_x >= 0
-                    ok_fix += usize::from(-fx * (-mode.sigma() * speed) >= 0.0);
-                }
-            }
-        }
-        let printed = if sign < 0.0 { "v_x < 0" } else { "v_x > 0" };
-        v.push(rule(id, "Table 1", &format!("{name}: h_c = 0, {printed} as printed, F_z >= 0, F_x = {} μ F_z. With that F_x the friction power -F_x v_x is a loss only if v_x {} (the authors' Event_Slide{}.m agrees: its STUCK event is {}, positive while C slides). Closed form over μ = 0.1 to 2, F_z = 0.5 to 20 N and slip speeds 1e-3 to 1 m/s of the printed sign: the fraction at which friction dissipates must be 1.", if i == 0 { "+" } else { "-" }, if i == 0 { "< 0" } else { "> 0" }, if i == 0 { "Neg" } else { "Pos" }, if i == 0 { "-x_c'" } else { "x_c'" }), json!(1.0), json!(frac(ok_doc, n)), "exact", n > 0 && ok_doc == n, n > 0 && ok_fix == n, Check::ClosedForm));
-    }
-    // Energy closure: every accepted step commits a local error below rtol relative to
-    // the state's scale plus atol absolute (rtol = atol on the energy accumulators), so
-    // the residual relative to the largest term S is bounded by (rtol + atol/S) x
-    // (accepted steps) when the errors add up without cancelling; each step also rounds
-    // the accumulators and the mechanical energy (100 ulps per step added to rtol:
-    // measured 2.8 times the bare bound at rtol 1e-14). The evidence runs use rtol
-    // 1e-10; this run its own rtol, judged only where the bound means something: the
-    // step's error estimate bounds its error for rtol <= 1e-6 (a run at 1e-4 left 4.6
-    // times the bound), a bound above 1e-2 says nothing, and a run that fell ends where
-    // theta' grows without bound (one at rtol 1e-8 left 2.8 times the bound).
-    let bound_of = |s: &RunSummary, rtol: f64| {
-        let r = rtol + 100.0 * f64::EPSILON;
-        (r + r / s.budget.scale_j()) * s.stats.accepted.max(1) as f64 // formula: (rtol + atol/S) n
-    };
-    let main_budget = c.main.budget.relative_residual().is_finite()
-        && c.p.collision_angle == CollisionAngle::Actual;
-    let completed = c.main.outcome == crate::physics::stick::run::StickOutcome::Completed;
-    let main_bound = bound_of(c.main, c.rtol);
-    let main_judged = main_budget && completed && main_bound <= 1e-2 && c.rtol <= 1e-6;
-    let runs = [(&ev.authors, EVIDENCE_RTOL), (&ev.jamming, EVIDENCE_RTOL)]
-        .into_iter()
-        .chain(main_judged.then_some((c.main, c.rtol)));
-    // The sum of local error bounds ignores how an error, once made, propagates through
-    // the state into later terms: on the evidence runs it holds as it stands, but on
-    // random scenes (accuracy_sweep, 780 runs) this run's residual reached 1.3 times it
-    // (rtol 1e-14) and 1.14 times (rtol 1e-8): this run gets a factor 10 for that growth.
-    let (mut worst, mut ratio) = (0.0f64, 0.0f64);
-    for (s, rtol) in runs {
-        let growth = if std::ptr::eq(s, c.main) { 10.0 } else { 1.0 };
-        ratio = ratio.max(s.budget.relative_residual() / (growth * bound_of(s, rtol)));
-        worst = worst.max(s.budget.relative_residual());
-    }
-    let this_run = if main_judged {
-        format!("and this run (rtol {:e}, actual collision angle)", c.rtol)
-    } else if !main_budget {
-        "; this run is not judged (collision reset or no finite budget)".to_string()
-    } else if !completed {
-        format!(
-            "; this run is not judged: it ended {} (judged on completed runs)",
-            c.main.outcome.label()
-        )
-    } else {
-        format!("; this run is not judged: at rtol {:e} (bound {:.1e} of the largest term) the budget cannot be checked at this accuracy: the step's error estimate bounds its error only for rtol <= 1e-6, and a bound above 1e-2 says nothing", c.rtol, main_bound)
-    };
-    v.push(Claim::judged("c6-c14-energy-budget", "C.6 to C.14", &format!("The simulated forces are consistent with the simulated motion: plate work = change of mechanical energy + friction + damper + impact losses over the evidence runs {this_run}. Each run's residual relative to its largest term S, over its bound (rtol + atol/S) x accepted steps (rtol = atol, 1e-10 for the evidence runs, plus 100 ulps of rounding per step), the sum of the local error bounds (times 10 for this run: errors propagate through the state, measured up to 1.3 times the sum on random scenes); largest relative residual {worst:.1e}."), 0.0, ratio, 1.0, ratio <= 1.0 && ev.authors.budget.friction_j > 0.0, Verdict::Confirmed));
+    v.push(Claim::draft(Check::Simulation, "c15-theta-reset", "4.4", &format!("\"After collision θ = θ₀\", with r_P/C evaluated at θ₀. Holds in the limit of flights much longer than the relaxation time γ/k (1 ms here): the angle at landing differs from θ₀ by (θ_takeoff - θ₀) exp(-k t_flight/γ) (largest here {dev:.1e} rad). Judged by its effect: the largest relative change of C.15's rate after the impact when the lever is taken at θ₀ instead of the landing angle, over the landings of both evidence runs (tolerance 1e-2), and the relative change of the authors' scene's mean speed with the reset ({speed_err:.1e}, tolerance 1e-3, the accuracy at which speeds are quoted). The workbook uses the actual angle (--collision-angle actual) and offers the reset.")).values(0.0, rate_err, 1e-2).approximation_if(rate_err <= 1e-2 && speed_err <= 1e-3 && ev.authors.hops > 0));
     v
 }

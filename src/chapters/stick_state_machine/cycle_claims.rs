@@ -7,7 +7,7 @@ use super::limit_cycle::{
     eigen_condition, leading, max_difference, spectral_radius, Analysis, DECAY_PERIODS,
     DISPLACEMENT, H_FINE, LADDER, NEWTON_TOL, RTOL,
 };
-use crate::report::{Check, Claim, Verdict};
+use crate::report::{Check, Claim};
 use serde_json::json;
 
 /// The section of the course the claims belong to (not a section of the document).
@@ -67,17 +67,9 @@ fn fixed_point(sc: &Scenes) -> Claim {
         "The stroboscopic map P at plate phase 0 (state after each drive period, x_c left out) has a period-1 fixed point s* = P(s*) in both scenes, found by Newton on P(s) - s = 0 with the central-difference Jacobian; from the static start the runs settle into [{}] after 400 periods. Largest |P(s*) - s*| (units: 1 rad, ω, the plate's peak velocity).",
         labels.join(", ")
     );
-    Claim::judged(
-        "limit-cycle-fixed-point",
-        SECTION,
-        &st,
-        0.0,
-        worst,
-        NEWTON_TOL,
-        worst <= NEWTON_TOL,
-        Verdict::Confirmed,
-    )
-    .with_check(Check::Consistency)
+    Claim::draft(Check::Consistency, "limit-cycle-fixed-point", SECTION, &st)
+        .values(0.0, worst, NEWTON_TOL)
+        .confirmed_if(worst <= NEWTON_TOL)
 }
 
 /// Observed order of the leading finite-difference multiplier on the ladder h, h/2,
@@ -123,17 +115,18 @@ fn order(st: &Statements, sc: &Scenes) -> Claim {
         "The leading Floquet multiplier (eigenvalue of the Jacobian of P of largest modulus) from {what} differences of the map converges at order {} in the step: observed order log2(|l(h) - l(h/2)| / |l(h/2) - l(h/4)|) at h = {} of each coordinate's scale, [authors, self-locking]. Tolerance per scene: 0.1 for terms of the next order (up to 7 % of the leading one at h) plus the runs' noise (measured run error times the eigenvector condition number over each step) carried into the log of the ratio. Above h = 5e-4 the authors' map is not smooth at the step's scale (a perturbed cycle switches differently) and the quotients stop converging.",
         st.order, LADDER[0]
     );
-    Claim::judged(
+    Claim::draft(
+        Check::Convergence,
         "floquet-difference-order",
         SECTION,
         &text,
+    )
+    .values(
         json!([st.order, st.order]),
         json!(orders.iter().map(|p| round(*p)).collect::<Vec<_>>()),
         json!(tols.iter().map(|t| super::round(*t, 2)).collect::<Vec<_>>()),
-        holds,
-        Verdict::Confirmed,
     )
-    .with_check(Check::Convergence)
+    .confirmed_if(holds)
 }
 
 /// The error bound of the finite-difference multipliers at [`H_FINE`]: the truncation
@@ -182,20 +175,16 @@ fn saltation(st: &Statements, sc: &Scenes) -> Claim {
     let text = format!(
         "The Floquet multipliers of both fixed points from central differences of P (step {H_FINE:e} of the scales) equal those of {how}; largest |λ| by the second method [authors, self-locking] = {radii:?}. Largest distance between matched multipliers; tolerance per scene: the truncation C h^2 (C from the step ladder) plus the global error of each run (rtol {RTOL:e}, measured against rtol / 100) over the width 2h, times the eigenvector condition number (Bauer-Fike)."
     );
-    Claim::judged(
-        "floquet-saltation",
-        SECTION,
-        &text,
-        json!([0, 0]),
-        json!(diffs
-            .iter()
-            .map(|d| super::round(*d, 3))
-            .collect::<Vec<_>>()),
-        json!(tols.iter().map(|d| super::round(*d, 3)).collect::<Vec<_>>()),
-        holds,
-        Verdict::Confirmed,
-    )
-    .with_check(Check::SecondMethod)
+    Claim::draft(Check::SecondMethod, "floquet-saltation", SECTION, &text)
+        .values(
+            json!([0, 0]),
+            json!(diffs
+                .iter()
+                .map(|d| super::round(*d, 3))
+                .collect::<Vec<_>>()),
+            json!(tols.iter().map(|d| super::round(*d, 3)).collect::<Vec<_>>()),
+        )
+        .confirmed_if(holds)
 }
 
 /// A displaced start approaches (stable) or leaves (unstable) at the rate |lambda|max.
@@ -224,15 +213,7 @@ fn stability(st: &Statements, sc: &Scenes) -> Claim {
         "Stable and unstable gaits: the self-locking gait is stable (all multipliers inside the unit circle) and the authors' gait is unstable (a complex pair outside it: its orbit circles the fixed point without settling). Stated: the rate per period |λ|max x {} of the saltation method; computed: a start displaced by {DISPLACEMENT:e} along the leading eigenvector, simulated for {DECAY_PERIODS} periods, its leading eigen-coordinate's growth |w_K / w_0|^(1/K) [authors, self-locking]. Tolerance: the map's nonlinear remainder (curvature from forward vs central differences) times the largest displacement, plus the runs' noise at the smallest one.",
         st.rate_factor
     );
-    Claim::judged(
-        "gait-stability",
-        SECTION,
-        &text,
-        json!(expected),
-        json!(computed),
-        json!(tols),
-        holds,
-        Verdict::Confirmed,
-    )
-    .with_check(Check::Simulation)
+    Claim::draft(Check::Simulation, "gait-stability", SECTION, &text)
+        .values(json!(expected), json!(computed), json!(tols))
+        .confirmed_if(holds)
 }

@@ -171,6 +171,13 @@ fn mutation(id: &'static str, what: &'static str, st: Statements) -> Mutation {
     })
 }
 
+/// Claims of the section whose printed number a 10 % change does not move past the
+/// derived tolerance, with the reason (their mutations change it by more).
+pub const COARSER_THAN_10_PERCENT: &[(&str, &str)] = &[(
+    "floquet-difference-order",
+    "the observed order's tolerance is derived from the runs' noise carried into log2 of a ratio of differences (0.66 for the authors' unstable gait, 0.22 for the self-locking one): order 2 -> 2.2 lies inside it; the stated order is moved to 3 instead, and the claim states its tolerance",
+)];
+
 /// The falsification mutations of the section's claims.
 pub fn mutations() -> Vec<Mutation> {
     vec![
@@ -200,7 +207,7 @@ pub fn mutations() -> Vec<Mutation> {
         ),
         mutation(
             "gait-stability",
-            "stated rate |λ|max -> 1.1 |λ|max",
+            "stated rate |λ|max -> 1.1 |λ|max (10 %)",
             Statements {
                 rate_factor: 1.1,
                 ..WORKBOOK
@@ -208,7 +215,7 @@ pub fn mutations() -> Vec<Mutation> {
         ),
         mutation(
             "gait-stability",
-            "stated rate |λ|max -> 0.9 |λ|max",
+            "stated rate |λ|max -> 0.9 |λ|max (10 %)",
             Statements {
                 rate_factor: 0.9,
                 ..WORKBOOK

@@ -239,3 +239,64 @@ pub fn scenes_table(ev: &Evidence) -> String {
     ));
     s
 }
+
+/// What the checks look at: the evidence runs and this run (with its parameters).
+pub struct Ctx<'a> {
+    /// The evidence runs.
+    pub ev: &'a Evidence,
+    /// This run (physical rules).
+    pub main: &'a RunSummary,
+    /// This run's parameters.
+    pub p: &'a StickParams,
+    /// This run's relative (= absolute) tolerance (the evidence runs use 1e-10).
+    pub rtol: f64,
+}
+
+impl Ctx<'_> {
+    /// The traced evidence runs with their parameters.
+    pub fn runs(&self) -> [(&RunSummary, &StickParams); 2] {
+        [
+            (&self.ev.authors, &self.ev.params[0]),
+            (&self.ev.jamming, &self.ev.params[1]),
+        ]
+    }
+}
+
+/// Contact forces `(mu, F_x, F_z)` strictly inside the friction cone, drawn by a closed
+/// form rather than selected from the simulation: F_z = 1 N, F_x = s mu F_z for
+/// s = -0.95, -0.9, ..., 0.95, at mu = 0.1, 0.4, 1 and 2. A test of a pivot's exit must
+/// fire at none of them (the contact holds there); that a test fires at all of them is
+/// algebra, not simulation.
+pub fn cone_interior() -> Vec<(f64, f64, f64)> {
+    let mut v = Vec::new();
+    for mu in [0.1, 0.4, 1.0, 2.0] {
+        for k in -19..=19 {
+            let s = 0.05 * k as f64;
+            v.push((mu, s * mu, 1.0));
+        }
+    }
+    v
+}
+
+/// Contact forces `(mu, F_x, F_z)` strictly outside the friction cone, by the same
+/// closed form: F_z = 1 N, F_x = s mu F_z for |s| = 1.05, 1.1, ..., 1.5, at mu = 0.1,
+/// 0.4, 1 and 2. A correct exit test fires at those beyond its edge; a test whose
+/// coefficient of mu is off by 10 % misplaces the edge and misjudges |s| = 1.05.
+pub fn cone_exterior() -> Vec<(f64, f64, f64)> {
+    let mut v = Vec::new();
+    for mu in [0.1, 0.4, 1.0, 2.0] {
+        for k in 21..=30 {
+            for sign in [-1.0, 1.0] {
+                let s = sign * 0.05 * k as f64;
+                v.push((mu, s * mu, 1.0));
+            }
+        }
+    }
+    v
+}
+
+/// Whether the hinge test `keeps` holds at every force of the cone's interior and at
+/// none outside it (closed-form samples).
+pub fn keeps_cone(keeps: impl Fn(&(f64, f64, f64)) -> bool) -> bool {
+    cone_interior().iter().all(&keeps) && !cone_exterior().iter().any(&keeps)
+}

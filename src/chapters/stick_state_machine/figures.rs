@@ -88,13 +88,15 @@ fn time_series(dir: &Path, p: &StickParams, w: &[&Sample]) -> Result<Vec<String>
         .hline(p.mu.atan(), "arctan μ");
     let c4 = shade(Chart::new("Foot position", "t (s)", "x_c (mm)"), w)
         .line("x_c", pts(&|s| s.y[XC] * mm));
-    save_panels(&[c1, c2, c3, c4], 2, dir, "time-series")
+    save_panels(&[c1, c2, c3, c4], 1, dir, "time-series") // one column: 800 px wide, shown near full size in the book's ~750 px column
 }
 
-/// Eight frames of the gait a quarter period apart over two drive cycles (after ten
-/// cycles of start transient), each drawn to scale with the foot's close-up.
+/// Four frames of the gait a quarter period apart over one drive cycle (after ten
+/// cycles of start transient), each drawn to scale with the foot's close-up, in one
+/// column 720 px wide: the book's ~750 px column shows it at full size (labels 16 and
+/// 20 px), where two columns (1440 px) showed them at about half.
 fn snapshots(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
-    let fr = gait::frames(p, opts, 10.0, 2.0, 4);
+    let fr = gait::frames(p, opts, 10.0, 1.0, 4);
     let v = gait::view(&fr, p.length_m * 1e3, p.mass_kg * p.g_mps2);
     let pics: Vec<gait::Picture> = fr
         .iter()
@@ -106,10 +108,10 @@ fn snapshots(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>>
         .collect();
     let grid = Grid {
         cells: &pics,
-        cols: 2,
+        cols: 1,
     };
-    let rows = pics.len().div_ceil(2).max(1) as u32;
-    save_drawing(&grid, dir, "snapshots", (2 * 720, rows * 400))
+    let rows = pics.len().max(1) as u32;
+    save_drawing(&grid, dir, "snapshots", (720, rows * 400))
 }
 
 /// Drawings in a grid, `cols` per row.
@@ -133,7 +135,9 @@ impl<D: Drawing> Drawing for Grid<'_, D> {
 
 /// The animated gait of both scenes: `gait-self-locking.gif` and `gait-authors.gif`.
 fn gifs(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
-    let shape = if ctx.quick { (1.0, 6) } else { (3.0, 10) };
+    // 30 frames per drive cycle (issue 24: a smooth gait), two cycles, shown 60 ms
+    // each: one 33 ms drive cycle lasts 1.8 s on screen (time slowed 54 times)
+    let shape = if ctx.quick { (1.0, 6) } else { (2.0, 30) };
     let mut out = gait::write_gif(
         dir,
         "gait-self-locking",
@@ -193,7 +197,7 @@ fn energy(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
             }),
         )
         .log_y();
-    save_panels(&[c, r], 2, dir, "energy-budget")
+    save_panels(&[c, r], 1, dir, "energy-budget")
 }
 
 fn mean_speed(s: &RunSummary) -> f64 {
@@ -249,5 +253,5 @@ fn speed_sweeps(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Res
         cg = cg.series(Series::line(name, series(si, 0)).color(si));
         cf = cf.series(Series::line(name, series(si, 1)).color(si));
     }
-    save_panels(&[cg, cf], 2, dir, "speed-sweeps")
+    save_panels(&[cg, cf], 1, dir, "speed-sweeps")
 }

@@ -29,9 +29,9 @@ pub fn mode_colour(m: Mode) -> RGBColor {
 }
 
 /// Size of the GIF frames (pixels).
-const GIF_SIZE: (u32, u32) = (640, 350);
-/// Display time of a GIF frame (ms): 12 frames per 33 ms drive cycle play in 1.2 s.
-const GIF_DELAY_MS: u32 = 100;
+const GIF_SIZE: (u32, u32) = (700, 360);
+/// Display time of a GIF frame (ms): 30 frames per 33 ms drive cycle play in 1.8 s.
+const GIF_DELAY_MS: u32 = 60;
 
 /// Plate grey.
 const PLATE: RGBColor = RGBColor(170, 170, 170);

@@ -3,11 +3,18 @@
 //! Dormand-Prince pair (8(5,3) by default, 5(4) on request), the collision map, the transition rules decided by the contact
 //! conditions, and the energy budget. Every equation, every row of Table 1 and every
 //! rule of Algorithms 1 to 4 gets a claim (see `claims.rs`).
+//!
+//! Shape (ARCHITECTURE.md): `statements.rs` (the document's statements as data),
+//! `evidence.rs` (the runs, computed once), `claims.rs` with its parts `collision_claims.rs`,
+//! `rule_claims.rs`, `slide_rules.rs` and `table1_claims.rs` (pure functions of statements and evidence),
+//! `figures.rs`, `mutations.rs`; the limit-cycle section has its own `cycle_claims.rs`
+//! and `cycle_report.rs`. This file: the flags and the orchestration.
 
 mod claims;
+mod collision_claims;
 pub mod cycle_claims;
 mod cycle_report;
-mod doc;
+mod events;
 mod evidence;
 mod figures;
 mod gait;
@@ -22,12 +29,20 @@ mod printed_table;
 mod rule_claims;
 pub mod saltation;
 mod sensitivity;
+mod setup;
 mod slide_rules;
+mod statements;
+mod table1_claims;
+
+pub use cycle_report::COARSER_THAN_10_PERCENT;
+pub use events::{events_csv, EVENTS_CAP};
+pub use mutations::NO_PRINTED_NUMBER;
+pub use setup::{max_duration_s, setup, PHASE_ROUNDING_MAX, SECONDS_PER_CYCLE};
 
 use super::Context;
-use crate::error::{check, range, Result};
+use crate::error::Result;
 use crate::numerics::hybrid::Options;
-use crate::numerics::ode::{Method, StepControl};
+use crate::numerics::ode::Method;
 use crate::physics::stick::printed::{simulate_printed, Printed};
 use crate::physics::stick::run::{
     authors_code_state, initial_state, simulate_stick, Recording, RunSummary,
@@ -124,7 +139,8 @@ pub struct Args {
     /// Torsion-spring stiffness k (N m/rad, 0 to 100) [scene: 10].
     #[arg(long)]
     pub stiffness: Option<f64>,
-    /// Torsion damper gamma (N m s/rad, 0 to 0.1) [scene: 0.01].
+    /// Torsion damper gamma (N m s/rad, 0 to 0.1; above 0 when k > 0: the massless rod's
+    /// flight needs it) [scene: 0.01].
     #[arg(long)]
     pub damping: Option<f64>,
     /// Coulomb friction coefficient mu at the foot C (1, 0 to 2) [scene: 0.4].
@@ -182,136 +198,6 @@ pub fn scene_params(scene: Scene, g_flag: Option<f64>) -> StickParams {
     }
 }
 
-/// Largest `omega t Gamma` accepted: the plate phase `omega t` is rounded to `eps omega
-/// t`, which moves the plate acceleration, and the contact forces with it, by about
-/// `3 eps omega t Gamma m g` (the factor 3 measured: 2.3e-10 m g at omega t Gamma =
-/// 5.7e5); the cone check allows 1e-10 m g, so `omega t Gamma <= 1e-10 / (3 eps)`.
-pub const PHASE_ROUNDING_MAX: f64 = 1.5e5;
-
-/// Longest accepted duration (s) at frequency `f_hz` and `gamma`: `omega t Gamma <=`
-/// [`PHASE_ROUNDING_MAX`] and at most 1e4 s.
-pub fn max_duration_s(f_hz: f64, gamma: f64) -> f64 {
-    let omega = 2.0 * std::f64::consts::PI * f_hz;
-    if gamma > 0.0 {
-        (PHASE_ROUNDING_MAX / (omega * gamma)).min(1e4) // formula: omega t Gamma <= 1e-10/(3 eps)
-    } else {
-        1e4
-    }
-}
-
-/// `x` (> 0) rounded down to `digits` significant digits, as text: a bound printed in
-/// an error line that is never above the bound checked.
-fn floor_digits(x: f64, digits: i32) -> String {
-    let scale = 10f64.powi(digits - 1 - x.log10().floor() as i32);
-    crate::error::num((x * scale).floor() / scale)
-}
-
-/// Measured cost of one drive cycle of the main run (s), for the build that runs: the
-/// test (dev) build takes 3.3 s for 3e4 cycles of the jamming scene (2 cores), rounded
-/// up to 1.2e-4; the release build about 1e-5 (criterion: about 100k cycles/s on the
-/// jamming scene; 3 s for 2e5 cycles of a gently shaken plate at 1 kHz), rounded up to
-/// 1.5e-5, so that the budget's estimate is the time a reader will wait.
-pub const SECONDS_PER_CYCLE: f64 = if cfg!(debug_assertions) {
-    1.2e-4
-} else {
-    1.5e-5
-};
-
-/// Validated parameters, duration (s) and options from the flags.
-pub fn setup(args: &Args, ctx: &Context) -> Result<(StickParams, f64, Options)> {
-    let base = scene_params(args.scene, ctx.g_mps2);
-    let half_pi = std::f64::consts::FRAC_PI_2;
-    let box10 = "within a factor 10 of the authors' stick, the box over which the chapter's checks are run at the corners (tests/cli.rs)";
-    let l = range(
-        "--length-m",
-        args.length_m.unwrap_or(base.length_m),
-        0.015,
-        1.5,
-        "m",
-        box10,
-    )?;
-    let m = range(
-        "--mass-kg",
-        args.mass_kg.unwrap_or(base.mass_kg),
-        0.1,
-        10.0,
-        "kg",
-        box10,
-    )?;
-    let k = range(
-        "--stiffness",
-        args.stiffness.unwrap_or(base.stiffness_nm_per_rad),
-        0.0,
-        100.0,
-        "N m/rad",
-        "0 (a free hinge) to 10 x the authors' spring; a spring too weak to hold the stick lets it fall, which the run reports",
-    )?;
-    let c = range(
-        "--damping",
-        args.damping.unwrap_or(base.damping_nms_per_rad),
-        0.0,
-        0.1,
-        "N m s/rad",
-        "0 to 10 x the authors' damper",
-    )?;
-    let mu = range(
-        "--mu",
-        args.mu.unwrap_or(base.mu),
-        0.0,
-        2.0,
-        "1",
-        "dry friction at the foot",
-    )?;
-    let th0 = check(
-        "--theta0-rad",
-        args.theta0_rad.unwrap_or(base.theta0_rad),
-        |v| v.abs() < half_pi,
-        "-pi/2 < value < pi/2 (rad), i.e. strictly between -90 and 90 degrees",
-    )?;
-    let gam = range(
-        "--gamma",
-        args.gamma.unwrap_or(base.gamma_accel()),
-        0.0,
-        50.0,
-        "1",
-        "a still plate to 5 x the authors' Gamma = 10",
-    )?;
-    let f = range(
-        "--frequency-hz",
-        args.frequency_hz.unwrap_or(base.frequency_hz()),
-        1.0,
-        1000.0,
-        "Hz",
-        "1 Hz to 1 kHz; the duration is bounded by omega t Gamma, see --duration-s",
-    )?;
-    let default_duration = if ctx.quick { 2.0 } else { 10.0 };
-    let t_max = max_duration_s(f, gam);
-    let dur = check(
-        "--duration-s",
-        args.duration_s.unwrap_or(default_duration),
-        |v| v > 0.0 && v <= t_max,
-        &format!(
-            "0 < value <= {} (s): omega t Gamma <= {} and t <= 1e4 s; the plate phase omega t carries a rounding of eps omega t, a force error of ~3 eps omega t Gamma m g that the cone check's 1e-10 m g must cover",
-            floor_digits(t_max, 6),
-            crate::error::num(PHASE_ROUNDING_MAX)
-        ),
-    )?;
-    let rtol = check(
-        "--rtol",
-        args.rtol,
-        |v| (1e-14..=1e-2).contains(&v),
-        "1e-14 <= value <= 1e-2 (1)",
-    )?;
-    let mut p = StickParams::new(l, m, k, c, mu, th0, base.g_mps2, gam, f);
-    p.collision_angle = args.collision_angle;
-    let opts = Options {
-        method: args.method.method(),
-        control: StepControl::tol(rtol, rtol),
-        ..Options::default()
-    };
-    Ok((p, dur, opts))
-}
-
 /// One run of a scene from its static equilibrium (or theta_0 if the spring cannot hold
 /// the stick up), C at x = 0 on the plate at t = 0.
 pub fn run_scene(p: &StickParams, duration_s: f64, opts: &Options, rec: Recording) -> RunSummary {
@@ -344,65 +230,6 @@ fn start_state(model: &StickModel, start: Start) -> crate::physics::stick::State
         Start::Static => initial_state(model, 0.0, p.static_angle().unwrap_or(p.theta0_rad)),
         Start::AuthorsCode => authors_code_state(model),
     }
-}
-
-/// The output error of `--events` (exit code 3).
-fn events_error(args: &Args, why: &str) -> crate::error::WorkbookError {
-    crate::error::WorkbookError::Output {
-        flag: "--events".into(),
-        path: args
-            .events
-            .as_ref()
-            .map_or(String::new(), |p| p.display().to_string()),
-        why: why.to_string(),
-    }
-}
-
-/// Most switches `--events` keeps in memory and writes (about 64 bytes each: 64 MB).
-/// A longer run's file is cut there, and the cut is said in the results
-/// (`events_written`, `events_total`, `events_cut_at_s`) and on stderr.
-pub const EVENTS_CAP: usize = 1_000_000;
-
-/// Writes the `--events` CSV of `run` to `path` atomically and records in the report
-/// how many switches it holds of how many the run had.
-fn write_events(
-    r: &mut crate::report::ChapterReport,
-    path: &std::path::Path,
-    run: &RunSummary,
-) -> std::result::Result<(), String> {
-    crate::output::write_atomic(path, events_csv(run).as_bytes())?;
-    let (written, total) = (run.switches.len(), run.event_count);
-    r.result("events_written", written as f64);
-    r.result("events_total", total as f64);
-    if written < total {
-        let cut_s = run.switches.last().map_or(0.0, |w| w.t_s);
-        r.result("events_cut_at_s", cut_s);
-        eprintln!(
-            "note: --events {} holds the first {written} of {total} switches (cut at t = {cut_s:.6} s; at most {EVENTS_CAP} are kept)",
-            path.display()
-        );
-    }
-    Ok(())
-}
-
-/// The CSV of `--events`: one header line, then one line per switch.
-pub fn events_csv(s: &RunSummary) -> String {
-    let mut out = String::from("t_s,from,to,theta_rad,theta_dot_rad_s,x_c_m,f_x_n,f_z_n\n");
-    for w in &s.switches {
-        let to = w.to.map_or("stop", |m| m.name());
-        out.push_str(&format!(
-            "{:.12},{},{},{:.12},{:.12},{:.12},{:.9},{:.9}\n",
-            w.t_s,
-            w.from.name(),
-            to,
-            w.theta_rad,
-            w.omega_rad_s,
-            w.x_c_m,
-            w.fx_n,
-            w.fz_n
-        ));
-    }
-    out
 }
 
 /// One run of a scene under a printed rule set, from the same start as [`run_scene`]:
@@ -487,7 +314,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     // The events file is checked before the run (an unwritable path fails at once) but
     // written only after it, whole (a refused or interrupted run leaves it as it was).
     if let Some(path) = &args.events {
-        crate::output::probe_file(path).map_err(|e| events_error(args, &e.to_string()))?;
+        crate::output::probe_file(path).map_err(|e| events::events_error(args, &e.to_string()))?;
     }
     let est = main_run::check_work(&p, dur, ctx.allow_long_runs)?;
     let bar = crate::sweep::spinner("stick-state-machine: main run", est);
@@ -496,10 +323,18 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     if args.events.is_some() {
         rec.sequence_cap = EVENTS_CAP; // every switch, up to the cap (then the cut is said)
     }
-    let (physical, mut main, fired) = main_run::run_main(args, &p, dur, &opts, rec);
+    let (mut physical, mut main, mut fired) = main_run::run_main(args, &p, dur, &opts, rec);
+    let mut main_opts = opts; // the evidence runs keep the chosen method
+    if let Some(o) = main_run::dopri5_fallback(&physical, &opts) {
+        let why = format!("DOP853 produced a non-finite state ({}); the run was repeated with DOPRI5 at the same tolerance (near the vertical the slides' C.14 divides by sin(θ) and the order-8 stages overflow)", physical.outcome.label());
+        eprintln!("note: {why}");
+        r.result("contact_method_fallback", why);
+        (physical, main, fired) = main_run::run_main(args, &p, dur, &o, rec);
+        main_opts = o;
+    }
     bar.finish_and_clear();
     if let Some(path) = &args.events {
-        write_events(&mut r, path, &main).map_err(|e| events_error(args, &e))?;
+        events::write_events(&mut r, path, &main).map_err(|e| events::events_error(args, &e))?;
     }
     for (key, value) in main_run::results(&mut main, &p, &fired) {
         r.result(key, value);
@@ -507,7 +342,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     sensitivity::start_note(&mut r, &p, args.start);
     if args.rules == Rules::Physical {
         sensitivity::tolerance_sensitivity(
-            &mut r, &p, args.start, dur, &opts, args.rtol, &physical,
+            &mut r, &p, args.start, dur, &main_opts, args.rtol, &physical,
         );
     }
 
@@ -532,7 +367,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     );
 
     if let Some(dir) = ctx.figure_dir(ID) {
-        let paths = figures::draw_all(&dir, &p, &physical, &ev, ctx, &opts)?;
+        let paths = figures::draw_all(&dir, &p, &physical, &ev, ctx, &main_opts)?;
         r.figures.extend(paths);
         r.figures
             .extend(cycle_report::figure(&dir, &ev, &opts, ctx)?);

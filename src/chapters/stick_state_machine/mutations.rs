@@ -1,10 +1,18 @@
 //! Falsification: every non-consistency claim re-judged under a wrong variant of the
 //! document's statement (a flipped sign, a swapped inequality, a transposed rule, a
 //! coefficient off by 10 %, the other reading). Each mutation must change the verdict.
+//!
+//! Every claim whose statement prints a number has a mutation that moves that number
+//! by 10 % (its description says "10 %"). The claims whose statement prints no number
+//! (a sign, a direction, a word, a mode name, the order of two lines) are listed in
+//! [`NO_PRINTED_NUMBER`] with the reason; their mutations flip the sign, the inequality
+//! or the rule instead. `tests/stick_state_machine.rs` checks that every
+//! non-consistency claim is in one of the two groups.
 
-use super::claims::{self, Ctx};
-use super::doc::{Doc, Test};
+use super::claims;
+use super::evidence::Ctx;
 use super::evidence::{collect, Evidence, EVIDENCE_RTOL};
+use super::statements::{Statements, Test, PRINTED};
 use crate::chapters::Context;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
@@ -29,7 +37,7 @@ fn evidence() -> &'static (Evidence, RunSummary, StickParams) {
 }
 
 /// The claim `id` judged under `d` on the quick evidence.
-pub fn judge(id: &str, d: &Doc) -> Claim {
+pub fn judge(id: &str, d: &Statements) -> Claim {
     let (ev, main, p) = evidence();
     claims::all(
         d,
@@ -45,36 +53,88 @@ pub fn judge(id: &str, d: &Doc) -> Claim {
     .expect("the mutated claim exists")
 }
 
-fn m(id: &'static str, what: &'static str, f: fn(&mut Doc)) -> DocEdit<Doc> {
+/// The non-consistency claims whose statement prints no number a 10 % change could
+/// move, with the reason; their mutations flip a sign, an inequality or a rule.
+pub const NO_PRINTED_NUMBER: &[(&str, &str)] = &[
+    ("c6-balance-not-conservation", "a word: 'conservation' of angular momentum (flipped: 'balance')"),
+    ("c12-blank", "nothing is printed: C.12 is blank (flipped: the derived equation printed)"),
+    ("s43-p-moves-vertically", "a direction: P moves 'vertically' (flipped: not vertically)"),
+    ("c15-axis", "a direction: the axis k (flipped: -j)"),
+    ("s44-c15-every-collision", "a scope: every collision (flipped: the sticking ones only)"),
+    ("t1-slide-left", "a sign: v_x < 0 (flipped: v_x > 0)"),
+    ("t1-slide-right-sign", "a sign: v_x < 0 (flipped: v_x > 0)"),
+    ("a1-flight-test", "a sign: F_z > 0 (flipped: F_z < 0)"),
+    ("a1-vertical-flight", "an angle of 0 and a mode name: |θ| = 0 -> FLIGHT (10 % of 0 is 0; flipped: the line removed)"),
+    ("a1-abort-heights", "a reference level: heights below 0 (flipped: heights from the plate)"),
+    ("a2-shortening-branch", "a sign: the product < 0 (flipped: >= 0, and the other reading of r_CP)"),
+    ("a2-dead-branch", "a test of a value just set to 0 (flipped: the branch removed)"),
+    ("a2-free-landing-order", "the order of two lines (flipped: assignment first)"),
+    ("a2-slide-overrides-hinge", "if versus else (flipped: the else branch, and assert read as a return)"),
+    ("a2-tension-flight", "a sign: F_z <= 0 (flipped: flight only if it lifts C)"),
+    ("a3-abort", "a sign: the new slide's F_z <= 0 -> ABORT (flipped: FLIGHT)"),
+    ("a4-abort", "a sign: the new slide's F_z <= 0 -> ABORT (flipped: FLIGHT)"),
+    ("a3-flight-test", "zeros: F_z = 0 or F_x = 0 (flipped: F_x = 0 no longer a lift-off)"),
+    ("a4-flight-test", "zeros: F_z = 0 or F_x = 0 (flipped: F_x = 0 no longer a lift-off)"),
+    ("phase-sequence-tolerance", "a sequence of mode names (flipped: events at step ends)"),
+    ("floquet-saltation", "a method, the saltation term (flipped: left out)"),
+];
+
+fn m(id: &'static str, what: &'static str, f: fn(&mut Statements)) -> DocEdit<Statements> {
     (id, what, f)
 }
 
 const LESS_PLUS: Test = Test {
     fx_sign: 1.0,
     greater: false,
+    mu_coef: 1.0,
 };
 const LESS_MINUS: Test = Test {
     fx_sign: -1.0,
     greater: false,
+    mu_coef: 1.0,
 };
 
 /// Every mutation of the chapter.
 pub fn all() -> Vec<Mutation> {
-    let edits = vec![
+    let mut edits = equation_edits();
+    edits.extend(section43_edits());
+    edits.extend(collision_edits());
+    edits.extend(table1_edits());
+    edits.extend(algorithm_edits());
+    edits.extend(alg2_edits());
+    edits.extend(slide_algorithm_edits());
+    Mutation::from_edits(PRINTED, edits, judge)
+}
+
+/// Edits of C.1 to C.15 and the sentences of section 4.
+fn equation_edits() -> Vec<DocEdit<Statements>> {
+    vec![
         m(
             "c3-c5-flight-closed-form",
-            "C.3 rate k/gamma -> 1.1 k/gamma",
+            "C.3 rate k/gamma -> 1.1 k/gamma (10 %)",
             |d| d.flight_rate = 1.1,
         ),
-        m("c3-c5-flight-closed-form", "C.5 gravity g -> 0.9 g", |d| {
-            d.flight_gravity = 0.9
-        }),
+        m(
+            "c3-c5-flight-closed-form",
+            "C.5 gravity g -> 0.9 g (10 %)",
+            |d| d.flight_gravity = 0.9,
+        ),
+        m(
+            "c3-relaxation-flight-only",
+            "C.3 rate k/gamma -> 1.1 k/gamma (10 %)",
+            |d| d.flight_rate = 1.1,
+        ),
         m(
             "c3-relaxation-flight-only",
             "C.3's third row stated for flight only",
             |d| d.c3_general = false,
         ),
-        m("c6-pivot-small-motion", "C.6 spring k -> 1.1 k", |d| {
+        m(
+            "c6-pivot-small-motion",
+            "C.6 spring k -> 1.1 k (10 %)",
+            |d| d.c6_spring = 1.1,
+        ),
+        m("c6-c7-c8-balance", "C.6 spring k -> 1.1 k (10 %)", |d| {
             d.c6_spring = 1.1
         }),
         m("c6-c7-c8-balance", "C.6 (g + z_s'') -> (g - z_s'')", |d| {
@@ -92,7 +152,7 @@ pub fn all() -> Vec<Mutation> {
         ),
         m(
             "c9-c14-slide-equations",
-            "C.9 mu -> 1.1 mu in the denominator",
+            "C.9 mu -> 1.1 mu in the denominator (10 %)",
             |d| d.c9_mu = -1.1,
         ),
         m(
@@ -100,32 +160,65 @@ pub fn all() -> Vec<Mutation> {
             "C.14 -theta'^2 cos -> +theta'^2 cos",
             |d| d.c14_w2 = 1.0,
         ),
-        m("c10-c13-c14-x-rows", "C.13 x_p'' = -mu F_z/m -> +mu F_z/m", |d| {
-            d.c13_x = 1.0
-        }),
-        m("c10-c13-c14-x-rows", "C.10 x_p'' = mu F_z/m -> 1.1 mu F_z/m", |d| {
-            d.c10_x = 1.1
-        }),
+        m(
+            "c10-c13-c14-x-rows",
+            "C.13 x_p'' = -mu F_z/m -> +mu F_z/m",
+            |d| d.c13_x = 1.0,
+        ),
+        m(
+            "c10-c13-c14-x-rows",
+            "C.10 x_p'' = mu F_z/m -> 1.1 mu F_z/m (10 %)",
+            |d| d.c10_x = 1.1,
+        ),
         m(
             "c10-c13-c14-x-rows",
             "C.14 x_c'' row: -theta'^2 sin -> +theta'^2 sin",
             |d| d.c14_xc_w2 = 1.0,
         ),
+    ]
+}
+
+/// Edits of section 4.3's sentences and the blank C.12.
+fn section43_edits() -> Vec<DocEdit<Statements>> {
+    vec![
+        m(
+            "s43-two-dof-mode",
+            "two degrees of freedom -> 2.2 (10 %)",
+            |d| d.s43_dof = 2.2,
+        ),
         m("c12-blank", "C.12 printed (the derived equation)", |d| {
             d.c12_printed = true
         }),
-        m("s43-two-dof-mode", "the sentence names the sliding mode", |d| {
-            d.pivot_two_dof = false
-        }),
+        m(
+            "s43-two-dof-mode",
+            "the sentence names the sliding mode",
+            |d| d.pivot_two_dof = false,
+        ),
         m(
             "s43-p-moves-vertically",
             "P does not move vertically",
             |d| d.s43_p_vertical = false,
         ),
+    ]
+}
+
+/// Edits of C.15 and section 4.4 (the collision).
+fn collision_edits() -> Vec<DocEdit<Statements>> {
+    vec![
+        m(
+            "c15-angular-momentum",
+            "C.15 -r x v / L^2 -> -1.1 r x v / L^2 (10 %)",
+            |d| d.c15_sign = -1.1,
+        ),
         m(
             "c15-angular-momentum",
             "C.15 -r x v / L^2 -> +r x v / L^2",
             |d| d.c15_sign = 1.0,
+        ),
+        m(
+            "s44-c15-every-collision",
+            "C.15 at the sticking collisions only",
+            |d| d.s44_every_collision = false,
         ),
         m("c15-axis", "axis k -> -j", |d| {
             d.c15_axis = [0.0, -1.0, 0.0]
@@ -137,9 +230,15 @@ pub fn all() -> Vec<Mutation> {
         ),
         m(
             "c15-theta-reset",
-            "after collision theta = 1.1 theta_0 (0.03 rad in the jamming scene, 0.043 in the authors')",
-            |d| d.reset_offset_rad = 0.03,
+            "after collision theta = theta_0 -> 1.1 theta_0 (10 %)",
+            |d| d.reset_factor = 1.1,
         ),
+    ]
+}
+
+/// Edits of Table 1's rows.
+fn table1_edits() -> Vec<DocEdit<Statements>> {
+    vec![
         m("t1-slide-left", "Sliding Left v_x < 0 -> v_x > 0", |d| {
             d.t1_left_v = 1.0
         }),
@@ -147,6 +246,46 @@ pub fn all() -> Vec<Mutation> {
             "t1-slide-right-sign",
             "Sliding Right v_x < 0 -> v_x > 0",
             |d| d.t1_right_v = 1.0,
+        ),
+    ]
+}
+
+/// Edits of Algorithm 1 and the 10 % edits of Algorithm 2.
+fn algorithm_edits() -> Vec<DocEdit<Statements>> {
+    vec![
+        m(
+            "a1-slide-right-test",
+            "mu F_z + F_x > 0 -> 1.1 mu F_z + F_x > 0 (10 %)",
+            |d| d.a1_right.mu_coef = 1.1,
+        ),
+        m(
+            "a1-slide-left-test",
+            "mu F_z - F_x > 0 -> 1.1 mu F_z - F_x > 0 (10 %)",
+            |d| d.a1_left.mu_coef = 1.1,
+        ),
+        m("a1-exits", "mu -> 1.1 mu in both slide tests (10 %)", |d| {
+            d.a1_right.mu_coef = 1.1;
+            d.a1_left.mu_coef = 1.1;
+        }),
+        m(
+            "a2-tan-test",
+            "tan(theta) <= mu -> tan(theta) <= 1.1 mu (10 %)",
+            |d| d.a2_tan_mu = 1.1,
+        ),
+        m(
+            "a2-theta-dot-sign",
+            "theta' = r_CP x (v_p - v_s)/L^2 -> 1.1 r_CP x (v_p - v_s)/L^2 (10 %)",
+            |d| d.a2_theta_sign = 1.1,
+        ),
+        m(
+            "a2-impulse-free-landing",
+            "theta' <- -(z_p' - z_s')/(L sin) -> -1.1 (z_p' - z_s')/(L sin) (10 %)",
+            |d| d.a2_free_sign = -1.1,
+        ),
+        m(
+            "a2-hinge-test",
+            "mu F_z < |F_x| -> 1.1 mu F_z < |F_x| (10 %)",
+            |d| d.a2_hinge_mu = 1.1,
         ),
         m("a1-slide-right-test", "mu F_z + F_x > 0 -> < 0", |d| {
             d.a1_right = LESS_PLUS
@@ -168,6 +307,12 @@ pub fn all() -> Vec<Mutation> {
         m("a1-abort-heights", "heights from the plate", |d| {
             d.abort_absolute = false
         }),
+    ]
+}
+
+/// Edits of Algorithm 2's printed lines.
+fn alg2_edits() -> Vec<DocEdit<Statements>> {
+    vec![
         m("a2-tan-test", "tan -> |tan|", |d| d.a2_tan_abs = true),
         m("a2-shortening-branch", "r_CP read from P to C", |d| {
             d.rcp_from_c = false
@@ -214,6 +359,22 @@ pub fn all() -> Vec<Mutation> {
             "assign x_c' before the test",
             |d| d.a2_test_before_assign = false,
         ),
+    ]
+}
+
+/// Edits of Algorithms 3 and 4 and of the phase-sequence claim.
+fn slide_algorithm_edits() -> Vec<DocEdit<Statements>> {
+    vec![
+        m(
+            "a3-hinge-while-slipping",
+            "mu F_z >= |F_x| -> 1.1 mu F_z >= |F_x| (10 %)",
+            |d| d.slide_hinge_mu = 1.1,
+        ),
+        m(
+            "a4-hinge-while-slipping",
+            "mu F_z >= |F_x| -> 1.1 mu F_z >= |F_x| (10 %)",
+            |d| d.slide_hinge_mu = 1.1,
+        ),
         m(
             "a3-hinge-while-slipping",
             "hinge test only once the slip stopped",
@@ -237,6 +398,5 @@ pub fn all() -> Vec<Mutation> {
             "events taken at step ends (no location)",
             |d| d.sequence_located = false,
         ),
-    ];
-    Mutation::from_edits(Doc::PRINTED, edits, judge)
+    ]
 }

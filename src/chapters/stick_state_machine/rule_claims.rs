@@ -3,85 +3,18 @@
 //! violated, `OnViolation`) and, for Algorithms 3 and 4, the reading in which the rules
 //! run at every instant (`Continuous`); each reading gets its own claim.
 
-use super::claims::{rule, Ctx};
-use super::doc::Doc;
-use super::evidence::state_at;
+use super::collision_claims::{edge_states, geometry, landing_states};
+use super::evidence::Ctx;
+use super::evidence::{cone_exterior, cone_interior, keeps_cone, state_at};
 use super::impulse::newton_euler;
+use super::statements::{Statements, Test};
 use crate::physics::stick::run::RunSummary;
-use crate::physics::stick::{Mode, State, StickModel, NSTATE, OM, TH, VXC, XC, ZC};
-use crate::report::{Check, Claim, Verdict};
+use crate::physics::stick::{Mode, StickModel, NSTATE, TH, VXC, ZC};
+use crate::report::{Check, Claim};
 use serde_json::json;
 
-/// `(model, t, state)` of every landing of the evidence runs (the flight state at the
-/// located event), and their mirror images (theta, theta', x velocities negated), which
-/// the physics maps onto mirrored motions: the scenes lean one way only.
-fn landing_states(c: &Ctx) -> Vec<(StickModel, f64, State, Mode)> {
-    let mut v = Vec::new();
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
-        for l in &run.landings {
-            if let Some(y) = state_at(run, l.t_s, Mode::Flight) {
-                v.push((m, l.t_s, y, l.to));
-                let mut z = y;
-                for k in [TH, OM, VXC, XC] {
-                    z[k] = -z[k];
-                }
-                let to = match l.to {
-                    Mode::SlideLeft => Mode::SlideRight,
-                    Mode::SlideRight => Mode::SlideLeft,
-                    other => other,
-                };
-                v.push((m, l.t_s, z, to));
-            }
-        }
-    }
-    v
-}
-
-/// Relative velocity `(xdot_p, zdot_p - zdot_s)` and `r_CP` under the reading.
-fn geometry(m: &StickModel, t: f64, y: &State, from_c: bool) -> ((f64, f64), (f64, f64)) {
-    let [_, _, vxp, vzp] = m.tip(y);
-    let l = m.p.length_m;
-    let (s, c) = y[TH].sin_cos();
-    let sign = if from_c { 1.0 } else { -1.0 };
-    ((vxp, vzp - m.plate(t).1), (sign * l * s, sign * l * c))
-}
-
-/// C.15 against the Newton-Euler impulse; the axis of `r x v`.
-pub fn c15_claims(d: &Doc, c: &Ctx) -> Vec<Claim> {
-    let mut v = Vec::new();
-    let states = landing_states(c);
-    let mut worst = 0.0f64;
-    for (m, t, y, _) in &states {
-        let ne = newton_euler(m, *t, y);
-        let ((ux, uz), (rx, rz)) = geometry(m, *t, y, true);
-        let l = m.p.length_m;
-        let om = d.c15_sign * (rx * uz - rz * ux) / (l * l); // C.15: theta'+ = -(r x (v_p - zdot_s k))/L^2
-        worst = worst.max((om - ne.omega_after).abs() / (ne.omega_after.abs() + 1.0));
-    }
-    // the elimination and C.15 each round a few times: 1e-12 relative is 1e3 ulps
-    v.push(Claim::judged("c15-angular-momentum", "C.15", "The collision map θ'+ = -(r_P/C x (v_p - z_s' k))/L² (lever at the landing angle) equals the rate after the impact from the Newton-Euler impulse equations (impulse along the massless rod, C stuck on the plate), solved as a linear system at every landing of both evidence runs and their mirror images. Largest |difference| / (|θ'+| + 1 rad/s).", 0.0, worst, 1e-12, !states.is_empty() && worst <= 1e-12, Verdict::Confirmed).with_check(Check::SecondMethod));
-    // the axis: r = (L sin, 0, L cos), u = (u_x, 0, u_z): r x u = (0, r_z u_x - r_x u_z, 0)
-    let (mut off, mut n) = (0.0f64, 0usize);
-    for (m, t, y, _) in &states {
-        let ((ux, uz), (rx, rz)) = geometry(m, *t, y, true);
-        let h = [0.0, rz * ux - rx * uz, 0.0];
-        let a = d.c15_axis;
-        let cross = [
-            a[1] * h[2] - a[2] * h[1],
-            a[2] * h[0] - a[0] * h[2],
-            a[0] * h[1] - a[1] * h[0],
-        ];
-        let norm = (h[1] * h[1]).sqrt().max(1e-300);
-        off = off.max(cross.iter().map(|x| x.abs()).fold(0.0, f64::max) / norm);
-        n += 1;
-    }
-    v.push(rule("c15-axis", "C.15", "As printed: H = ((x_p - x_c)(z_p' - z_c') - (z_p - z_c) x_p') m k, along k, the vertical. Correct: in the x-z plane r x v points along j (out of the plane): r x (v_p - z_s' k) = ((z_p - z_c) x_p' - (x_p - x_c)(z_p' - z_s')) j, so the printed bracket is the component along -j (the formula C.15 uses is right, its axis is not). |axis x (r x v)| / |r x v| at the landing states (0: parallel).", json!(0.0), json!(off), "1e-12", n > 0 && off <= 1e-12, n > 0, Check::ClosedForm));
-    v
-}
-
 /// The claims of Algorithms 1 to 4 and the phase sequence.
-pub fn all(d: &Doc, c: &Ctx) -> Vec<Claim> {
+pub fn all(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let mut v = alg1(d, c);
     v.extend(alg2_landing(d, c));
     v.extend(alg2_hinge(d, c));
@@ -92,20 +25,42 @@ pub fn all(d: &Doc, c: &Ctx) -> Vec<Claim> {
     v
 }
 
-/// Contact forces `(mu, F_x, F_z)` strictly inside the friction cone, drawn by a closed
-/// form rather than selected from the simulation: F_z = 1 N, F_x = s mu F_z for
-/// s = -0.95, -0.9, ..., 0.95, at mu = 0.1, 0.4, 1 and 2. A test of a pivot's exit must
-/// fire at none of them (the contact holds there); that a test fires at all of them is
-/// algebra, not simulation.
-fn cone_interior() -> Vec<(f64, f64, f64)> {
-    let mut v = Vec::new();
-    for mu in [0.1, 0.4, 1.0, 2.0] {
-        for k in -19..=19 {
-            let s = 0.05 * k as f64;
-            v.push((mu, s * mu, 1.0));
-        }
+/// Whether the printed test `t` fires for the forces `(fx, fz)` (N) at friction `mu`
+/// (1), read to the accuracy `tol_n` (N): at a switch the state lies past the edge
+/// `v = 0` by at most the event accuracy, and evaluating `v` again (exact trigonometry
+/// instead of the carried one) moves it by rounding, so `v < tol_n` counts as past the
+/// edge (`< 0`) and `v > tol_n` as inside it (`> 0`); `tol_n = 0` away from switches.
+pub fn fires(t: &Test, mu: f64, fx: f64, fz: f64, tol_n: f64) -> bool {
+    let v = t.mu_coef * mu * fz + t.fx_sign * fx; // formula: c mu F_z + s F_x
+    if t.greater {
+        v > tol_n
+    } else {
+        v < tol_n
     }
-    v
+}
+
+/// `t` with its inequality reversed (the correction of Algorithm 1's slide tests).
+fn reversed(t: &Test) -> Test {
+    Test {
+        greater: !t.greater,
+        ..*t
+    }
+}
+
+/// Whether the reversed test `t` is the exit test of its cone edge on the closed-form
+/// samples: it fires at none of the cone's interior, and at an exterior force exactly
+/// when the force lies beyond the edge `mu F_z + fx_sign F_x = 0` (the true edge,
+/// coefficient of mu 1).
+fn reversed_is_exit(t: &Test) -> bool {
+    let r = reversed(t);
+    let inside = cone_interior()
+        .iter()
+        .all(|s| !fires(&r, s.0, s.1, s.2, 0.0));
+    let outside = cone_exterior().iter().all(|s| {
+        let beyond = s.0 * s.2 + t.fx_sign * s.1 < 0.0; // formula: mu F_z + s F_x < 0
+        fires(&r, s.0, s.1, s.2, 0.0) == beyond
+    });
+    inside && outside
 }
 
 fn frac(a: usize, b: usize) -> f64 {
@@ -116,7 +71,7 @@ fn frac(a: usize, b: usize) -> f64 {
     }
 }
 
-fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
+fn alg1(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let cone = cone_interior();
     let n = cone.len();
     let mut v = Vec::new();
@@ -135,8 +90,12 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
             "μ F_z - F_x < 0 (F_x above the cone)",
         ),
     ] {
-        let fires = cone.iter().filter(|s| test.fires(s.0, s.1, s.2)).count();
-        v.push(rule(id, "Alg. 1", &format!("As printed: if {printed}. Correct: {fix}. {reading} Fraction of the cone's interior at which the stated test fires."), json!(0.0), json!(frac(fires, n)), "0", n > 0 && fires == 0, n > 0, Check::ClosedForm));
+        let fires = cone
+            .iter()
+            .filter(|s| fires(&test, s.0, s.1, s.2, 0.0))
+            .count();
+        let corrected = n > 0 && reversed_is_exit(&test);
+        v.push(Claim::draft(Check::ClosedForm, id, "Alg. 1", &format!("As printed: if {printed}. Correct: {fix}. {reading} The correction (the stated inequality reversed, its coefficients kept) must fire at none of the interior and exactly at the forces beyond its edge (|s| = 1.05 to 1.5): a coefficient of μ off by 10 % misplaces the edge. Fraction of the cone's interior at which the stated test fires.")).values(json!(0.0), json!(frac(fires, n)), "0").printed_or_corrected(n > 0 && fires == 0, corrected));
     }
     let fires = cone
         .iter()
@@ -148,7 +107,7 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
             }
         })
         .count();
-    v.push(rule("a1-flight-test", "Alg. 1", &format!("As printed: if F_z > 0 -> FLIGHT. Correct: lift off when F_z < 0 (a tensile reaction), and only if the flight moves C away from the plate. {reading} Fraction of the cone's interior (F_z > 0) at which the stated test fires."), json!(0.0), json!(frac(fires, n)), "0", n > 0 && fires == 0, n > 0, Check::ClosedForm));
+    v.push(Claim::draft(Check::ClosedForm, "a1-flight-test", "Alg. 1", &format!("As printed: if F_z > 0 -> FLIGHT. Correct: lift off when F_z < 0 (a tensile reaction), and only if the flight moves C away from the plate. {reading} Fraction of the cone's interior (F_z > 0) at which the stated test fires.")).values(json!(0.0), json!(frac(fires, n)), "0").printed_or_corrected(n > 0 && fires == 0, n > 0));
     v.push(alg1_on_violation(d, c));
     // a vertical stick at rest on a plate with Gamma = 0.5: F_z = m (g + z_s''), F_x = 0
     let mut q = c.ev.params[0];
@@ -165,7 +124,7 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
     }
     // closed form and pivot_eval agree to rounding of m g ~ 10 N: 1e-12 N
     let pivot_ok = dev <= 1e-12 && fz_min > 0.0;
-    v.push(rule("a1-vertical-flight", "Alg. 1", "As printed: with |θ| = 0 (and μ F_z + F_x > 0) the HINGE goes to FLIGHT. What the line is for (the authors' code, fsm.m, HINGE, case SLIP_POS: 'if abs(th) < 1e-9 nextPhase = FLIGHT', commented 'to take care of the 1/sin(th) singularity'): a numerical escape taken at a slip exit near the vertical, where the slide's C.14 divides by sin(θ). As a rule of the dynamics, which is how the document prints it, it is wrong: a vertical stick on a plate is an ordinary pivot, F_z = m (g + z_s'') > 0 and F_x = 0 while the plate's acceleration stays below g, and a compressive contact cannot start a flight; only the slides are singular there (the workbook stops such a run as invalid, C.14). Smallest pivot normal force (N) over a cycle of a vertical stick on a plate at Γ = 0.5 (closed form and pivot equations agree to 1e-12 N).", json!("F_z > 0: pivot"), json!(fz_min), "sign", !d.a1_vertical_flight && pivot_ok, pivot_ok, Check::ClosedForm));
+    v.push(Claim::draft(Check::ClosedForm, "a1-vertical-flight", "Alg. 1", "As printed: with |θ| = 0 (and μ F_z + F_x > 0) the HINGE goes to FLIGHT. What the line is for (the authors' code, fsm.m, HINGE, case SLIP_POS: 'if abs(th) < 1e-9 nextPhase = FLIGHT', commented 'to take care of the 1/sin(th) singularity'): a numerical escape taken at a slip exit near the vertical, where the slide's C.14 divides by sin(θ). As a rule of the dynamics, which is how the document prints it, it is wrong: a vertical stick on a plate is an ordinary pivot, F_z = m (g + z_s'') > 0 and F_x = 0 while the plate's acceleration stays below g, and a compressive contact cannot start a flight; only the slides are singular there (the workbook stops such a run as invalid, C.14). Smallest pivot normal force (N) over a cycle of a vertical stick on a plate at Γ = 0.5 (closed form and pivot equations agree to 1e-12 N).").values(json!("F_z > 0: pivot"), json!(fz_min), "sign").printed_or_corrected(!d.a1_vertical_flight && pivot_ok, pivot_ok));
     let (mut fires, mut fires_fix, mut total) = (0usize, 0usize, 0usize);
     for (run, q) in c.runs() {
         let m = StickModel::new(*q);
@@ -181,12 +140,12 @@ fn alg1(d: &Doc, c: &Ctx) -> Vec<Claim> {
             fires_fix += usize::from(zp - zs < 0.0);
         }
     }
-    v.push(rule("a1-abort-heights", "Alg. 1-4", "As printed: ABORT if z_c < 0 or z_p < 0. Correct: heights count from the plate, and z_s = δ cos(ω t) is negative half the time: the stick has fallen when z_p - z_s <= 0 (|θ| >= 90 deg). Fraction of contact samples of the (completed) evidence runs at which the stated test fires.", json!(0.0), json!(frac(fires, total)), "0", total > 0 && fires == 0, total > 0 && fires_fix == 0, Check::Simulation));
+    v.push(Claim::draft(Check::Simulation, "a1-abort-heights", "Alg. 1-4", "As printed: ABORT if z_c < 0 or z_p < 0. Correct: heights count from the plate, and z_s = δ cos(ω t) is negative half the time: the stick has fallen when z_p - z_s <= 0 (|θ| >= 90 deg). Fraction of contact samples of the (completed) evidence runs at which the stated test fires.").values(json!(0.0), json!(frac(fires, total)), "0").printed_or_corrected(total > 0 && fires == 0, total > 0 && fires_fix == 0));
     v
 }
 
 /// Algorithm 1 as a whole under Table 1's reading: executed at every pivot exit.
-fn alg1_on_violation(d: &Doc, c: &Ctx) -> Claim {
+fn alg1_on_violation(d: &Statements, c: &Ctx) -> Claim {
     let (mut agree, mut agree_fix, mut n) = (0usize, 0usize, 0usize);
     for (run, q) in c.runs() {
         let m = StickModel::new(*q);
@@ -202,10 +161,10 @@ fn alg1_on_violation(d: &Doc, c: &Ctx) -> Claim {
             let mu = q.mu;
             // the printed lines in order, each assignment overriding the last
             let mut next = None;
-            if d.a1_right.fires_at(mu, f.fx, f.fz, tol) {
+            if fires(&d.a1_right, mu, f.fx, f.fz, tol) {
                 next = Some(Mode::SlideRight);
             }
-            if d.a1_left.fires_at(mu, f.fx, f.fz, tol) {
+            if fires(&d.a1_left, mu, f.fx, f.fz, tol) {
                 next = Some(Mode::SlideLeft);
             }
             if if d.a1_flight_positive {
@@ -218,10 +177,10 @@ fn alg1_on_violation(d: &Doc, c: &Ctx) -> Claim {
             // corrected: slide right / left beyond the cone's edges, flight if tensile
             // and the flight lifts C
             let mut fixed = None;
-            if mu * f.fz + f.fx < tol {
+            if fires(&reversed(&d.a1_right), mu, f.fx, f.fz, tol) {
                 fixed = Some(Mode::SlideRight);
             }
-            if mu * f.fz - f.fx < tol {
+            if fires(&reversed(&d.a1_left), mu, f.fx, f.fz, tol) {
                 fixed = Some(Mode::SlideLeft);
             }
             if f.fz < tol && matches!(m.takeoff(t, &y), crate::physics::stick::rules::Next::To(..))
@@ -233,10 +192,10 @@ fn alg1_on_violation(d: &Doc, c: &Ctx) -> Claim {
             n += 1;
         }
     }
-    rule("a1-exits", "Alg. 1, Table 1", "Reading: Table 1's caption (HINGE runs when the reaction leaves the cone or turns tensile). Algorithm 1 executed as printed, in order, the last assignment winning, at every pivot exit of both scenes: it must choose the mode the contact conditions chose. The tests are read at the switch state to the event accuracy tol = 1e-9 m g (that state lies past the edge by at most tol): v < tol counts as < 0, v > tol as > 0. As printed, at an exit through the cone's edge F_x = μ F_z the reversed slide-right test and 'F_z > 0 -> FLIGHT' both fire, and FLIGHT wins. Exits at which the printed algorithm agrees (of all exits).", json!(n), json!(agree), "exact", n > 0 && agree == n, n > 0 && agree_fix == n, Check::LiteralExecution)
+    Claim::draft(Check::LiteralExecution, "a1-exits", "Alg. 1, Table 1", "Reading: Table 1's caption (HINGE runs when the reaction leaves the cone or turns tensile). Algorithm 1 executed as printed, in order, the last assignment winning, at every pivot exit of both scenes: it must choose the mode the contact conditions chose. The tests are read at the switch state to the event accuracy tol = 1e-9 m g (that state lies past the edge by at most tol): v < tol counts as < 0, v > tol as > 0. As printed, at an exit through the cone's edge F_x = μ F_z the reversed slide-right test and 'F_z > 0 -> FLIGHT' both fire, and FLIGHT wins. The correction reverses the two slide tests (their coefficients kept) and lifts off only when F_z < 0 and the flight lifts C. Exits at which the printed algorithm agrees (of all exits).").values(json!(n), json!(agree), "exact").printed_or_corrected(n > 0 && agree == n, n > 0 && agree_fix == n)
 }
 
-fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
+fn alg2_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let states = landing_states(c);
     let mut v = Vec::new();
     let hmax = c
@@ -245,7 +204,7 @@ fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
         .flat_map(|(r, _)| r.landings.iter())
         .map(|l| l.h_c_m.abs())
         .fold(0.0, f64::max);
-    v.push(Claim::judged("a2-landing", "Alg. 2", "Landing when z_c - z_s = 0: located on the closed-form flight to near machine precision. Largest |h_c| at located landings (m).", 0.0, hmax, 1e-12, hmax <= 1e-12 && c.ev.authors.hops > 0, Verdict::Confirmed));
+    v.push(Claim::draft(Check::Consistency, "a2-landing", "Alg. 2", "Landing when z_c - z_s = 0: located on the closed-form flight to near machine precision. Largest |h_c| at located landings (m).").values(0.0, hmax, 1e-12).confirmed_if(hmax <= 1e-12 && c.ev.authors.hops > 0));
     let (mut dis, mut dis_fix) = (0usize, 0usize);
     for (m, t, y, _) in &states {
         let ne = newton_euler(m, *t, y);
@@ -256,13 +215,19 @@ fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
                 th.tan().abs()
             } else {
                 th.tan()
-            } <= m.p.mu)
+            } <= d.a2_tan_mu * m.p.mu)
                 != in_cone,
         );
-        dis_fix += usize::from((th.tan().abs() <= m.p.mu) != in_cone);
+    }
+    // the correction |tan(theta)| <= mu (its coefficient kept) at the landings and at
+    // landing states turned to angles just inside and outside the cone's edge
+    for (m, t, y, _) in states.iter().chain(&edge_states(&states)) {
+        let ne = newton_euler(m, *t, y);
+        let in_cone = ne.jx.abs() <= m.p.mu * ne.jz.abs();
+        dis_fix += usize::from((y[TH].tan().abs() <= d.a2_tan_mu * m.p.mu) != in_cone);
     }
     let n = states.len();
-    v.push(rule("a2-tan-test", "Alg. 2", "As printed: a sticking impact if tan(θ) <= μ. Correct: |tan(θ)| <= μ: the Newton-Euler impulse lies along the rod, |J_x|/|J_z| = |tan(θ)|. Landings of both scenes and their mirror images (the scenes lean to +x only) at which the stated test disagrees with 'the Newton-Euler impulse lies inside the cone'.", json!(0), json!(dis), "exact", n > 0 && dis == 0, n > 0 && dis_fix == 0, Check::SecondMethod));
+    v.push(Claim::draft(Check::SecondMethod, "a2-tan-test", "Alg. 2", "As printed: a sticking impact if tan(θ) <= μ. Correct: |tan(θ)| <= μ: the Newton-Euler impulse lies along the rod, |J_x|/|J_z| = |tan(θ)|. Landings of both scenes and their mirror images (the scenes lean to +x only) at which the stated test disagrees with 'the Newton-Euler impulse lies inside the cone'.").values(json!(0), json!(dis), "exact").printed_or_corrected(n > 0 && dis == 0, n > 0 && dis_fix == 0));
     // the impulse branch against the sign of the Newton-Euler impulse, at sticking candidates
     let (mut dis, mut dis_fix, mut dis_th, mut dis_th_fix, mut k) = (0, 0, 0, 0, 0usize);
     for (m, t, y, _) in states.iter().filter(|s| s.2[TH].tan().abs() <= s.0.p.mu) {
@@ -280,7 +245,7 @@ fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
         dis_fix += usize::from((ux * fx + uz * fz < 0.0) != compressive);
         let l = m.p.length_m;
         let om = d.a2_theta_sign * (rx * uz - rz * ux) / (l * l);
-        let om_fix = -(fx * uz - fz * ux) / (l * l);
+        let om_fix = -d.a2_theta_sign * (fx * uz - fz * ux) / (l * l); // the sign of C.15 added
         let scale = ne.omega_after.abs() + 1.0;
         dis_th += usize::from((om - ne.omega_after).abs() > 1e-12 * scale);
         dis_th_fix += usize::from((om_fix - ne.omega_after).abs() > 1e-12 * scale);
@@ -291,8 +256,8 @@ fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
     } else {
         "r_CP read from P to C"
     };
-    v.push(rule("a2-shortening-branch", "Alg. 2", &format!("As printed: if (x_p' i + (z_p' - z_s') k) . r_CP < 0 compute the hinge forces without an impulse, else (\"rod not shortening\") apply the angular-momentum map. Reading: {reading}. From C to P the branches are swapped: the Newton-Euler impulse is compressive only when the rod shortens (product < 0). Read from P to C the printed branches are right and only the comment \"rod not shortening\" is wrong. Sticking candidates (|tan| <= μ, both scenes and mirrors) at which the branch disagrees with the sign of the Newton-Euler impulse."), json!(0), json!(dis), "exact", k > 0 && dis == 0, k > 0 && dis_fix == 0, Check::SecondMethod));
-    v.push(rule("a2-theta-dot-sign", "Alg. 2", &format!("As printed: θ' = (r_CP x (v_p - v_s))/L², without the minus sign of C.15. Reading: {reading}. From C to P it has the wrong sign (C.15 and the Newton-Euler impulse give -(r_CP x (v_p - v_s))/L²); from P to C it agrees. Sticking candidates at which the stated θ' differs from the Newton-Euler rate (1e-12 relative)."), json!(0), json!(dis_th), "exact", k > 0 && dis_th == 0, k > 0 && dis_th_fix == 0, Check::SecondMethod));
+    v.push(Claim::draft(Check::SecondMethod, "a2-shortening-branch", "Alg. 2", &format!("As printed: if (x_p' i + (z_p' - z_s') k) . r_CP < 0 compute the hinge forces without an impulse, else (\"rod not shortening\") apply the angular-momentum map. Reading: {reading}. From C to P the branches are swapped: the Newton-Euler impulse is compressive only when the rod shortens (product < 0). Read from P to C the printed branches are right and only the comment \"rod not shortening\" is wrong. Sticking candidates (|tan| <= μ, both scenes and mirrors) at which the branch disagrees with the sign of the Newton-Euler impulse.")).values(json!(0), json!(dis), "exact").printed_or_corrected(k > 0 && dis == 0, k > 0 && dis_fix == 0));
+    v.push(Claim::draft(Check::SecondMethod, "a2-theta-dot-sign", "Alg. 2", &format!("As printed: θ' = (r_CP x (v_p - v_s))/L², without the minus sign of C.15. Reading: {reading}. From C to P it has the wrong sign (C.15 and the Newton-Euler impulse give -(r_CP x (v_p - v_s))/L²); from P to C it agrees. Sticking candidates at which the stated θ' differs from the Newton-Euler rate (1e-12 relative).")).values(json!(0), json!(dis_th), "exact").printed_or_corrected(k > 0 && dis_th == 0, k > 0 && dis_th_fix == 0));
     // after the map: "x_c' <- 0 ... if x_c' > 0 SLIDE RIGHT else SLIDE LEFT"
     let sticking: Vec<_> = c
         .runs()
@@ -306,13 +271,13 @@ fn alg2_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
     } else {
         true
     };
-    v.push(rule("a2-dead-branch", "Alg. 2", "As printed: after the angular-momentum map x_c' <- 0, then if x_c' > 0 SLIDE RIGHT else SLIDE LEFT: a test of a value just set to zero, always SLIDE LEFT (and, read as assignments, it overrides the HINGE just chosen). Correct: HINGE, then Table 1's reaction test. Sticking landings of both scenes that the contact conditions send elsewhere than SLIDE LEFT (literal execution of the branch: all should be SLIDE LEFT).", json!(0), json!(printed_left), "exact", !sticking.is_empty() && agree, !sticking.is_empty(), Check::LiteralExecution));
+    v.push(Claim::draft(Check::LiteralExecution, "a2-dead-branch", "Alg. 2", "As printed: after the angular-momentum map x_c' <- 0, then if x_c' > 0 SLIDE RIGHT else SLIDE LEFT: a test of a value just set to zero, always SLIDE LEFT (and, read as assignments, it overrides the HINGE just chosen). Correct: HINGE, then Table 1's reaction test. Sticking landings of both scenes that the contact conditions send elsewhere than SLIDE LEFT (literal execution of the branch: all should be SLIDE LEFT).").values(json!(0), json!(printed_left), "exact").printed_or_corrected(!sticking.is_empty() && agree, !sticking.is_empty()));
     v.extend(free_landing(d, c));
     v
 }
 
 /// Alg. 2's impulse-free branch (`tan(theta) > mu`).
-fn free_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
+fn free_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let mut v = Vec::new();
     let (mut res, mut res_fix, mut order_dis, mut n) = (0.0f64, 0.0f64, 0usize, 0usize);
     for (run, q) in c.runs() {
@@ -345,30 +310,35 @@ fn free_landing(d: &Doc, c: &Ctx) -> Vec<Claim> {
         }
     }
     // |z_p' - z_s'| ~ 1 m/s: rounding 1e-15 m/s; 1e-12 m/s
-    v.push(rule("a2-impulse-free-landing", "Alg. 2", "tan(θ) > μ: θ' <- -(z_p' - z_s')/(L sin(θ)), x_c' <- x_p' + (z_p' - z_s') cot(θ): P keeps its velocity and C moves with the plate. Largest |z_c' - z_s'| (m/s) after the stated assignment (C.3) at the impulse-free landings of both scenes.", json!(0.0), json!(res), "1e-12 m/s", n > 0 && res <= 1e-12, n > 0 && res_fix <= 1e-12, Check::ClosedForm));
-    v.push(rule("a2-free-landing-order", "Alg. 2", "As printed (tan(θ) > μ branch): 'if x_c' > 0 then SLIDE RIGHT, x_c' <- x_p' + (z_p' - z_s') cot(θ)': read in order, the test sees C's velocity in flight, before the assignment. Correct: assign first, then choose the slide the new x_c' points to. Impulse-free landings of both scenes at which the two orders choose different slides (literal execution; Table 1's re-selection then repairs the choice at the same instant, see the table of printed rules).", json!(0), json!(order_dis), "exact", n > 0 && order_dis == 0, n > 0, Check::LiteralExecution));
+    v.push(Claim::draft(Check::ClosedForm, "a2-impulse-free-landing", "Alg. 2", "tan(θ) > μ: θ' <- -(z_p' - z_s')/(L sin(θ)), x_c' <- x_p' + (z_p' - z_s') cot(θ): P keeps its velocity and C moves with the plate. Largest |z_c' - z_s'| (m/s) after the stated assignment (C.3) at the impulse-free landings of both scenes.").values(json!(0.0), json!(res), "1e-12 m/s").printed_or_corrected(n > 0 && res <= 1e-12, n > 0 && res_fix <= 1e-12));
+    v.push(Claim::draft(Check::LiteralExecution, "a2-free-landing-order", "Alg. 2", "As printed (tan(θ) > μ branch): 'if x_c' > 0 then SLIDE RIGHT, x_c' <- x_p' + (z_p' - z_s') cot(θ)': read in order, the test sees C's velocity in flight, before the assignment. Correct: assign first, then choose the slide the new x_c' points to. Impulse-free landings of both scenes at which the two orders choose different slides (literal execution; Table 1's re-selection then repairs the choice at the same instant, see the table of printed rules).").values(json!(0), json!(order_dis), "exact").printed_or_corrected(n > 0 && order_dis == 0, n > 0));
     v
 }
 
 /// Alg. 2's hinge-forces branch.
-fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
+fn alg2_hinge(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let ps = cone_interior();
     let n = ps.len();
     let mut v = Vec::new();
+    let c_mu = d.a2_hinge_mu;
     let hinge = |s: &(f64, f64, f64), lt: bool| {
         let (mu, fx, fz) = *s;
         if lt {
-            mu * fz < fx.abs()
+            c_mu * mu * fz < fx.abs()
         } else {
-            mu * fz >= fx.abs()
+            c_mu * mu * fz >= fx.abs()
         }
     };
     let keeps = ps.iter().filter(|s| hinge(s, d.a2_hinge_lt)).count();
-    v.push(rule("a2-hinge-test", "Alg. 2", "As printed: if μ F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= μ F_z (inside the cone), as the authors' code has it (fsm.m, STRIKE_0: |F_x| < μ F_y -> HINGE; STUCK: μ F_y >= |F_x| -> HINGE). Evidence: closed form, the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2), not samples the simulator's own guard selected. Fraction of it at which the stated test chooses HINGE (must be 1).", json!(1.0), json!(frac(keeps, n)), "exact", n > 0 && keeps == n, n > 0, Check::ClosedForm));
+    // the correction (the inequality reversed, its coefficient kept) keeps every force
+    // inside the cone and none outside it
+    let corrected = n > 0 && keeps_cone(|s| hinge(s, !d.a2_hinge_lt));
+    v.push(Claim::draft(Check::ClosedForm, "a2-hinge-test", "Alg. 2", "As printed: if μ F_z < |F_x| then HINGE. Correct: HINGE when |F_x| <= μ F_z (inside the cone), as the authors' code has it (fsm.m, STRIKE_0: |F_x| < μ F_y -> HINGE; STUCK: μ F_y >= |F_x| -> HINGE). Evidence: closed form, the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2), not samples the simulator's own guard selected. The correction (the inequality reversed, its coefficient kept) must also choose HINGE at none of the forces outside the cone (|s| = 1.05 to 1.5): a coefficient of μ off by 10 % misplaces the edge. Fraction of the interior at which the stated test chooses HINGE (must be 1).").values(json!(1.0), json!(frac(keeps, n)), "exact").printed_or_corrected(n > 0 && keeps == n, corrected));
     // the block "if hinge then HINGE; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT", executed
     let mut ends_hinge = 0usize;
     for s in &ps {
-        let h = hinge(s, false);
+        let (mu, fx, fz) = *s;
+        let h = mu * fz >= fx.abs(); // the corrected hinge test
         let mut next = None;
         if h {
             next = Some(Mode::Pivot);
@@ -383,7 +353,7 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
         }
         ends_hinge += usize::from(next == Some(Mode::Pivot));
     }
-    v.push(rule("a2-slide-overrides-hinge", "Alg. 2", &format!("As printed: 'if μ F_z < |F_x| then HINGE end if; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT': two separate ifs. Read as assignments (the last wins: {}), the slide choice overwrites HINGE every time. The authors' code decides the reading: fsm.m (STRIKE_0) has one chain, if |F_x| < μ F_y HINGE, elseif F_x > 0 SLIDE_NEG, else SLIDE_POS: the slide choice is the else branch, lost in print. The printed block executed with the corrected hinge test on the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2): fraction ending in HINGE (must be 1).", d.last_assert_wins), json!(1.0), json!(frac(ends_hinge, n)), "exact", n > 0 && ends_hinge == n, n > 0, Check::LiteralExecution));
+    v.push(Claim::draft(Check::LiteralExecution, "a2-slide-overrides-hinge", "Alg. 2", &format!("As printed: 'if μ F_z < |F_x| then HINGE end if; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT': two separate ifs. Read as assignments (the last wins: {}), the slide choice overwrites HINGE every time. The authors' code decides the reading: fsm.m (STRIKE_0) has one chain, if |F_x| < μ F_y HINGE, elseif F_x > 0 SLIDE_NEG, else SLIDE_POS: the slide choice is the else branch, lost in print. The printed block executed with the corrected hinge test on the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2): fraction ending in HINGE (must be 1).", d.last_assert_wins)).values(json!(1.0), json!(frac(ends_hinge, n)), "exact").printed_or_corrected(n > 0 && ends_hinge == n, n > 0));
     // F_x > 0 -> SLIDE LEFT at the pivot exits of both scenes
     let (mut agree, mut exits) = (0usize, 0usize);
     for (run, q) in c.runs() {
@@ -406,14 +376,14 @@ fn alg2_hinge(d: &Doc, c: &Ctx) -> Vec<Claim> {
             exits += 1;
         }
     }
-    v.push(rule("a2-slide-direction", "Alg. 2", "If F_x > 0 SLIDE LEFT else SLIDE RIGHT (outside the cone): the tangential force the plate cannot supply drives C the other way; the authors' fsm.m agrees ('elseif Fx > 0 SLIDE_NEG'). Pivot exits of both scenes at which the stated rule picks the slide the simulation took. A consistency check: the workbook's contact rules (`select_contact`) apply this F_x-sign rule themselves, so no document could fail it here.", json!(exits), json!(agree), "exact", exits > 0 && agree == exits, false, Check::Consistency));
+    v.push(Claim::draft(Check::Consistency, "a2-slide-direction", "Alg. 2", "If F_x > 0 SLIDE LEFT else SLIDE RIGHT (outside the cone): the tangential force the plate cannot supply drives C the other way; the authors' fsm.m agrees ('elseif Fx > 0 SLIDE_NEG'). Pivot exits of both scenes at which the stated rule picks the slide the simulation took. A consistency check: the workbook's contact rules (`select_contact`) apply this F_x-sign rule themselves, so no document could fail it here.").values(json!(exits), json!(agree), "exact").printed_or_corrected(exits > 0 && agree == exits, false));
     let counter = c.ev.start_fz_n < 0.0 && c.ev.start_liftoff_hdot_mps < 0.0;
-    v.push(rule("a2-tension-flight", "Alg. 2", "As printed: a tensional ground reaction (F_z <= 0) implies FLIGHT. Correct: only if the flight moves C away from the plate; the massless rod released with a loaded spring swings C down at L sin(θ) (k/γ)(θ - θ₀), and the contact goes on as a slide. Authors' start: pivot F_z < 0, and C's velocity relative to the plate in the flight that would follow (m/s).", json!("h_c' > 0"), json!(c.ev.start_liftoff_hdot_mps), "sign", !(d.a2_tension_flight && counter), counter, Check::Simulation));
+    v.push(Claim::draft(Check::Simulation, "a2-tension-flight", "Alg. 2", "As printed: a tensional ground reaction (F_z <= 0) implies FLIGHT. Correct: only if the flight moves C away from the plate; the massless rod released with a loaded spring swings C down at L sin(θ) (k/γ)(θ - θ₀), and the contact goes on as a slide. Authors' start: pivot F_z < 0, and C's velocity relative to the plate in the flight that would follow (m/s).").values(json!("h_c' > 0"), json!(c.ev.start_liftoff_hdot_mps), "sign").printed_or_corrected(!(d.a2_tension_flight && counter), counter));
     v
 }
 
 /// The discrete history against the tolerance.
-fn sequence_claim(d: &Doc, c: &Ctx) -> Claim {
+fn sequence_claim(d: &Statements, c: &Ctx) -> Claim {
     let ev = c.ev;
     let [r0, r1] = d.sequence_rtols;
     let runs_at = |rtol: f64| -> [RunSummary; 2] {
@@ -447,5 +417,5 @@ fn sequence_claim(d: &Doc, c: &Ctx) -> Claim {
     };
     let comp: Vec<String> = a.iter().zip(&b).map(|(x, y)| describe(x, y)).collect();
     let same = a == b;
-    Claim::judged("phase-sequence-tolerance", "5", &format!("The state machine's phase sequence (authors' and self-locking scene, {} s) is the same at rtol {r0:e} and {r1:e}, events located on the dense output{}: they are located far below any gap between them (the discrete history has converged).", ev.duration_s, if d.sequence_located { "" } else { " (as stated: at step ends)" }), json!(["identical", "identical"]), json!(comp), "exact", same, Verdict::Confirmed).with_check(Check::Convergence)
+    Claim::draft(Check::Convergence, "phase-sequence-tolerance", "5", &format!("The state machine's phase sequence (authors' and self-locking scene, {} s) is the same at rtol {r0:e} and {r1:e}, events located on the dense output{}: they are located far below any gap between them (the discrete history has converged).", ev.duration_s, if d.sequence_located { "" } else { " (as stated: at step ends)" })).values(json!(["identical", "identical"]), json!(comp), "exact").confirmed_if(same)
 }

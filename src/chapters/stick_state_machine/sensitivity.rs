@@ -30,13 +30,12 @@ pub fn start_note(r: &mut ChapterReport, p: &StickParams, start: Start) {
         Some(th) => r.result("start_angle_rad", round(th, 10)),
         None => {
             r.result("start_angle_rad", round(p.theta0_rad, 10));
-            r.result(
-                "start_note",
-                format!(
-                    "no static angle: the spring (k = {} N m/rad) cannot hold the weight's moment m g L sin(θ) at any angle near θ₀, so --start static starts at rest at θ₀ = {} rad instead",
-                    p.stiffness_nm_per_rad, p.theta0_rad
-                ),
+            let note = format!(
+                "no static angle: the spring (k = {} N m/rad) cannot hold the weight's moment m g L sin(θ) at any angle near θ₀, so --start static starts at rest at θ₀ = {} rad instead",
+                p.stiffness_nm_per_rad, p.theta0_rad
             );
+            eprintln!("note: {note}");
+            r.result("start_note", note);
         }
     }
 }

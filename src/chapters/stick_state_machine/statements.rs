@@ -1,40 +1,23 @@
-//! The document's statements of sections 4 and 5 as data: each check reads the
-//! coefficient, sign, inequality or rule it tests from a [`Doc`], so a falsification
-//! test can feed it a wrong variant ([`super::mutations`]).
+//! The document's statements of sections 4 and 5 as data, no logic: each claim
+//! (`claims.rs`) reads the coefficient, sign, inequality or rule it tests from a
+//! [`Statements`], so a falsification mutation (`mutations.rs`) can feed it a wrong
+//! variant.
 
-/// A printed inequality on the hinge forces, `mu F_z + fx_sign F_x (> or <) 0`.
+/// A printed inequality on the hinge forces, `mu F_z + fx_sign F_x (> or <) 0`
+/// (evaluated by `rule_claims::fires`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Test {
     /// Sign of `F_x` in the test (1).
     pub fx_sign: f64,
     /// `>` (true) or `<` (false).
     pub greater: bool,
+    /// Coefficient of `mu F_z` (printed 1).
+    pub mu_coef: f64,
 }
 
-impl Test {
-    /// Whether the test fires for the forces `(fx, fz)` (N) at friction `mu` (1).
-    pub fn fires(&self, mu: f64, fx: f64, fz: f64) -> bool {
-        self.fires_at(mu, fx, fz, 0.0)
-    }
-
-    /// [`Test::fires`] at a switch, read to the event accuracy `tol_n` (N): the state
-    /// the simulator switched at lies past the edge `v = 0` by at most that much, and
-    /// evaluating `v` again (exact trigonometry instead of the carried one) moves it
-    /// by rounding, so `v < tol_n` counts as past the edge (`< 0`) and `v > tol_n` as
-    /// inside it (`> 0`).
-    pub fn fires_at(&self, mu: f64, fx: f64, fz: f64, tol_n: f64) -> bool {
-        let v = mu * fz + self.fx_sign * fx;
-        if self.greater {
-            v > tol_n
-        } else {
-            v < tol_n
-        }
-    }
-}
-
-/// The statements, as printed (see [`Doc::PRINTED`]).
+/// The statements (see [`PRINTED`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Doc {
+pub struct Statements {
     /// C.3: `theta' = -flight_rate (k/gamma)(theta - theta_0)` in flight (1).
     pub flight_rate: f64,
     /// C.5: `zddot_p = -flight_gravity g` (1).
@@ -57,7 +40,14 @@ pub struct Doc {
     pub c15_sign: f64,
     /// C.15: the axis of the angular momentum `r x v` (printed k, the vertical).
     pub c15_axis: [f64; 3],
-    /// Section 4.4: after the collision `theta = theta_0 + reset_offset` (rad; printed 0).
+    /// Section 4.4: "A collision event happens when the stick exits the flight phase
+    /// ... θ' needs to be evaluated by equating the angular moment H about the point
+    /// C": C.15 applies at every collision (true, as printed) or at the sticking ones.
+    pub s44_every_collision: bool,
+    /// Section 4.4: after the collision `theta = reset_factor theta_0 + reset_offset`
+    /// (printed 1).
+    pub reset_factor: f64,
+    /// See `reset_factor` (rad; printed 0).
     pub reset_offset_rad: f64,
     /// Section 4.3: in sliding left "the point P moves down vertically" (true).
     pub s43_p_vertical: bool,
@@ -72,6 +62,8 @@ pub struct Doc {
     /// Section 4.3 (Sliding Left): "in the pivot mode the system has two degrees of
     /// freedom" (`true`, as printed; `false`: the sentence names the sliding mode).
     pub pivot_two_dof: bool,
+    /// Section 4.3: the number of degrees of freedom the sentence prints (2).
+    pub s43_dof: f64,
     /// Table 1, Sliding Left: the sign of `v_x` (printed -1, `v_x < 0`).
     pub t1_left_v: f64,
     /// Table 1, Sliding Right: the sign of `v_x` (printed -1, `v_x < 0`).
@@ -88,6 +80,8 @@ pub struct Doc {
     pub abort_absolute: bool,
     /// Alg. 2: the sticking test uses `tan(theta)` (false) or `|tan(theta)|` (true).
     pub a2_tan_abs: bool,
+    /// Alg. 2: the sticking test's coefficient of `mu`, `tan(theta) <= a2_tan_mu mu` (1).
+    pub a2_tan_mu: f64,
     /// Alg. 2: `r_CP` points from C to P (true) or from P to C.
     pub rcp_from_c: bool,
     /// Alg. 2: the impulse is applied when `(v_p - v_s) . r_CP >= 0` (true, "rod not
@@ -97,6 +91,8 @@ pub struct Doc {
     pub a2_theta_sign: f64,
     /// Alg. 2: HINGE if `mu F_z < |F_x|` (true) or `mu F_z >= |F_x|`.
     pub a2_hinge_lt: bool,
+    /// Alg. 2: the hinge test's coefficient of `mu F_z` (printed 1).
+    pub a2_hinge_mu: f64,
     /// Alg. 2: the slide choice after the hinge test is a separate `if` (false) or its `else`.
     pub a2_slide_is_else: bool,
     /// Alg. 2: `assert` read as an assignment (true, the last wins) or a return.
@@ -113,6 +109,8 @@ pub struct Doc {
     pub a2_free_sign: f64,
     /// Alg. 3, 4: the hinge test applies while C slips (true) or once it stopped.
     pub slide_hinge_while_slipping: bool,
+    /// Alg. 3, 4: the hinge test's coefficient of `mu F_z`, `mu F_z >= |F_x|` (printed 1).
+    pub slide_hinge_mu: f64,
     /// Alg. 3, 4: a failed hinge test goes to the other slide (true) or the same one.
     pub slide_to_other: bool,
     /// Alg. 3, 4: the new slide's `F_z <= 0` -> ABORT (true) or FLIGHT.
@@ -126,57 +124,63 @@ pub struct Doc {
     pub sequence_located: bool,
 }
 
-impl Doc {
-    /// The statements as printed.
-    pub const PRINTED: Doc = Doc {
-        flight_rate: 1.0,
-        flight_gravity: 1.0,
-        c3_general: true,
-        c6_plate: 1.0,
-        c6_spring: 1.0,
-        c6_conservation: true,
-        c9_mu: -1.0,
-        c11_mu: 1.0,
-        c14_w2: -1.0,
-        c15_sign: -1.0,
-        c15_axis: [0.0, 0.0, 1.0],
-        reset_offset_rad: 0.0,
-        s43_p_vertical: true,
-        c10_x: 1.0,
-        c13_x: -1.0,
-        c14_xc_w2: -1.0,
-        c12_printed: false,
-        pivot_two_dof: true,
-        t1_left_v: -1.0,
-        t1_right_v: -1.0,
-        a1_right: Test {
-            fx_sign: 1.0,
-            greater: true,
-        },
-        a1_left: Test {
-            fx_sign: -1.0,
-            greater: true,
-        },
-        a1_flight_positive: true,
-        a1_vertical_flight: true,
-        abort_absolute: true,
-        a2_tan_abs: false,
-        rcp_from_c: true,
-        a2_impulse_if_nonnegative: true,
-        a2_theta_sign: 1.0,
-        a2_hinge_lt: true,
-        a2_slide_is_else: false,
-        last_assert_wins: true,
-        a2_left_if_fx_positive: true,
-        a2_tension_flight: true,
-        a2_dead_branch: true,
-        a2_test_before_assign: true,
-        a2_free_sign: -1.0,
-        slide_hinge_while_slipping: true,
-        slide_to_other: true,
-        slide_abort: true,
-        slide_flight_on_fx: true,
-        sequence_rtols: [1e-10, 1e-8],
-        sequence_located: true,
-    };
-}
+/// The statements as printed.
+pub const PRINTED: Statements = Statements {
+    flight_rate: 1.0,
+    flight_gravity: 1.0,
+    c3_general: true,
+    c6_plate: 1.0,
+    c6_spring: 1.0,
+    c6_conservation: true,
+    c9_mu: -1.0,
+    c11_mu: 1.0,
+    c14_w2: -1.0,
+    c15_sign: -1.0,
+    c15_axis: [0.0, 0.0, 1.0],
+    s44_every_collision: true,
+    reset_factor: 1.0,
+    reset_offset_rad: 0.0,
+    s43_p_vertical: true,
+    c10_x: 1.0,
+    c13_x: -1.0,
+    c14_xc_w2: -1.0,
+    c12_printed: false,
+    pivot_two_dof: true,
+    s43_dof: 2.0,
+    t1_left_v: -1.0,
+    t1_right_v: -1.0,
+    a1_right: Test {
+        fx_sign: 1.0,
+        greater: true,
+        mu_coef: 1.0,
+    },
+    a1_left: Test {
+        fx_sign: -1.0,
+        greater: true,
+        mu_coef: 1.0,
+    },
+    a1_flight_positive: true,
+    a1_vertical_flight: true,
+    abort_absolute: true,
+    a2_tan_abs: false,
+    a2_tan_mu: 1.0,
+    rcp_from_c: true,
+    a2_impulse_if_nonnegative: true,
+    a2_theta_sign: 1.0,
+    a2_hinge_lt: true,
+    a2_hinge_mu: 1.0,
+    a2_slide_is_else: false,
+    last_assert_wins: true,
+    a2_left_if_fx_positive: true,
+    a2_tension_flight: true,
+    a2_dead_branch: true,
+    a2_test_before_assign: true,
+    a2_free_sign: -1.0,
+    slide_hinge_while_slipping: true,
+    slide_hinge_mu: 1.0,
+    slide_to_other: true,
+    slide_abort: true,
+    slide_flight_on_fx: true,
+    sequence_rtols: [1e-10, 1e-8],
+    sequence_located: true,
+};
