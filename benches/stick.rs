@@ -119,7 +119,8 @@ fn lorenz(y: [f64; 3]) -> [f64; 3] {
 
 /// `n` classical RK4 steps of size `h` on the Lorenz system: the fixed reference kernel.
 fn lorenz_rk4(mut y: [f64; 3], h: f64, n: usize) -> [f64; 3] {
-    let add = |a: [f64; 3], b: [f64; 3], s: f64| [a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]];
+    let add =
+        |a: [f64; 3], b: [f64; 3], s: f64| [a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]];
     for _ in 0..n {
         let k1 = lorenz(y);
         let k2 = lorenz(add(y, k1, h / 2.0));
