@@ -174,8 +174,8 @@ impl StepControl {
         }
     }
 
-    /// The range of `rtol` the methods accept: a relative error below the round-off
-    /// unit cannot be met, one above 1 is no control.
+    /// The range of `rtol` the methods accept (0: absolute control only, with
+    /// `atol > 0`; above 1 the control would accept any step).
     pub const RTOL_RANGE: (f64, f64) = (0.0, 1.0);
 
     /// Is every number in range? `rtol` in [0, 1], `atol` finite and >= 0, not both
