@@ -18,6 +18,9 @@ pub struct Integrator<const N: usize> {
     /// The step-size suggestion, the first-same-as-last derivative and the last
     /// accepted step, lent to the caller by [`Integrator::step`].
     mem: Memory<N>,
+    /// The control it was checked for, and the verdict ([`StepControl::check`]):
+    /// checked again only when `control` has been changed since.
+    checked: (StepControl, Result<(), OdeError>),
 }
 
 impl<const N: usize> Integrator<N> {
@@ -31,6 +34,7 @@ impl<const N: usize> Integrator<N> {
             stats: Stats::default(),
             stepper: Chosen::new(method),
             mem: Memory::default(),
+            checked: (control, control.check()),
         }
     }
 
@@ -50,7 +54,10 @@ impl<const N: usize> Integrator<N> {
         y: &[f64; N],
         t_max: f64,
     ) -> Result<&Step<N>, OdeError> {
-        self.control.check()?;
+        if self.control != self.checked.0 {
+            self.checked = (self.control, self.control.check());
+        }
+        self.checked.1?;
         let f0 = self.mem.deriv(&mut self.stats, sys, t, y);
         self.mem.last.f0 = f0;
         if !finite(&f0) || !finite(y) {
