@@ -6,6 +6,11 @@
 //! cycles ("elements") per second. Chapter 8's stick with inertia runs in the same binary
 //! (group `stick_inertia`): the default scene with a uniform rod of 1 % of the tip mass,
 //! the same tolerance and driver, so the two models' speeds are a ratio of one run.
+//!
+//! Group `reference` is a fixed numeric kernel written here and nothing else (a classical
+//! RK4 on the Lorenz system, 20,000 steps of 1e-3 s): no workbook code, so it changes only
+//! with the machine's load. The number to compare across commits is the ratio of the
+//! chapter 6 run (`stick/jamming_30_cycles_rtol1e-10_dop853`) to it, measured in one run.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use locomotion_workbook::numerics::hybrid::Options;
@@ -103,5 +108,38 @@ fn stick_inertia(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, stick, stick_inertia);
+/// Lorenz flow (sigma = 10, rho = 28, beta = 8/3), dimensionless.
+fn lorenz(y: [f64; 3]) -> [f64; 3] {
+    [
+        10.0 * (y[1] - y[0]),
+        y[0] * (28.0 - y[2]) - y[1],
+        y[0] * y[1] - 8.0 / 3.0 * y[2],
+    ]
+}
+
+/// `n` classical RK4 steps of size `h` on the Lorenz system: the fixed reference kernel.
+fn lorenz_rk4(mut y: [f64; 3], h: f64, n: usize) -> [f64; 3] {
+    let add =
+        |a: [f64; 3], b: [f64; 3], s: f64| [a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]];
+    for _ in 0..n {
+        let k1 = lorenz(y);
+        let k2 = lorenz(add(y, k1, h / 2.0));
+        let k3 = lorenz(add(y, k2, h / 2.0));
+        let k4 = lorenz(add(y, k3, h));
+        for i in 0..3 {
+            y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        }
+    }
+    y
+}
+
+fn reference(c: &mut Criterion) {
+    let mut g = c.benchmark_group("reference");
+    g.bench_function("lorenz_rk4_20000_steps", |b| {
+        b.iter(|| black_box(lorenz_rk4(black_box([1.0, 1.0, 1.0]), 1e-3, 20_000)))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, reference, stick, stick_inertia);
 criterion_main!(benches);

@@ -119,7 +119,7 @@ pub fn horizontal_section(
     quick: bool,
     law_factor: f64,
 ) -> Vec<HorizontalRow> {
-    use crate::report::{Check, Claim, Verdict};
+    use crate::report::{Check, Claim};
     let ks = if quick {
         crate::sweep::logspace(1.5, 100.0, 4)
     } else {
@@ -163,15 +163,12 @@ pub fn horizontal_section(
     // are well under 1 % there.
     let (e_lim, _, v_lim) = horizontal_drifts(frequency_hz, 100.0, mu, 0.05, g, 20);
     let err = rel(v_lim / law_factor, e_lim); // formula: v = F/c, c scaled by law_factor
-    r.claim(Claim::judged(
+    r.claim(Claim::draft(
+        Check::SecondMethod,
         "viscous-law-economy",
         "3.1.1",
         "Approximation: under horizontal dither the effective viscous law F = c v, c = 2 μ m g/(π V), reproduces the exact drift within 1 % in the limit Γₓ = δₓ ω²/(μ g) >> 1 and small bias; at Γₓ = 100, b = 0.05 (relative error)",
-        0.0,
-        err,
-        0.01,
-        err < 0.01,
-        Verdict::Approximation,
-    ).with_check(Check::SecondMethod));
+    )
+    .values(0.0, err, 0.01).approximation_if(err < 0.01));
     rows
 }

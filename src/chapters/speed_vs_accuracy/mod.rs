@@ -11,14 +11,17 @@
 //! - Economy: the flight-map law and the document's `mu_eff = v_ave/v_z` against the
 //!   exact simulation: where within 1 %, and how much cheaper.
 
+pub mod block_part;
 pub mod block_scene;
-pub mod doc;
 pub mod economy;
 pub mod failures;
 pub mod figures;
 pub mod measure;
 pub mod missed_event;
+pub mod mutations;
 pub mod report_parts;
+pub mod setup;
+pub mod statements;
 pub mod stick_methods;
 pub mod stick_methods_report;
 pub mod stick_methods_soft;
@@ -127,12 +130,12 @@ pub fn stick_g_mps2(_ctx: &Context) -> f64 {
 
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
-    run_with(args, ctx, &doc::Doc::PRINTED)
+    run_with(args, ctx, &statements::Statements::PRINTED)
 }
 
 /// Runs the chapter with the statements `doc` (a wrong variant in the falsification
 /// tests).
-pub fn run_with(args: &Args, ctx: &Context, doc: &doc::Doc) -> Result<ChapterReport> {
+pub fn run_with(args: &Args, ctx: &Context, doc: &statements::Statements) -> Result<ChapterReport> {
     validate(args)?;
     crate::error::range(
         "--g-mps2",
@@ -158,8 +161,5 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &doc::Doc) -> Result<ChapterRep
 
 /// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
 pub fn mutations() -> Vec<crate::report::Mutation> {
-    let mut all = doc::mutations();
-    all.push(missed_event::mutation());
-    all.extend(stick_methods_report::mutations());
-    all
+    mutations::all()
 }

@@ -328,27 +328,23 @@ pub fn claims(s: &SceneMethods, mj_order: f64) -> Vec<Claim> {
         // Moreau-Jean is first order (derivation in the chapter); the fit over the
         // ladder scatters by the event-phase term (measured 0.99 to 1.01 over T/2000 ..
         // T/8000): +-0.3 as for the block's first-order methods.
-        Claim::close(
+        Claim::draft(
+            Check::Convergence,
             "stick-methods-moreau-jean-order",
             "4, 5",
             "Moreau-Jean time-stepping of the stick (the massless rod's balance implicit over each step) converges to the event-driven mean speed at order 1 in the step h (least-squares slope over the ladder)",
-            mj_order,
-            fitted_order(mj),
-            0.3,
         )
-        .with_check(Check::Convergence),
+        .close(mj_order, fitted_order(mj), 0.3),
         // The finest rung's gap from the reference against its own Richardson estimate:
         // ratio 1 in the asymptotic range; +-0.5 for the O(h) change of the error
         // constant between the last two rungs (a wrong order p changes the ratio by the
         // factor 2^p - 1, 3 for p = 2).
-        Claim::close(
+        Claim::draft(
+            Check::Convergence,
             "stick-methods-moreau-jean-gap-within-estimate",
             "4, 5",
             "Moreau-Jean's gap from the event-driven speed at its finest step equals its own Richardson error estimate |v_h - v_2h| / (2^p - 1), p = 1 (ratio)",
-            1.0,
-            gap_over_estimate(mj, s.reference_mps, mj_order),
-            0.5,
         )
-        .with_check(Check::Convergence),
+        .close(1.0, gap_over_estimate(mj, s.reference_mps, mj_order), 0.5),
     ]
 }

@@ -81,27 +81,23 @@ pub fn soft_claims(s: &SceneMethods, order: f64) -> Vec<Claim> {
         // v_eps = 1e-6 m/s) and r - 1 <= 0.6 (its local orders in v_eps, <= 0.8, doubled
         // by v_eps ∝ ε², minus 1): 0.15, plus the range's own spread of local orders
         // 0.1: ±0.25. Order 2 is off by 0.9; the first family (v_eps ∝ ε) gives 0.4.
-        Claim::close(
+        Claim::draft(
+            Check::Convergence,
             "soft-contact-order",
             "4, 5",
             "Soft contact (normal spring k_n = m/(ε τ₀²) and damper c_n = m/(ε τ₀), friction μ F_z tanh(ẋ_C/v_ε) with v_ε = v₀ ε²) converges to the event-driven mean speed at order 1 in ε (least-squares slope over the asymptotic range: the finest rungs whose local orders agree within 0.15)",
-            order,
-            fitted,
-            0.25,
         )
-        .with_check(Check::Convergence),
+        .close(order, fitted, 0.25),
         // Ratio 1 in the asymptotic range; a true local order p' between 0.58 and 1.32
         // gives (2^p' - 1)/(2^1 - 1) in [0.5, 1.5]: ±0.5, as for Moreau-Jean (an assumed
         // order 2 divides the estimate by 3).
-        Claim::close(
+        Claim::draft(
+            Check::Convergence,
             "soft-contact-richardson-gap",
             "4, 5",
             "Soft contact's gap from the event-driven speed at its finest ε equals its own Richardson error estimate |v_ε - v_2ε| / (2^p - 1), p = 1 (ratio)",
-            1.0,
-            gap_over_estimate(&range, s.reference_mps, order),
-            0.5,
         )
-        .with_check(Check::Convergence),
+        .close(1.0, gap_over_estimate(&range, s.reference_mps, order), 0.5),
     ]
 }
 

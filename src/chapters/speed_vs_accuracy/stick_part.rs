@@ -1,9 +1,9 @@
 //! The stick's share of the chapter: work-precision of its mean speed, its failures,
 //! and the simulator's speed in drive cycles per second.
 
-use super::doc::Doc;
 use super::failures::Failure;
-use super::measure::{stick_speed, timed};
+use super::measure::{stick_speed, timed, Measured};
+use super::statements::Statements;
 use super::work_precision::{
     cheapest_json, dopri5_errors_at, error_at, fmt_err, ladder, measure, observed_order,
     rhs_evals_at, Solver, WpPoint, EVENT_DRIVEN_LABELS,
@@ -11,8 +11,37 @@ use super::work_precision::{
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
 use crate::physics::stick::{authors_scene, StickModel};
-use crate::report::{ChapterReport, Check, Claim, Verdict};
+use crate::report::{ChapterReport, Check, Claim};
 use serde_json::json;
+
+/// The stick scene of the chapter and the sizes of its runs.
+struct Stick<'a> {
+    model: StickModel,
+    /// Drive period (s).
+    period: f64,
+    /// Drive cycles per run.
+    cycles: f64,
+    /// g of the scene (m/s^2).
+    g_mps2: f64,
+    quick: bool,
+    doc: &'a Statements,
+}
+
+impl Stick<'_> {
+    /// The mean speed over the run's cycles by `opts` (and why a run broke down).
+    fn speed(&self, opts: &Options) -> (Measured, Option<String>) {
+        stick_speed(&self.model, self.cycles, opts)
+    }
+
+    /// The mean speed by DP5 at rtol = atol = `tol`, events located.
+    fn dp(&self, tol: f64) -> Measured {
+        self.speed(&Options {
+            control: StepControl::tol(tol, tol),
+            ..Options::default()
+        })
+        .0
+    }
+}
 
 /// Runs the stick ladder on the authors' scene (section 4; g = `g_mps2`) over `cycles`
 /// drive periods; adds claims and results to `r`, failures to `fails`; returns the points.
@@ -21,20 +50,42 @@ pub fn build(
     fails: &mut Vec<Failure>,
     g_mps2: f64,
     quick: bool,
-    doc: &Doc,
+    doc: &Statements,
 ) -> Vec<WpPoint> {
     let model = StickModel::new(authors_scene(g_mps2));
-    let period = model.period_s;
-    let cycles = if quick { 10.0 } else { 50.0 };
-    let repeats = if quick { 1 } else { 3 };
-    let speed = |opts: &Options| stick_speed(&model, cycles, opts);
-    let dp = |tol: f64| {
-        speed(&Options {
-            control: StepControl::tol(tol, tol),
-            ..Options::default()
-        })
-        .0
+    let st = Stick {
+        period: model.period_s,
+        model,
+        cycles: if quick { 10.0 } else { 50.0 },
+        g_mps2,
+        quick,
+        doc,
     };
+    let repeats = if quick { 1 } else { 3 };
+    let reference = reference_claim(&st, r);
+    let (steps, tols): (Vec<u32>, Vec<f64>) = if quick {
+        (vec![32, 128, 512], vec![1e-4, 1e-7, 1e-10])
+    } else {
+        (
+            vec![32, 64, 128, 256, 512, 1024, 2048],
+            (3..=12).map(|k| 10f64.powi(-k)).collect(),
+        )
+    };
+    let solvers = ladder(st.period, &steps, &tols, &[]);
+    let points = measure("stick-speed", &solvers, reference, repeats, |s| {
+        st.speed(&s.options(0).expect("hybrid")).0
+    });
+    order_claims(&st, &points, r);
+    stall_and_failures(&st, &points, (&steps, &tols), r, fails);
+    dop853_claim(&st, &points, r);
+    speed_results(&st, &points, r);
+    points
+}
+
+/// The reference (DP5 at 1e-13) and its check against the runs at 1e-11 and 1e-12;
+/// returns the reference speed (m/s).
+fn reference_claim(st: &Stick<'_>, r: &mut ChapterReport) -> f64 {
+    let (doc, dp) = (st.doc, |tol: f64| st.dp(tol));
     // Reference: DP5 at 1e-13 with located events (flight in closed form).
     let reference = dp(1e-13);
     let rel = |v: f64| ((v - reference.value) / reference.value).abs();
@@ -51,32 +102,25 @@ pub fn build(
     // The stick's flows are smooth between events located to ulps: DP5's global error
     // scales with the tolerance (measured ~1e-11 relative at 1e-11 and 1e-12), so the
     // two tightest runs agree with the reference to well under 1e-8.
-    r.claim(Claim::close(
+    r.claim(Claim::draft(
+        Check::Convergence,
         "stick-reference-converged",
         "4, 5",
         "The stick's mean speed at rtol = atol = 1e-13 (the reference) agrees with the runs at 1e-11 and 1e-12 (largest relative difference)",
-        0.0,
-        rel(d11.value).max(rel(d12.value)),
-        1e-8,
-    ).with_check(Check::Convergence));
-    let (steps, tols): (Vec<u32>, Vec<f64>) = if quick {
-        (vec![32, 128, 512], vec![1e-4, 1e-7, 1e-10])
-    } else {
-        (
-            vec![32, 64, 128, 256, 512, 1024, 2048],
-            (3..=12).map(|k| 10f64.powi(-k)).collect(),
-        )
-    };
-    let solvers = ladder(period, &steps, &tols, &[]);
-    let points = measure("stick-speed", &solvers, reference.value, repeats, |s| {
-        speed(&s.options(0).expect("hybrid")).0
-    });
+    )
+    .close(0.0, rel(d11.value).max(rel(d12.value)), 1e-8));
+    reference.value
+}
+
+/// The orders of RK4 and Euler with located events, fitted on the asymptotic range.
+fn order_claims(st: &Stick<'_>, points: &[WpPoint], r: &mut ChapterReport) {
+    let (doc, period) = (st.doc, st.period);
     // Orders fitted on the asymptotic range, with bands that the neighbouring order
     // fails: RK4 over every step whose error is above 1e-10 (100 x the round-off floor of
     // ~1e-12; already asymptotic at T/32: the error falls 16-fold per halving), |p - 4|
     // <= 0.4; Euler over h <= T/128 (at T/32 and T/64 the error has not yet begun to
     // halve: 8.6e-4 and 9.0e-4 in the full ladder), |p - 1| <= 0.3.
-    let o = observed_order(&points, "rk4-located", 1e-10);
+    let o = observed_order(points, "rk4-located", 1e-10);
     r.claim(order_claim(
         "stick-rk4-located-order",
         "RK4",
@@ -104,20 +148,33 @@ pub fn build(
     orders.insert("rk4-located".into(), json!(o));
     orders.insert("euler-located".into(), json!(o1));
     r.result("stick_observed_orders", serde_json::Value::Object(orders));
-    let err_of = |label: &str, knob: f64| error_at(&points, label, knob);
+}
+
+/// The unlocated DP5 run's stall, and the ladder's runs that broke down or that miss
+/// events.
+fn stall_and_failures(
+    st: &Stick<'_>,
+    points: &[WpPoint],
+    (steps, tols): (&[u32], &[f64]),
+    r: &mut ChapterReport,
+    fails: &mut Vec<Failure>,
+) {
+    let (doc, period) = (st.doc, st.period);
+    let err_of = |label: &str, knob: f64| error_at(points, label, knob);
     let tight = *tols.last().expect("tolerances");
-    let (loc, unloc) = dopri5_errors_at(&points, tight);
-    r.claim(Claim::exact(
+    let (loc, unloc) = dopri5_errors_at(points, tight);
+    r.claim(Claim::draft(
+        Check::Simulation,
         "stick-unlocated-events-stall",
         "4, 5",
         "Without event location Dormand-Prince's error on the stick's mean speed stalls: at the tightest tolerance it is over 100 times the located error, or the run breaks down",
-        true,
-        (unloc.is_nan() || unloc > 100.0 * loc.max(1e-15)) == doc.unlocated_stalls,
-    ).with_check(Check::Simulation));
+    )
+    .exact(true, (unloc.is_nan() || unloc > 100.0 * loc.max(1e-15)) == doc.unlocated_stalls));
     // Failures seen on the ladder: runs that broke down, and unlocated runs far off.
-    for p in &points {
+    for p in points {
         if !p.completed {
-            let why = speed(&p.solver.options(0).expect("hybrid"))
+            let why = st
+                .speed(&p.solver.options(0).expect("hybrid"))
                 .1
                 .unwrap_or_else(|| "did not complete".into());
             fails.push(Failure {
@@ -145,6 +202,12 @@ pub fn build(
             });
         }
     }
+}
+
+/// DOP853 against DP5 at rtol 1e-10 on the authors' scene.
+fn dop853_claim(st: &Stick<'_>, points: &[WpPoint], r: &mut ChapterReport) {
+    let (doc, g_mps2, cycles) = (st.doc, st.g_mps2, st.cycles);
+    let err_of = |label: &str, knob: f64| error_at(points, label, knob);
     // The stick chapter's choice of DOP853: at rtol 1e-10 both pairs must land within
     // 1e-9 of the DP5 reference at 1e-13 (an independent method: DOP853 shares no
     // stage with it), and DOP853 must do so with fewer right-hand sides.
@@ -157,25 +220,31 @@ pub fn build(
                 err_of("dop853-located", 1e-10),
             ),
             (
-                rhs_evals_at(&points, "dopri5-located", 1e-10),
-                rhs_evals_at(&points, "dop853-located", 1e-10),
+                rhs_evals_at(points, "dopri5-located", 1e-10),
+                rhs_evals_at(points, "dop853-located", 1e-10),
             ),
         )
     } else {
         dop853_against_dopri5(cycles)
     };
     let cheaper = if doc.dop853_cheaper { n8 < n5 } else { n5 < n8 };
-    r.claim(Claim::exact(
+    r.claim(Claim::draft(
+        Check::SecondMethod,
         "stick-dop853-cheaper-at-1e-10",
         "4, 5",
         &format!("On the authors' scene (main_rod.m of toshankarghosh/toothpicks) with g = {AUTHORS_G_MPS2} m/s² and {cycles} drive cycles from the static angle, and on it only (measured on this scene whatever --g-mps2): at rtol = atol = 1e-10 Dormand-Prince 8(5,3) reaches the stick's mean speed within 1e-9 of the reference with fewer right-hand-side evaluations than Dormand-Prince 5(4) (the stick chapter's default integrator rests on this)"),
-        true,
-        e5 <= 1e-9 && e8 <= 1e-9 && cheaper,
-    ).with_check(Check::SecondMethod));
+    )
+    .exact(true, e5 <= 1e-9 && e8 <= 1e-9 && cheaper));
     r.result(
         "stick_rhs_evals_at_1e-10",
         json!({"dopri5": n5, "dop853": n8, "dopri5_error": e5, "dop853_error": e8}),
     );
+}
+
+/// The simulator's speed (drive cycles per second) with each pair, and the cheapest
+/// run to 1e-6.
+fn speed_results(st: &Stick<'_>, points: &[WpPoint], r: &mut ChapterReport) {
+    let (quick, cycles) = (st.quick, st.cycles);
     // Simulator speed at rtol 1e-10 with each pair, minimum of repeats.
     for (key, method) in [
         ("stick_cycles_per_second", Method::Dop853),
@@ -185,7 +254,7 @@ pub fn build(
             method,
             ..Options::default()
         };
-        let (run, wall) = timed(if quick { 1 } else { 5 }, || speed(&opts).0);
+        let (run, wall) = timed(if quick { 1 } else { 5 }, || st.speed(&opts).0);
         r.result(
             key,
             if run.completed {
@@ -197,9 +266,8 @@ pub fn build(
     }
     r.result(
         "stick_rhs_evals_to_reach_1e-6",
-        cheapest_json(&points, &EVENT_DRIVEN_LABELS, 1e-6),
+        cheapest_json(points, &EVENT_DRIVEN_LABELS, 1e-6),
     );
-    points
 }
 
 fn knob_text(s: &Solver, period: f64) -> String {
@@ -211,17 +279,13 @@ fn knob_text(s: &Solver, period: f64) -> String {
 
 /// An order claim: the fitted slope `observed` within `band` of the order `order`.
 fn order_claim(id: &str, name: &str, order: f64, observed: f64, band: f64, range: &str) -> Claim {
-    Claim::judged(
+    Claim::draft(
+        Check::Convergence,
         id,
         "4, 5",
         &format!("{name} with located events converges at order {order} on the stick's mean speed (authors' scene): least-squares slope of log error against log step over the asymptotic range ({range}); band +-{band}, which the neighbouring orders fail"),
-        order,
-        observed,
-        band,
-        (observed - order).abs() <= band,
-        Verdict::Confirmed,
     )
-    .with_check(Check::Convergence)
+    .values(order, observed, band).confirmed_if((observed - order).abs() <= band)
 }
 
 /// g of the authors' scene in their code (m/s^2): the scene of the DOP853 claim.

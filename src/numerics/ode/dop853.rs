@@ -13,8 +13,87 @@
 // Index loops run over several arrays of the same length at once (y, k_j, out).
 #![allow(clippy::needless_range_loop)]
 
-use super::{OdeSystem, Step, Tol};
+use super::common::Tol;
+use super::pair::{self, Pair};
+use super::step::{Interp, Step};
+use super::stepper::{At, Memory, Stepper};
+use super::{OdeError, OdeSystem, Stats, StepControl};
 use std::cell::OnceCell;
+
+/// Short name for tables and JSON.
+pub(super) const NAME: &str = "dop853";
+/// Order of the solution.
+pub(super) const ORDER: u32 = 8;
+
+/// Dormand-Prince 8(5,3). Its stages are written straight into the kept step's
+/// interpolant (a trial returns only its end state, so nothing large is moved per trial).
+#[derive(Debug, Clone, Default)]
+pub(super) struct Dop853<const N: usize>;
+
+impl<const N: usize> Stepper<N> for Dop853<N> {
+    fn step<S: OdeSystem<N> + ?Sized>(
+        &mut self,
+        sys: &S,
+        at: At<'_, N>,
+        control: StepControl,
+        mem: &mut Memory<N>,
+        stats: &mut Stats,
+    ) -> Result<(), OdeError> {
+        pair::step(self, sys, at, control, mem, stats)
+    }
+}
+
+impl<const N: usize> Pair<N> for Dop853<N> {
+    const ORDER: u32 = ORDER;
+    const FAC_MIN: f64 = 1.0 / 3.0;
+    const FAC_MAX: f64 = 6.0;
+
+    /// `e^(-1/8)` as three square roots (a fifth of the cost of powf).
+    fn root(e: f64) -> f64 {
+        1.0 / e.sqrt().sqrt().sqrt() // formula: e^(-1/8)
+    }
+
+    fn trial<S: OdeSystem<N> + ?Sized>(
+        &mut self,
+        sys: &S,
+        at: &At<'_, N>,
+        h: f64,
+        tol: Tol,
+        mem: &mut Memory<N>,
+        stats: &mut Stats,
+    ) -> ([f64; N], f64) {
+        let (y1, e) = attempt(sys, at.t, at.y, &at.f0, h, tol, stages(&mut mem.last));
+        stats.rhs_evals += 11;
+        (y1, e)
+    }
+
+    /// Evaluates the end derivative now: the next step's first stage.
+    fn accept<S: OdeSystem<N> + ?Sized>(
+        &mut self,
+        sys: &S,
+        at: &At<'_, N>,
+        (t1, y1): (f64, [f64; N]),
+        mem: &mut Memory<N>,
+        stats: &mut Stats,
+    ) {
+        let f1 = sys.rhs(t1, &y1); // formula: f(t + h, y1), first stage of the next step
+        stats.rhs_evals += 1;
+        stages(&mut mem.last)[12] = f1;
+        mem.finish((at.t, at.y), (t1, y1), f1, None)
+    }
+}
+
+/// The stage buffer inside the kept step (made a DOP853 step, its continuous extension
+/// forgotten): the trial writes its stages there.
+fn stages<const N: usize>(last: &mut Step<N>) -> &mut Stages<N> {
+    if !matches!(last.interp, Interp::Dop853(_)) {
+        last.interp = Interp::Dop853(Lazy::default());
+    }
+    match &mut last.interp {
+        Interp::Dop853(lazy) => lazy.stages_for_new_step(),
+        _ => unreachable!("made a DOP853 step just above"),
+    }
+}
 
 /// Nodes `c_i` of the twelve stages and the three dense-output stages (index 0 is `c_1 = 0`).
 const C: [f64; 16] = [
@@ -257,7 +336,7 @@ pub(super) type Stages<const N: usize> = [[f64; N]; 13];
 
 /// One trial step of size `h` from `(t, y)` with `k1 = f(t, y)`: fills the stages
 /// `k[0..12]`, returns the eighth-order `y1` and the error norm (1 = at the tolerance).
-pub(super) fn attempt<S: OdeSystem<N> + ?Sized, const N: usize>(
+fn attempt<S: OdeSystem<N> + ?Sized, const N: usize>(
     sys: &S,
     t: f64,
     y: &[f64; N],

@@ -5,7 +5,82 @@
 // Index loops run over several arrays of the same length at once (y, k1..k7, r).
 #![allow(clippy::needless_range_loop)]
 
-use super::{comb, stage_arg, OdeSystem, Tol};
+use super::common::{comb, stage_arg, Tol};
+use super::pair::{self, Pair};
+use super::step::Interp;
+use super::stepper::{At, Memory, Stepper};
+use super::{OdeError, OdeSystem, Stats, StepControl};
+
+/// Short name for tables and JSON.
+pub(super) const NAME: &str = "dopri5";
+/// Order of the solution.
+pub(super) const ORDER: u32 = 5;
+
+/// Dormand-Prince 5(4) with its memory: the last trial step, before acceptance (its
+/// seventh stage and its continuous extension's coefficients).
+#[derive(Debug, Clone)]
+pub(super) struct Dopri5<const N: usize> {
+    trial: ([f64; N], [[f64; N]; 4]),
+}
+
+impl<const N: usize> Default for Dopri5<N> {
+    fn default() -> Self {
+        Dopri5 {
+            trial: ([0.0; N], [[0.0; N]; 4]),
+        }
+    }
+}
+
+impl<const N: usize> Stepper<N> for Dopri5<N> {
+    fn step<S: OdeSystem<N> + ?Sized>(
+        &mut self,
+        sys: &S,
+        at: At<'_, N>,
+        control: StepControl,
+        mem: &mut Memory<N>,
+        stats: &mut Stats,
+    ) -> Result<(), OdeError> {
+        pair::step(self, sys, at, control, mem, stats)
+    }
+}
+
+impl<const N: usize> Pair<N> for Dopri5<N> {
+    const ORDER: u32 = ORDER;
+    const FAC_MIN: f64 = 0.2;
+    const FAC_MAX: f64 = 5.0;
+
+    fn root(e: f64) -> f64 {
+        e.powf(-0.2) // formula: e^(-1/5)
+    }
+
+    fn trial<S: OdeSystem<N> + ?Sized>(
+        &mut self,
+        sys: &S,
+        at: &At<'_, N>,
+        h: f64,
+        tol: Tol,
+        _mem: &mut Memory<N>,
+        stats: &mut Stats,
+    ) -> ([f64; N], f64) {
+        let (y1, k7, r, err) = stages(sys, at.t, at.y, &at.f0, h);
+        stats.rhs_evals += 6;
+        self.trial = (k7, r);
+        (y1, error_norm(at.y, &y1, &err, tol))
+    }
+
+    /// The end derivative is the seventh stage: it becomes the next step's first.
+    fn accept<S: OdeSystem<N> + ?Sized>(
+        &mut self,
+        _sys: &S,
+        at: &At<'_, N>,
+        end: (f64, [f64; N]),
+        mem: &mut Memory<N>,
+        _stats: &mut Stats,
+    ) {
+        let (k7, r) = self.trial;
+        mem.finish((at.t, at.y), end, k7, Some(Interp::Dopri { r }));
+    }
+}
 
 // Dormand-Prince 5(4) tableau.
 const C2: f64 = 1.0 / 5.0;

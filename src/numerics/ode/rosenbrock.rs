@@ -29,7 +29,8 @@
 use super::common::{finite, initial_step, place_step, Tol};
 use super::dopri5::error_norm;
 use super::step::Interp;
-use super::{Integrator, OdeError, OdeSystem};
+use super::stepper::{At, Memory, Stepper};
+use super::{OdeError, OdeSystem, Stats, StepControl};
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::SQRT_2;
 
@@ -110,63 +111,89 @@ fn attempt<S: OdeSystem<N> + ?Sized, const N: usize>(
     (finite(&y1) && finite(&f2a) && finite(&err)).then_some((y1, f2a, err))
 }
 
-impl<const N: usize> Integrator<N> {
-    /// One accepted Rosenbrock step from `(t, y)` with `f0 = f(t, y)`: a fixed step of
-    /// `h_fixed` (when `tol` is `None`) or an error-controlled one (error per step below
-    /// `tol` in the RMS norm, steps at most `h_max`), never beyond `t + span`.
-    pub(super) fn rosenbrock<S: OdeSystem<N> + ?Sized>(
+/// Short name for tables and JSON.
+pub(super) const NAME: &str = "rosenbrock23";
+/// Order of the solution.
+pub(super) const ORDER: u32 = 2;
+
+/// Rosenbrock 2(3), fixed or error-controlled.
+#[derive(Debug, Clone, Default)]
+pub(super) struct Rosenbrock23<const N: usize>;
+
+impl<const N: usize> Stepper<N> for Rosenbrock23<N> {
+    fn step<S: OdeSystem<N> + ?Sized>(
         &mut self,
         sys: &S,
-        (t, y, f0): (f64, &[f64; N], [f64; N]),
-        span: f64,
-        tol: Option<Tol>,
-        h_fixed_or_max: f64,
+        at: At<'_, N>,
+        control: StepControl,
+        mem: &mut Memory<N>,
+        stats: &mut Stats,
     ) -> Result<(), OdeError> {
-        let (j, tv, evals) = jacobian(sys, t, y, &f0);
-        self.stats.rhs_evals += evals;
-        let mut h = match (tol, self.h_next) {
-            (None, _) => h_fixed_or_max,
-            (Some(_), Some(h)) => h.min(h_fixed_or_max),
-            (Some(tol), None) => {
-                initial_step(sys, t, y, &f0, tol, 2, &mut self.stats).min(h_fixed_or_max)
-            }
+        let (tol, h_fixed_or_max) = match control {
+            StepControl::Adaptive {
+                rtol,
+                atol,
+                h_max_s,
+            } => (Some(Tol { rtol, atol }), h_max_s),
+            StepControl::Fixed { h_s } => (None, h_s.min(at.span())),
         };
-        loop {
-            let (h_placed, t1, last) = place_step(t, span, h)?;
-            h = h_placed;
-            let trial = attempt(sys, t, y, &f0, (&j, &tv), h);
-            self.stats.rhs_evals += 2;
-            let e = match (&trial, tol) {
-                (Some((y1, _, err)), Some(tol)) => error_norm(y, y1, err, tol),
-                (Some(_), None) => 0.0,
-                (None, _) => f64::INFINITY,
-            };
-            if let (Some((y1, f2, _)), true) = (trial, e <= 1.0) {
-                if tol.is_some() && !last {
-                    // formula: h_new = h min(5, max(0.2, 0.8 e^(-1/3))) (local error O(h^3))
-                    let fac = if e == 0.0 {
-                        5.0
-                    } else {
-                        (0.8 * e.powf(-1.0 / 3.0)).clamp(0.2, 5.0)
-                    };
-                    self.h_next = Some((h * fac).min(h_fixed_or_max));
-                }
-                self.stats.accepted += 1;
-                self.finish(t, y, t1, y1, f2, Some(Interp::Hermite { f0, f1: f2 }));
-                return Ok(());
+        rosenbrock(sys, &at, tol, h_fixed_or_max, (mem, stats))
+    }
+}
+
+/// One accepted Rosenbrock step from `at`: a fixed step of `h_fixed` (when `tol` is
+/// `None`) or an error-controlled one (error per step below `tol` in the RMS norm,
+/// steps at most `h_max`), never beyond `at.t_max`.
+fn rosenbrock<S: OdeSystem<N> + ?Sized, const N: usize>(
+    sys: &S,
+    at: &At<'_, N>,
+    tol: Option<Tol>,
+    h_fixed_or_max: f64,
+    (mem, stats): (&mut Memory<N>, &mut Stats),
+) -> Result<(), OdeError> {
+    let (t, y, f0, span) = (at.t, at.y, at.f0, at.span());
+    let (j, tv, evals) = jacobian(sys, t, y, &f0);
+    stats.rhs_evals += evals;
+    let mut h = match (tol, mem.h_next) {
+        (None, _) => h_fixed_or_max,
+        (Some(_), Some(h)) => h.min(h_fixed_or_max),
+        (Some(tol), None) => initial_step(sys, t, y, &f0, tol, ORDER, stats).min(h_fixed_or_max),
+    };
+    loop {
+        let (h_placed, t1, last) = place_step(t, span, h)?;
+        h = h_placed;
+        let trial = attempt(sys, t, y, &f0, (&j, &tv), h);
+        stats.rhs_evals += 2;
+        let e = match (&trial, tol) {
+            (Some((y1, _, err)), Some(tol)) => error_norm(y, y1, err, tol),
+            (Some(_), None) => 0.0,
+            (None, _) => f64::INFINITY,
+        };
+        if let (Some((y1, f2, _)), true) = (trial, e <= 1.0) {
+            if tol.is_some() && !last {
+                // formula: h_new = h min(5, max(0.2, 0.8 e^(-1/3))) (local error O(h^3))
+                let fac = if e == 0.0 {
+                    5.0
+                } else {
+                    (0.8 * e.powf(-1.0 / 3.0)).clamp(0.2, 5.0)
+                };
+                mem.h_next = Some((h * fac).min(h_fixed_or_max));
             }
-            if tol.is_none() {
-                return Err(OdeError::NonFinite { t_s: t });
-            }
-            self.stats.rejected += 1;
-            let fac = if e.is_finite() {
-                (0.8 * e.powf(-1.0 / 3.0)).clamp(0.1, 0.9)
-            } else {
-                0.1
-            };
-            h *= fac;
-            self.h_next = Some(h);
+            stats.accepted += 1;
+            mem.finish((t, y), (t1, y1), f2, Some(Interp::Hermite { f0, f1: f2 }));
+            return Ok(());
         }
+        if tol.is_none() {
+            return Err(OdeError::NonFinite { t_s: t });
+        }
+        stats.rejected += 1;
+        let fac = if e.is_finite() {
+            (0.8 * e.powf(-1.0 / 3.0)).clamp(0.1, 0.9)
+        } else {
+            0.1
+        };
+        h *= fac;
+        mem.h_next = Some(h);
     }
 }
 

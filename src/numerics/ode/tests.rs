@@ -217,3 +217,37 @@ fn stage_arguments_of_unread_components_are_skipped_without_effect() {
         assert!((all[0] - lean[0]).abs() > 1e-6, "{m:?}: {all:?} {lean:?}");
     }
 }
+
+#[test]
+fn a_nan_or_out_of_range_tolerance_is_an_error_naming_its_range() {
+    for rtol in [f64::NAN, -1e-3, 2.0, f64::INFINITY] {
+        let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(rtol, 1e-9));
+        let e = integ
+            .integrate(&decay, 0.0, [1.0], 1.0, |_| {})
+            .unwrap_err();
+        assert!(
+            matches!(e, OdeError::InvalidControl { name: "rtol", .. }),
+            "{rtol}: {e:?}"
+        );
+        assert!(e.to_string().contains("rtol") && e.to_string().contains("[0, 1]"));
+        assert_eq!(integ.stats.rhs_evals, 0, "nothing is evaluated");
+    }
+    for (control, name) in [
+        (StepControl::tol(1e-6, f64::NAN), "atol"),
+        (StepControl::tol(0.0, 0.0), "atol"),
+        (StepControl::Fixed { h_s: f64::NAN }, "h_s"),
+        (StepControl::Fixed { h_s: 0.0 }, "h_s"),
+    ] {
+        let mut integ = Integrator::new(Method::Rk4, control);
+        let e = integ.step(&decay, 0.0, &[1.0], 1.0).unwrap_err();
+        assert!(
+            matches!(e, OdeError::InvalidControl { name: n, .. } if n == name),
+            "{control:?}: {e:?}"
+        );
+    }
+    // The edges of the range are accepted.
+    for rtol in [0.0, 1.0] {
+        let mut integ = Integrator::new(Method::Dopri5, StepControl::tol(rtol, 1e-9));
+        assert!(integ.integrate(&decay, 0.0, [1.0], 1.0, |_| {}).is_ok());
+    }
+}

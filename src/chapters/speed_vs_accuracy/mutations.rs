@@ -1,0 +1,142 @@
+//! Falsification: edits of the chapter's statements ([`Statements`]), each judged by
+//! the same checks as the printed ones (the chapter re-run, quick, with the edited
+//! statements), plus the missed-event and stick-methods mutations.
+//!
+//! A 10 % mutation (a printed number x 1.1, "10 %" in its description) flips every
+//! claim of a document section whose statement prints a number a 10 % error can move:
+//! `stiff-relaxation-explicit-blowup` (the limits 2 and 2.785, checked 5 % either
+//! side), `zeno-plate-resolved-two-ways` (the drifts' ratio 1), `flight-map-economy`
+//! (the law's coefficient 1/2), `viscous-law-economy` (c = 2 mu m g/(pi V)); and the
+//! two Zeno claims of the numerics (t_inf's factor). The others have none, for a
+//! reason each:
+//! - an integer order of convergence (`stick-rk4-located-order` 4,
+//!   `stick-euler-located-order` 1, `stick-methods-moreau-jean-order` 1,
+//!   `soft-contact-order` 1): an order off by 10 % is no order; the neighbouring
+//!   orders (off by one) are the mutations, and the bands are derived so that they fail;
+//! - a ratio whose tolerance is the estimate's own uncertainty
+//!   (`stick-methods-moreau-jean-gap-within-estimate`, `soft-contact-richardson-gap`,
+//!   ratio 1 within 0.5): the mutation is the estimate with the wrong order (a factor
+//!   3 off);
+//! - a tolerance or a step range printed as a setting, not a statement about the model
+//!   (`stick-reference-converged`, `stick-unlocated-events-stall`,
+//!   `stick-dop853-cheaper-at-1e-10`, `stick-no-missed-event`): the mutation reverses
+//!   the inequality (a loose reference, "converges", "DP5 cheaper", the uncertified
+//!   search);
+//! - the claims of section `numerics` are the workbook's own statements about its
+//!   methods, not the document's; each has its inequality reversed or its tolerance
+//!   loosened as mutation.
+
+use super::statements::Statements;
+use crate::report::{DocEdit, Mutation};
+
+/// The edits of the statements: a neighbouring order, a reversed inequality, a limit
+/// or coefficient off by 10 % or more, one per claim at least (a data table).
+const EDITS: [DocEdit<Statements>; 21] = [
+    (
+        "reference-converged",
+        "checked against DP5 at 1e-12 -> at 1e-4",
+        |d| d.reference_tol = 1e-4,
+    ),
+    (
+        "reference-convergence-study",
+        "errors shrink as the tolerance tightens -> grow",
+        |d| d.tightening_helps = false,
+    ),
+    (
+        "euler-located-order",
+        "at least first order -> at least second order",
+        |d| d.first_order = 2.0,
+    ),
+    (
+        "moreau-jean-order",
+        "at least first order -> at least second order",
+        |d| d.first_order = 2.0,
+    ),
+    (
+        "unlocated-events-stall",
+        "stalls -> converges like the located run",
+        |d| d.unlocated_stalls = false,
+    ),
+    (
+        "stiff-relaxation-explicit-blowup",
+        "Euler stable for h/tau < 2 -> < 2.2 (10 %)",
+        |d| d.euler_limit = 2.2,
+    ),
+    (
+        "stiff-relaxation-explicit-blowup",
+        "RK4 stable for h/tau < 2.785 -> < 3.06 (10 %)",
+        |d| d.rk4_limit = 1.1 * 2.785,
+    ),
+    (
+        "stiff-relaxation-explicit-blowup",
+        "Euler stable for h/tau < 2 -> < 4",
+        |d| d.euler_limit = 4.0,
+    ),
+    (
+        "stiff-relaxation-explicit-blowup",
+        "RK4 stable for h/tau < 2.785 -> < 4",
+        |d| d.rk4_limit = 4.0,
+    ),
+    (
+        "zeno-ball-stops-at-accumulation",
+        "t_inf = t1 (1 + e)/(1 - e) -> 1.1 x (10 %)",
+        |d| d.zeno_factor = 1.1,
+    ),
+    (
+        "zeno-ball-moreau-jean-rest",
+        "t_inf = t1 (1 + e)/(1 - e) -> 1.1 x (10 %)",
+        |d| d.zeno_factor = 1.1,
+    ),
+    (
+        "zeno-plate-resolved-two-ways",
+        "same drift -> Moreau-Jean 1.1 x the event-driven drift (10 %)",
+        |d| d.zeno_plate_factor = 1.1,
+    ),
+    (
+        "stick-reference-converged",
+        "checked against DP5 at 1e-11, 1e-12 -> at 1e-4",
+        |d| d.reference_tol = 1e-4,
+    ),
+    ("stick-rk4-located-order", "order 4 -> 3", |d| {
+        d.rk4_order = 3.0
+    }),
+    ("stick-rk4-located-order", "order 4 -> 5", |d| {
+        d.rk4_order = 5.0
+    }),
+    ("stick-euler-located-order", "order 1 -> 2", |d| {
+        d.euler_order = 2.0
+    }),
+    ("stick-euler-located-order", "order 1 -> 0.5", |d| {
+        d.euler_order = 0.5
+    }),
+    (
+        "stick-unlocated-events-stall",
+        "stalls -> converges like the located run",
+        |d| d.unlocated_stalls = false,
+    ),
+    (
+        "stick-dop853-cheaper-at-1e-10",
+        "DOP853 cheaper -> DP5 cheaper",
+        |d| d.dop853_cheaper = false,
+    ),
+    (
+        "flight-map-economy",
+        "v = b mu g t_f^2/(2 n T) -> 1.1 x (10 %)",
+        |d| d.flight_map_factor = 1.1,
+    ),
+    (
+        "viscous-law-economy",
+        "c = 2 mu m g/(pi V) -> 1.1 x (10 %)",
+        |d| d.viscous_factor = 1.1,
+    ),
+];
+
+/// The falsification mutations of this chapter's claims (see [`Mutation`]).
+pub fn all() -> Vec<Mutation> {
+    let mut all = Mutation::from_edits(Statements::PRINTED, EDITS, |id, d| {
+        crate::chapters::quick_claim(id, d, super::run_with)
+    });
+    all.push(super::missed_event::mutation());
+    all.extend(super::stick_methods_report::mutations());
+    all
+}
