@@ -17,6 +17,8 @@ pub use statements::{Statements, PRINTED};
 use super::Context;
 use crate::error::{check, range, Result, WorkbookError};
 use crate::physics::stick::{authors_scene, jamming_scene, StickParams};
+use crate::physics::stick_inertia::limit;
+use crate::physics::stick_inertia::run::{InertiaOutcome, InertiaRun};
 use crate::physics::stick_inertia::InertiaParams;
 use crate::report::{ChapterReport, Mutation};
 use serde_json::json;
@@ -179,14 +181,19 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
     )?;
     let mut b = StickParams::new(l, m, k, c, mu, th0, base.g_mps2, gam, f);
     b.mass_kg = m;
-    Ok((
-        InertiaParams {
-            base: b,
-            rod_mass_kg: m_r,
-            restitution: e,
-        },
-        dur,
-    ))
+    let p = InertiaParams {
+        base: b,
+        rod_mass_kg: m_r,
+        restitution: e,
+    };
+    if m_r > 0.0 && c == 0.0 && p.geometry().alpha() >= limit::ALPHA_SWITCH {
+        return Err(WorkbookError::bad_input(
+            "--damping",
+            c,
+            "above 0 (N m s/rad) for a rod this light (alpha = M l_G^2/I_G >= 1e9): its impacts lose 9 digits, and without a damper chapter 6's model is no limit to replace them",
+        ));
+    }
+    Ok((p, dur))
 }
 
 /// Runs the chapter.
@@ -198,75 +205,14 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
 pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterReport> {
     let (p, dur) = setup(args, ctx)?;
     let mut r = crate::chapters::info(ID).expect("registered").report();
-    let b = &p.base;
-    for (k, v) in [
-        ("length_m", b.length_m),
-        ("tip_mass_kg", b.mass_kg),
-        ("rod_mass_kg", p.rod_mass_kg),
-        ("stiffness_nm_per_rad", b.stiffness_nm_per_rad),
-        ("damping_nms_per_rad", b.damping_nms_per_rad),
-        ("mu", b.mu),
-        ("theta0_rad", b.theta0_rad),
-        ("gamma", b.gamma_accel()),
-        ("frequency_hz", b.frequency_hz()),
-        ("duration_s", dur),
-        ("rtol", args.rtol),
-        ("restitution", p.restitution),
-        ("g_mps2", b.g_mps2),
-    ] {
-        r.param(k, v);
-    }
+    record_params(&mut r, &p, dur, args.rtol);
     let ev = evidence::gather();
     for c in claims::all(doc, &ev, evidence::impact_energy(doc.restitution_max)) {
         r.claim(c);
     }
-    let massless = evidence::massless_speed(&p, dur, args.rtol);
-    if p.rod_mass_kg == 0.0 {
-        // m_r = 0 is chapter 6's model: its run is the run
-        r.result("mean_velocity_mps", massless);
-        r.result("outcome", "completed");
-        r.result("painleve_events", json!([]));
-        r.result("impacts", 0);
-        r.result("alpha", "infinite (massless rod)");
-        r.result("inertia_ratio", 0.0);
-    } else {
-        let run = evidence::scene_run(&p, dur, args.rtol, 0.0);
-        let geo = p.geometry();
-        r.result("mean_velocity_mps", run.mean_velocity_mps);
-        r.result("outcome", run.outcome.label());
-        if let crate::physics::stick_inertia::run::InertiaOutcome::Invalid(why) = &run.outcome {
-            r.result("outcome_reason", why.as_str());
-        }
-        let events: Vec<_> = run
-            .painleve
-            .iter()
-            .take(100)
-            .map(|e| json!({"t_s": e.t_s, "theta_rad": e.theta_rad, "mu": e.mu, "mu_p": e.mu_p, "case": e.case.name(), "slide": if e.sigma > 0.0 {"left"} else {"right"}}))
-            .collect();
-        r.result("painleve_event_count", run.painleve.len());
-        r.result("painleve_events", json!(events));
-        r.result("impacts", run.impact_count);
-        r.result("alpha", geo.alpha());
-        r.result("inertia_ratio", p.inertia_ratio());
-        r.result(
-            "energy_budget_relative_residual",
-            run.budget.relative_residual(),
-        );
-    }
-    r.result("massless_mean_velocity_mps", massless);
+    scene_results(&mut r, &p, dur, args.rtol);
     r.table("validity-map", answers::validity_table(&ev.ladders));
-    let gl = evidence::glocker_scene();
-    if let (Some(e), Some(i)) = (gl.painleve.first(), gl.impacts.first()) {
-        r.result("glocker_painleve_time_s", e.t_s);
-        r.result("glocker_painleve_theta_rad", e.theta_rad);
-        r.result("glocker_iwc_impulse_ns", json!([i.j_t_ns, i.j_n_ns]));
-    }
-    r.result("glocker_outcome", gl.outcome.label());
-    let tooth = answers::toothpicks(if ctx.quick { 2.0 } else { 10.0 });
-    if let Some(t) = tooth.iter().find(|t| t.spring && t.scene == "self-locking") {
-        r.result("toothpick_mean_velocity_mps", t.speed_mps);
-    }
-    r.table("toothpick", answers::toothpick_table(&tooth));
+    answer_results(&mut r, ctx);
     let map = answers::painleve_map(
         if ctx.quick { 5 } else { 12 },
         if ctx.quick { 0.5 } else { 1.0 },
@@ -279,6 +225,108 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
         r.figures.extend(figures::gaits(&dir)?);
     }
     Ok(r)
+}
+
+/// The run's parameters into the report.
+fn record_params(r: &mut ChapterReport, p: &InertiaParams, dur: f64, rtol: f64) {
+    let b = &p.base;
+    for (k, v) in [
+        ("length_m", b.length_m),
+        ("tip_mass_kg", b.mass_kg),
+        ("rod_mass_kg", p.rod_mass_kg),
+        ("stiffness_nm_per_rad", b.stiffness_nm_per_rad),
+        ("damping_nms_per_rad", b.damping_nms_per_rad),
+        ("mu", b.mu),
+        ("theta0_rad", b.theta0_rad),
+        ("gamma", b.gamma_accel()),
+        ("frequency_hz", b.frequency_hz()),
+        ("duration_s", dur),
+        ("rtol", rtol),
+        ("restitution", p.restitution),
+        ("g_mps2", b.g_mps2),
+    ] {
+        r.param(k, v);
+    }
+}
+
+/// The scene's run: chapter 6's model for `m_r = 0`, the singular-perturbation composite
+/// for a rod too light for the full model's impacts, the full model otherwise.
+fn scene_results(r: &mut ChapterReport, p: &InertiaParams, dur: f64, rtol: f64) {
+    let massless = evidence::massless_speed(p, dur, rtol);
+    if p.rod_mass_kg == 0.0 {
+        // m_r = 0 is chapter 6's model: its run is the run
+        r.result("mean_velocity_mps", massless);
+        r.result("method", "massless (chapter 6)");
+        r.result("outcome", "completed");
+        r.result("painleve_events", json!([]));
+        r.result("impacts", 0);
+        r.result("alpha", "infinite (massless rod)");
+        r.result("inertia_ratio", 0.0);
+    } else if limit::uses_composite(p) {
+        let c = limit::composite(p, dur, &evidence::options(rtol));
+        r.result("mean_velocity_mps", c.mean_velocity_mps);
+        r.result(
+            "method",
+            "singular perturbation (chapter 6's run + first-order correction)",
+        );
+        r.result("massless_limit_error_bound_mps", c.error_bound_mps);
+        r.result("reference_rod_mass_kg", c.reference_rod_kg);
+        full_run_results(r, &c.reference, "reference_");
+        r.result("alpha", p.geometry().alpha());
+        r.result("inertia_ratio", p.inertia_ratio());
+    } else {
+        let run = evidence::scene_run(p, dur, rtol, 0.0);
+        r.result("mean_velocity_mps", run.mean_velocity_mps);
+        r.result("method", "event-driven (full model)");
+        full_run_results(r, &run, "");
+        r.result("alpha", p.geometry().alpha());
+        r.result("inertia_ratio", p.inertia_ratio());
+        r.result(
+            "energy_budget_relative_residual",
+            run.budget.relative_residual(),
+        );
+    }
+    r.result("massless_mean_velocity_mps", massless);
+}
+
+/// Outcome, Painleve events and impacts of a full-model run, keys prefixed by `pre`
+/// (the composite reports its reference run's under `reference_`, and its own outcome).
+fn full_run_results(r: &mut ChapterReport, run: &InertiaRun, pre: &str) {
+    r.result("outcome", run.outcome.label());
+    if let InertiaOutcome::Invalid(why) = &run.outcome {
+        r.result("outcome_reason", why.as_str());
+    }
+    let events: Vec<_> = run
+        .painleve
+        .iter()
+        .take(100)
+        .map(|e| json!({"t_s": e.t_s, "theta_rad": e.theta_rad, "mu": e.mu, "mu_p": e.mu_p, "case": e.case.name(), "slide": if e.sigma > 0.0 {"left"} else {"right"}}))
+        .collect();
+    r.result(&format!("{pre}painleve_event_count"), run.painleve.len());
+    r.result(&format!("{pre}painleve_events"), json!(events));
+    r.result(&format!("{pre}impacts"), run.impact_count);
+    if !pre.is_empty() {
+        // the composite has no events of its own: the outer (massless) model has none
+        r.result("painleve_events", json!([]));
+        r.result("impacts", run.impact_count);
+    }
+}
+
+/// The chapter's answers that do not depend on the flags: the Glocker scene and the
+/// toothpick.
+fn answer_results(r: &mut ChapterReport, ctx: &Context) {
+    let gl = evidence::glocker_scene();
+    if let (Some(e), Some(i)) = (gl.painleve.first(), gl.impacts.first()) {
+        r.result("glocker_painleve_time_s", e.t_s);
+        r.result("glocker_painleve_theta_rad", e.theta_rad);
+        r.result("glocker_iwc_impulse_ns", json!([i.j_t_ns, i.j_n_ns]));
+    }
+    r.result("glocker_outcome", gl.outcome.label());
+    let tooth = answers::toothpicks(if ctx.quick { 2.0 } else { 10.0 });
+    if let Some(t) = tooth.iter().find(|t| t.spring && t.scene == "self-locking") {
+        r.result("toothpick_mean_velocity_mps", t.speed_mps);
+    }
+    r.table("toothpick", answers::toothpick_table(&tooth));
 }
 
 /// The claim `id` judged against the statements `doc` (quick, headless, default flags).
