@@ -10,6 +10,7 @@ mod answers;
 mod claims;
 mod evidence;
 mod figures;
+mod gif;
 mod statements;
 
 pub use statements::{Statements, PRINTED};
@@ -223,6 +224,7 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
         r.figures.extend(figures::validity_map(&ev, &dir)?);
         r.figures.extend(figures::painleve_map(&map, &dir)?);
         r.figures.extend(figures::gaits(&dir)?);
+        r.figures.extend(gif::write(&dir)?);
     }
     Ok(r)
 }
