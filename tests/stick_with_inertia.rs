@@ -26,8 +26,9 @@ fn claims_pass_and_falsification_mutations_flip_every_claim() {
     let muts = chapters::mutations("stick-with-inertia");
     for c in r.claims.iter().filter(|c| c.check != Check::Consistency) {
         assert!(
-            muts.iter().any(|m| m.claim_id == c.id),
-            "no mutation for {}",
+            muts.iter()
+                .any(|m| m.claim_id == c.id && m.description.contains("10 %")),
+            "no 10 % mutation for {}",
             c.id
         );
     }
@@ -234,9 +235,10 @@ fn moreau_jean_converges_on_the_authors_scene_with_the_same_impact_law() {
 }
 
 /// Where both can run (alpha = 3e7 and 3e8, above the reference's 1e6 and below the
-/// switch), the singular-perturbation composite and the full model agree to 2e-10 of the
-/// speed: the full model's own rounding at alpha = 3e8 (measured 1.1e-10), far above the
-/// composite's bound (about 1e-15 m/s).
+/// switch), the singular-perturbation composite and the full model agree to the full
+/// model's own rounding, 0.03 u alpha of the speed (u = 2.2e-16; measured 5.6e-10 at
+/// alpha = 3e8 over 2 s), ten times the composite's own bound (at most 3e-12 m/s) and below
+/// the first-order correction c_1 eps that separates both from chapter 6's model.
 #[test]
 fn massless_limit_composite_agrees_with_the_full_model_where_both_run() {
     use locomotion_workbook::physics::stick_inertia::limit::composite;
@@ -249,14 +251,19 @@ fn massless_limit_composite_agrees_with_the_full_model_where_both_run() {
             };
             let c = composite(&p, 2.0, &opts());
             let full = run_from_rest(&InertiaModel::new(p), 2.0, &opts(), 0.0).mean_velocity_mps;
-            assert!(c.x < 0.1 && c.error_bound_mps < 1e-12, "{c:?}");
+            let tol = 0.03 * f64::EPSILON * p.geometry().alpha() * full.abs();
             assert!(
-                (c.mean_velocity_mps - full).abs() <= 2e-10 * full.abs(),
-                "{m_r}: composite {} full {full}",
+                c.x < 0.1 && c.error_bound_mps < 0.1 * tol,
+                "{:?}",
+                (c.x, c.error_bound_mps)
+            );
+            assert!(
+                (c.mean_velocity_mps - full).abs() <= tol,
+                "{m_r}: composite {} full {full} tol {tol}",
                 c.mean_velocity_mps
             );
             // and the correction is resolved: the composite is not chapter 6's speed
-            assert!((c.mean_velocity_mps - c.massless_mps).abs() > 10.0 * 2e-10 * full.abs());
+            assert!((c.mean_velocity_mps - c.massless_mps).abs() > tol);
         }
     }
 }

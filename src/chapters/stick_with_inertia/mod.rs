@@ -4,13 +4,16 @@
 //! simulated slide, the impacts' energy, and sets the scene's gait beside chapter 6's.
 //!
 //! Shape: `statements.rs` (the statements as data), `evidence.rs` (the runs, once),
-//! `claims.rs` (pure functions of both), `figures.rs`; this file: flags and orchestration.
+//! `claims.rs` (pure functions of both), `figures.rs`, `gif.rs`, `answers.rs` (the
+//! chapter's measured answers), `mutations.rs` (10 % edits of the statements); this
+//! file: flags and orchestration.
 
 mod answers;
 mod claims;
 mod evidence;
 mod figures;
 mod gif;
+mod mutations;
 mod statements;
 
 pub use statements::{Statements, PRINTED};
@@ -90,6 +93,28 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
         Scene::Jamming => jamming_scene(ctx.g_mps2.unwrap_or(Context::G_DEFAULT_MPS2)),
     };
     crate::chapters::check_g(base.g_mps2)?;
+    let (l, m, m_r) = length_and_masses(args, &base)?;
+    let (k, c, mu, th0) = spring_and_contact(args, &base, m_r)?;
+    let (gam, f, dur, e) = drive_and_run(args, &base, ctx)?;
+    let mut b = StickParams::new(l, m, k, c, mu, th0, base.g_mps2, gam, f);
+    b.mass_kg = m;
+    let p = InertiaParams {
+        base: b,
+        rod_mass_kg: m_r,
+        restitution: e,
+    };
+    if m_r > 0.0 && c == 0.0 && p.geometry().alpha() >= limit::ALPHA_SWITCH {
+        return Err(WorkbookError::bad_input(
+            "--damping",
+            c,
+            "above 0 (N m s/rad) for a rod this light (alpha = M l_G^2/I_G >= 1e9): its impacts lose 9 digits, and without a damper chapter 6's model is no limit to replace them",
+        ));
+    }
+    Ok((p, dur))
+}
+
+/// `--length-m`, `--tip-mass-kg`, `--rod-mass-kg` (m, kg, kg).
+fn length_and_masses(args: &Args, base: &StickParams) -> Result<(f64, f64, f64)> {
     let box10 = "within a factor 10 of the authors' stick, as in stick-state-machine";
     let l = range(
         "--length-m",
@@ -110,6 +135,11 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
             "m + m_r >= 1e-3 kg (kg): a lighter stick makes the pivot's time scale I_C/gamma shorter than the explicit integrator can follow at the drive's step",
         ));
     }
+    Ok((l, m, m_r))
+}
+
+/// `--stiffness`, `--damping`, `--mu`, `--theta0-rad` (N m/rad, N m s/rad, 1, rad).
+fn spring_and_contact(args: &Args, base: &StickParams, m_r: f64) -> Result<(f64, f64, f64, f64)> {
     let k = range(
         "--stiffness",
         args.stiffness.unwrap_or(base.stiffness_nm_per_rad),
@@ -143,6 +173,11 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
         |v| v.abs() < std::f64::consts::FRAC_PI_2,
         "-pi/2 < value < pi/2 (rad)",
     )?;
+    Ok((k, c, mu, th0))
+}
+
+/// `--gamma`, `--frequency-hz`, `--duration-s`, `--rtol` (checked), `--restitution`.
+fn drive_and_run(args: &Args, base: &StickParams, ctx: &Context) -> Result<(f64, f64, f64, f64)> {
     let gam = range(
         "--gamma",
         args.gamma.unwrap_or(base.gamma_accel()),
@@ -180,21 +215,7 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
         "1",
         "Stronge's energetic coefficient: above 1 an impact would create energy",
     )?;
-    let mut b = StickParams::new(l, m, k, c, mu, th0, base.g_mps2, gam, f);
-    b.mass_kg = m;
-    let p = InertiaParams {
-        base: b,
-        rod_mass_kg: m_r,
-        restitution: e,
-    };
-    if m_r > 0.0 && c == 0.0 && p.geometry().alpha() >= limit::ALPHA_SWITCH {
-        return Err(WorkbookError::bad_input(
-            "--damping",
-            c,
-            "above 0 (N m s/rad) for a rod this light (alpha = M l_G^2/I_G >= 1e9): its impacts lose 9 digits, and without a damper chapter 6's model is no limit to replace them",
-        ));
-    }
-    Ok((p, dur))
+    Ok((gam, f, dur, e))
 }
 
 /// Runs the chapter.
@@ -331,54 +352,7 @@ fn answer_results(r: &mut ChapterReport, ctx: &Context) {
     r.table("toothpick", answers::toothpick_table(&tooth));
 }
 
-/// The claim `id` judged against the statements `doc` (quick, headless, default flags).
-fn judge(id: &str, doc: &Statements) -> crate::report::Claim {
-    static EVIDENCE: std::sync::OnceLock<evidence::Evidence> = std::sync::OnceLock::new();
-    let ev = EVIDENCE.get_or_init(evidence::gather);
-    let gain = if id == "impacts-dissipate" {
-        evidence::impact_energy(doc.restitution_max)
-    } else {
-        (0.0, 1.0, 1)
-    };
-    claims::all(doc, ev, gain)
-        .into_iter()
-        .find(|c| c.id == id)
-        .expect("claim id of this chapter")
-}
-
-/// Falsification: each statement off by 10 %.
+/// Falsification: each statement's printed number off by 10 % ([`mutations`]).
 pub fn mutations() -> Vec<Mutation> {
-    let edits: Vec<crate::report::DocEdit<Statements>> = vec![
-        ("impulse-ratio-uniform", "3q/(4+q^2) -> 3.3q/(4+q^2)", |d| {
-            d.uniform_num = 3.3
-        }),
-        ("impulse-ratio-massless", "q -> 1.1 q", |d| {
-            d.massless_factor = 1.1
-        }),
-        (
-            "impulse-ratio-between",
-            "alpha q/(1+alpha+q^2) -> 1.1 x",
-            |d| d.between_scale = 1.1,
-        ),
-        ("painleve-boundary", "mu_P -> 1.1 mu_P", |d| {
-            d.painleve_scale = 1.1
-        }),
-        ("painleve-minimum-uniform", "4/3 -> 1.1 x 4/3", |d| {
-            d.painleve_min = 1.1 * 4.0 / 3.0
-        }),
-        ("painleve-minimum-angle", "atan(1/2) -> atan(0.55)", |d| {
-            d.painleve_min_tan = 0.55
-        }),
-        ("impacts-dissipate", "e <= 1 -> e = 1.1", |d| {
-            d.restitution_max = 1.1
-        }),
-        ("massless-limit", "order 1 -> 1.1", |d| {
-            d.massless_order = 1.1
-        }),
-        ("moreau-jean", "order 1 -> 1.1", |d| d.mj_order = 1.1),
-        ("painleve-compliant-limit", "rule's impulse -> 1.1 x", |d| {
-            d.iwc_scale = 1.1
-        }),
-    ];
-    Mutation::from_edits(PRINTED, edits, judge)
+    mutations::all()
 }
