@@ -295,7 +295,12 @@ fn scene_results(r: &mut ChapterReport, p: &InertiaParams, dur: f64, rtol: f64) 
         r.result("massless_limit_error_bound_mps", c.error_bound_mps);
         r.result("reference_rod_mass_kg", c.reference_rod_kg);
         full_run_results(r, &c.reference, "reference_");
-        r.result("alpha", p.geometry().alpha());
+        let alpha = p.geometry().alpha();
+        if alpha.is_finite() {
+            r.result("alpha", alpha);
+        } else {
+            r.result("alpha", "above 1e308 (a rod of the smallest doubles)");
+        }
         r.result("inertia_ratio", p.inertia_ratio());
     } else {
         let run = evidence::scene_run(p, dur, rtol, 0.0);

@@ -81,9 +81,9 @@ pub struct Composite {
 
 /// The composite for `p` (a rod lighter than the reference) over `duration_s`.
 pub fn composite(p: &InertiaParams, duration_s: f64, opts: &Options) -> Composite {
-    let alpha = p.geometry().alpha();
-    // alpha ~ 3 M/m_r for a light rod: the reference rod is heavier by alpha/ALPHA_REF
-    let m_ref = p.rod_mass_kg * alpha / ALPHA_REF;
+    // alpha -> 3 M/m_r for a light rod (l_G -> L, I_G -> m_r L^2/3); taken from the
+    // limit, not from alpha itself, which overflows for m_r near the smallest doubles
+    let m_ref = 3.0 * (p.base.mass_kg + p.rod_mass_kg) / ALPHA_REF; // formula: alpha(m_ref) ~ ALPHA_REF
     let at = |m_r: f64| InertiaParams {
         rod_mass_kg: m_r,
         ..*p
