@@ -105,22 +105,16 @@ pub fn painleve_map(map: &[Vec<super::answers::MapCell>], dir: &Path) -> Result<
 /// A curve: (x, y) points.
 type Curve = Vec<(f64, f64)>;
 
-/// `gaits`: the foot's position and height over four drive cycles of the self-locking
-/// scene, for the massless model (chapter 6), a 1 kg tip on a 10 g rod, and a uniform
-/// 1 kg stick (with chapter 6's spring and damper).
-pub fn gaits(dir: &Path) -> Result<Vec<String>> {
-    use crate::numerics::hybrid::Options;
+/// Chapter 6's massless rod on the self-locking scene from rest to `t_end` (s), sampled
+/// every `dt` (s): label, foot x (mm) and foot height above the plate (mm) against drive cycles.
+fn massless_gait(
+    t_end: f64,
+    dt: f64,
+    opts: &crate::numerics::hybrid::Options,
+) -> (String, Curve, Curve) {
     use crate::physics::stick::jamming_scene;
     use crate::physics::stick::run::{initial_state, simulate_stick, Recording};
     use crate::physics::stick::StickModel;
-    use crate::physics::stick_inertia::{InertiaParams, XC, ZC};
-    let t_end = 4.0 / 30.0;
-    let dt = t_end / 800.0;
-    let opts = Options {
-        record_events: false,
-        ..super::evidence::options(1e-10)
-    };
-    let mut series: Vec<(String, Curve, Curve)> = Vec::new();
     let b6 = jamming_scene(9.81);
     let m6 = StickModel::new(b6);
     let y6 = initial_state(&m6, 0.0, b6.static_angle().unwrap_or(b6.theta0_rad));
@@ -128,7 +122,7 @@ pub fn gaits(dir: &Path) -> Result<Vec<String>> {
         trace_dt_s: dt,
         ..Recording::default()
     };
-    let s6 = simulate_stick(&m6, 0.0, y6, t_end, &opts, rec);
+    let s6 = simulate_stick(&m6, 0.0, y6, t_end, opts, rec);
     let pick6 = |k: usize| -> Vec<(f64, f64)> {
         s6.trace
             .iter()
@@ -145,11 +139,28 @@ pub fn gaits(dir: &Path) -> Result<Vec<String>> {
             })
             .collect()
     };
-    series.push((
+    (
         "massless rod, 1 kg at P (chapter 6)".into(),
         pick6(crate::physics::stick::XC),
         pick6(crate::physics::stick::ZC),
-    ));
+    )
+}
+
+/// `gaits`: the foot's position and height over four drive cycles of the self-locking
+/// scene, for the massless model (chapter 6), a 1 kg tip on a 10 g rod, and a uniform
+/// 1 kg stick (with chapter 6's spring and damper).
+pub fn gaits(dir: &Path) -> Result<Vec<String>> {
+    use crate::numerics::hybrid::Options;
+    use crate::physics::stick::jamming_scene;
+    use crate::physics::stick_inertia::{InertiaParams, XC, ZC};
+    let t_end = 4.0 / 30.0;
+    let dt = t_end / 800.0;
+    let opts = Options {
+        record_events: false,
+        ..super::evidence::options(1e-10)
+    };
+    let b6 = jamming_scene(9.81);
+    let mut series: Vec<(String, Curve, Curve)> = vec![massless_gait(t_end, dt, &opts)];
     for (label, m, m_r) in [
         ("1 kg at P on a 10 g rod", 1.0, 0.01),
         ("uniform 1 kg stick", 0.0, 1.0),

@@ -4,12 +4,16 @@
 //! simulated slide, the impacts' energy, and sets the scene's gait beside chapter 6's.
 //!
 //! Shape: `statements.rs` (the statements as data), `evidence.rs` (the runs, once),
-//! `claims.rs` (pure functions of both), `figures.rs`; this file: flags and orchestration.
+//! `claims.rs` (pure functions of both), `figures.rs`, `gif.rs`, `answers.rs` (the
+//! chapter's measured answers), `mutations.rs` (10 % edits of the statements); this
+//! file: flags and orchestration.
 
 mod answers;
 mod claims;
 mod evidence;
 mod figures;
+mod gif;
+mod mutations;
 mod statements;
 
 pub use statements::{Statements, PRINTED};
@@ -17,6 +21,8 @@ pub use statements::{Statements, PRINTED};
 use super::Context;
 use crate::error::{check, range, Result, WorkbookError};
 use crate::physics::stick::{authors_scene, jamming_scene, StickParams};
+use crate::physics::stick_inertia::limit;
+use crate::physics::stick_inertia::run::{InertiaOutcome, InertiaRun};
 use crate::physics::stick_inertia::InertiaParams;
 use crate::report::{ChapterReport, Mutation};
 use serde_json::json;
@@ -87,6 +93,28 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
         Scene::Jamming => jamming_scene(ctx.g_mps2.unwrap_or(Context::G_DEFAULT_MPS2)),
     };
     crate::chapters::check_g(base.g_mps2)?;
+    let (l, m, m_r) = length_and_masses(args, &base)?;
+    let (k, c, mu, th0) = spring_and_contact(args, &base, m_r)?;
+    let (gam, f, dur, e) = drive_and_run(args, &base, ctx)?;
+    let mut b = StickParams::new(l, m, k, c, mu, th0, base.g_mps2, gam, f);
+    b.mass_kg = m;
+    let p = InertiaParams {
+        base: b,
+        rod_mass_kg: m_r,
+        restitution: e,
+    };
+    if m_r > 0.0 && c == 0.0 && p.geometry().alpha() >= limit::ALPHA_SWITCH {
+        return Err(WorkbookError::bad_input(
+            "--damping",
+            c,
+            "above 0 (N m s/rad) for a rod this light (alpha = M l_G^2/I_G >= 1e9): its impacts lose 9 digits, and without a damper chapter 6's model is no limit to replace them",
+        ));
+    }
+    Ok((p, dur))
+}
+
+/// `--length-m`, `--tip-mass-kg`, `--rod-mass-kg` (m, kg, kg).
+fn length_and_masses(args: &Args, base: &StickParams) -> Result<(f64, f64, f64)> {
     let box10 = "within a factor 10 of the authors' stick, as in stick-state-machine";
     let l = range(
         "--length-m",
@@ -107,6 +135,11 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
             "m + m_r >= 1e-3 kg (kg): a lighter stick makes the pivot's time scale I_C/gamma shorter than the explicit integrator can follow at the drive's step",
         ));
     }
+    Ok((l, m, m_r))
+}
+
+/// `--stiffness`, `--damping`, `--mu`, `--theta0-rad` (N m/rad, N m s/rad, 1, rad).
+fn spring_and_contact(args: &Args, base: &StickParams, m_r: f64) -> Result<(f64, f64, f64, f64)> {
     let k = range(
         "--stiffness",
         args.stiffness.unwrap_or(base.stiffness_nm_per_rad),
@@ -140,6 +173,11 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
         |v| v.abs() < std::f64::consts::FRAC_PI_2,
         "-pi/2 < value < pi/2 (rad)",
     )?;
+    Ok((k, c, mu, th0))
+}
+
+/// `--gamma`, `--frequency-hz`, `--duration-s`, `--rtol` (checked), `--restitution`.
+fn drive_and_run(args: &Args, base: &StickParams, ctx: &Context) -> Result<(f64, f64, f64, f64)> {
     let gam = range(
         "--gamma",
         args.gamma.unwrap_or(base.gamma_accel()),
@@ -177,16 +215,7 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
         "1",
         "Stronge's energetic coefficient: above 1 an impact would create energy",
     )?;
-    let mut b = StickParams::new(l, m, k, c, mu, th0, base.g_mps2, gam, f);
-    b.mass_kg = m;
-    Ok((
-        InertiaParams {
-            base: b,
-            rod_mass_kg: m_r,
-            restitution: e,
-        },
-        dur,
-    ))
+    Ok((gam, f, dur, e))
 }
 
 /// Runs the chapter.
@@ -198,6 +227,31 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
 pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterReport> {
     let (p, dur) = setup(args, ctx)?;
     let mut r = crate::chapters::info(ID).expect("registered").report();
+    record_params(&mut r, &p, dur, args.rtol);
+    let ev = evidence::gather();
+    for c in claims::all(doc, &ev, evidence::impact_energy(doc.restitution_max)) {
+        r.claim(c);
+    }
+    scene_results(&mut r, &p, dur, args.rtol);
+    r.table("validity-map", answers::validity_table(&ev.ladders));
+    answer_results(&mut r, ctx);
+    let map = answers::painleve_map(
+        if ctx.quick { 5 } else { 12 },
+        if ctx.quick { 0.5 } else { 1.0 },
+    );
+    r.table("painleve-map", answers::map_table(&map));
+    if let Some(dir) = ctx.figure_dir(ID) {
+        r.figures.extend(figures::painleve_boundary(&ev, &dir)?);
+        r.figures.extend(figures::validity_map(&ev, &dir)?);
+        r.figures.extend(figures::painleve_map(&map, &dir)?);
+        r.figures.extend(figures::gaits(&dir)?);
+        r.figures.extend(gif::write(&dir)?);
+    }
+    Ok(r)
+}
+
+/// The run's parameters into the report.
+fn record_params(r: &mut ChapterReport, p: &InertiaParams, dur: f64, rtol: f64) {
     let b = &p.base;
     for (k, v) in [
         ("length_m", b.length_m),
@@ -210,43 +264,50 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
         ("gamma", b.gamma_accel()),
         ("frequency_hz", b.frequency_hz()),
         ("duration_s", dur),
-        ("rtol", args.rtol),
+        ("rtol", rtol),
         ("restitution", p.restitution),
         ("g_mps2", b.g_mps2),
     ] {
         r.param(k, v);
     }
-    let ev = evidence::gather();
-    for c in claims::all(doc, &ev, evidence::impact_energy(doc.restitution_max)) {
-        r.claim(c);
-    }
-    let massless = evidence::massless_speed(&p, dur, args.rtol);
+}
+
+/// The scene's run: chapter 6's model for `m_r = 0`, the singular-perturbation composite
+/// for a rod too light for the full model's impacts, the full model otherwise.
+fn scene_results(r: &mut ChapterReport, p: &InertiaParams, dur: f64, rtol: f64) {
+    let massless = evidence::massless_speed(p, dur, rtol);
     if p.rod_mass_kg == 0.0 {
         // m_r = 0 is chapter 6's model: its run is the run
         r.result("mean_velocity_mps", massless);
+        r.result("method", "massless (chapter 6)");
         r.result("outcome", "completed");
         r.result("painleve_events", json!([]));
         r.result("impacts", 0);
         r.result("alpha", "infinite (massless rod)");
         r.result("inertia_ratio", 0.0);
-    } else {
-        let run = evidence::scene_run(&p, dur, args.rtol, 0.0);
-        let geo = p.geometry();
-        r.result("mean_velocity_mps", run.mean_velocity_mps);
-        r.result("outcome", run.outcome.label());
-        if let crate::physics::stick_inertia::run::InertiaOutcome::Invalid(why) = &run.outcome {
-            r.result("outcome_reason", why.as_str());
+    } else if limit::uses_composite(p) {
+        let c = limit::composite(p, dur, &evidence::options(rtol));
+        r.result("mean_velocity_mps", c.mean_velocity_mps);
+        r.result(
+            "method",
+            "singular perturbation (chapter 6's run + first-order correction)",
+        );
+        r.result("massless_limit_error_bound_mps", c.error_bound_mps);
+        r.result("reference_rod_mass_kg", c.reference_rod_kg);
+        full_run_results(r, &c.reference, "reference_");
+        let alpha = p.geometry().alpha();
+        if alpha.is_finite() {
+            r.result("alpha", alpha);
+        } else {
+            r.result("alpha", "above 1e308 (a rod of the smallest doubles)");
         }
-        let events: Vec<_> = run
-            .painleve
-            .iter()
-            .take(100)
-            .map(|e| json!({"t_s": e.t_s, "theta_rad": e.theta_rad, "mu": e.mu, "mu_p": e.mu_p, "case": e.case.name(), "slide": if e.sigma > 0.0 {"left"} else {"right"}}))
-            .collect();
-        r.result("painleve_event_count", run.painleve.len());
-        r.result("painleve_events", json!(events));
-        r.result("impacts", run.impact_count);
-        r.result("alpha", geo.alpha());
+        r.result("inertia_ratio", p.inertia_ratio());
+    } else {
+        let run = evidence::scene_run(p, dur, rtol, 0.0);
+        r.result("mean_velocity_mps", run.mean_velocity_mps);
+        r.result("method", "event-driven (full model)");
+        full_run_results(r, &run, "");
+        r.result("alpha", p.geometry().alpha());
         r.result("inertia_ratio", p.inertia_ratio());
         r.result(
             "energy_budget_relative_residual",
@@ -254,7 +315,34 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
         );
     }
     r.result("massless_mean_velocity_mps", massless);
-    r.table("validity-map", answers::validity_table(&ev.ladders));
+}
+
+/// Outcome, Painleve events and impacts of a full-model run, keys prefixed by `pre`
+/// (the composite reports its reference run's under `reference_`, and its own outcome).
+fn full_run_results(r: &mut ChapterReport, run: &InertiaRun, pre: &str) {
+    r.result("outcome", run.outcome.label());
+    if let InertiaOutcome::Invalid(why) = &run.outcome {
+        r.result("outcome_reason", why.as_str());
+    }
+    let events: Vec<_> = run
+        .painleve
+        .iter()
+        .take(100)
+        .map(|e| json!({"t_s": e.t_s, "theta_rad": e.theta_rad, "mu": e.mu, "mu_p": e.mu_p, "case": e.case.name(), "slide": if e.sigma > 0.0 {"left"} else {"right"}}))
+        .collect();
+    r.result(&format!("{pre}painleve_event_count"), run.painleve.len());
+    r.result(&format!("{pre}painleve_events"), json!(events));
+    r.result(&format!("{pre}impacts"), run.impact_count);
+    if !pre.is_empty() {
+        // the composite has no events of its own: the outer (massless) model has none
+        r.result("painleve_events", json!([]));
+        r.result("impacts", run.impact_count);
+    }
+}
+
+/// The chapter's answers that do not depend on the flags: the Glocker scene and the
+/// toothpick.
+fn answer_results(r: &mut ChapterReport, ctx: &Context) {
     let gl = evidence::glocker_scene();
     if let (Some(e), Some(i)) = (gl.painleve.first(), gl.impacts.first()) {
         r.result("glocker_painleve_time_s", e.t_s);
@@ -267,68 +355,9 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
         r.result("toothpick_mean_velocity_mps", t.speed_mps);
     }
     r.table("toothpick", answers::toothpick_table(&tooth));
-    let map = answers::painleve_map(
-        if ctx.quick { 5 } else { 12 },
-        if ctx.quick { 0.5 } else { 1.0 },
-    );
-    r.table("painleve-map", answers::map_table(&map));
-    if let Some(dir) = ctx.figure_dir(ID) {
-        r.figures.extend(figures::painleve_boundary(&ev, &dir)?);
-        r.figures.extend(figures::validity_map(&ev, &dir)?);
-        r.figures.extend(figures::painleve_map(&map, &dir)?);
-        r.figures.extend(figures::gaits(&dir)?);
-    }
-    Ok(r)
 }
 
-/// The claim `id` judged against the statements `doc` (quick, headless, default flags).
-fn judge(id: &str, doc: &Statements) -> crate::report::Claim {
-    static EVIDENCE: std::sync::OnceLock<evidence::Evidence> = std::sync::OnceLock::new();
-    let ev = EVIDENCE.get_or_init(evidence::gather);
-    let gain = if id == "impacts-dissipate" {
-        evidence::impact_energy(doc.restitution_max)
-    } else {
-        (0.0, 1.0, 1)
-    };
-    claims::all(doc, ev, gain)
-        .into_iter()
-        .find(|c| c.id == id)
-        .expect("claim id of this chapter")
-}
-
-/// Falsification: each statement off by 10 %.
+/// Falsification: each statement's printed number off by 10 % ([`mutations`]).
 pub fn mutations() -> Vec<Mutation> {
-    let edits: Vec<crate::report::DocEdit<Statements>> = vec![
-        ("impulse-ratio-uniform", "3q/(4+q^2) -> 3.3q/(4+q^2)", |d| {
-            d.uniform_num = 3.3
-        }),
-        ("impulse-ratio-massless", "q -> 1.1 q", |d| {
-            d.massless_factor = 1.1
-        }),
-        (
-            "impulse-ratio-between",
-            "alpha q/(1+alpha+q^2) -> 1.1 x",
-            |d| d.between_scale = 1.1,
-        ),
-        ("painleve-boundary", "mu_P -> 1.1 mu_P", |d| {
-            d.painleve_scale = 1.1
-        }),
-        ("painleve-minimum-uniform", "4/3 -> 1.1 x 4/3", |d| {
-            d.painleve_min = 1.1 * 4.0 / 3.0
-        }),
-        ("painleve-minimum-angle", "atan(1/2) -> atan(0.55)", |d| {
-            d.painleve_min_tan = 0.55
-        }),
-        ("impacts-dissipate", "e <= 1 -> e = 1.1", |d| {
-            d.restitution_max = 1.1
-        }),
-        ("massless-limit", "order 1 -> 1.1", |d| {
-            d.massless_order = 1.1
-        }),
-        ("moreau-jean", "order 1 -> 1.1", |d| d.mj_order = 1.1),
-        ("painleve-compliant-limit", "rule's impulse -> 1.1 x", |d| {
-            d.iwc_scale = 1.1
-        }),
-    ];
-    Mutation::from_edits(PRINTED, edits, judge)
+    mutations::all()
 }

@@ -48,30 +48,19 @@ pub fn darboux_keller(
     let (wtt, wtn, wnn) = (w[0][0], w[0][1], w[1][1]);
     let [mut ut, mut un] = u0;
     let (mut pt, mut pn, mut loss) = (0.0, 0.0, 0.0);
-    let mut work_c = 0.0; // work absorbed in compression (J), positive
-    let mut restituting = false;
-    let mut target = 0.0; // work to give back in restitution (J)
-    let mut given = 0.0;
+    // work absorbed in compression, to give back in restitution, given back (J)
+    let (mut work_c, mut target, mut given, mut restituting) = (0.0, 0.0, 0.0, false);
     let vscale = u0[0].abs().max(u0[1].abs()).max(1e-300);
     for _ in 0..16 {
         // The regime's slope: tangential impulse rate r = dP_t/dp and du/dp.
         let slipping = ut.abs() > 1e-14 * vscale;
-        let r = if slipping {
-            -ut.signum() * mu
-        } else {
-            let r_stick = -wtn / wtt;
-            if r_stick.abs() <= mu {
-                ut = 0.0;
-                r_stick
-            } else {
-                -wtn.signum() * mu // formula: the slip restarts along sign(W_tn)
-            }
-        };
+        let (r, sticks) = tangential_rate(slipping, ut, wtt, wtn, mu);
+        ut = if sticks { 0.0 } else { ut };
         let kt = wtt * r + wtn; // formula: du_t/dp = W_tt r + W_tn
         let kn = wtn * r + wnn; // formula: du_n/dp = W_nt r + W_nn
-                                // Compression is over once C no longer approaches and the regime would not
-                                // drive it into the plate (at the start of an impact without collision the
-                                // normal velocity is zero and the slope negative: compression lies ahead).
+                                // Compression is over once C no longer approaches and the regime would not drive
+                                // it into the plate (at the start of an impact without collision the normal
+                                // velocity is zero and the slope negative: compression lies ahead).
         let first_iwc_slip = iwc && slipping && pn == 0.0;
         if !restituting && un >= 0.0 && kn >= 0.0 && !first_iwc_slip {
             restituting = true;
@@ -90,17 +79,7 @@ pub fn darboux_keller(
             if rem <= 0.0 {
                 break;
             }
-            // formula: int u_n dp over the step = un dp + kn dp^2/2 = rem
-            let d = if kn.abs() < 1e-300 {
-                rem / un.max(1e-300)
-            } else {
-                let disc = un * un + 2.0 * kn * rem;
-                if disc < 0.0 {
-                    f64::INFINITY
-                } else {
-                    (-un + disc.sqrt()) / kn
-                }
-            };
+            let d = restitution_step(un, kn, rem);
             if d > 0.0 {
                 dp = dp.min(d);
             }
@@ -137,6 +116,37 @@ pub fn darboux_keller(
         u_after: [ut, un],
         loss_j: loss,
     })
+}
+
+/// The regime's tangential impulse rate `r = dP_t/dp`, and whether C sticks: slipping,
+/// `-sign(u_t) mu`; at rest, the `r = -W_tn/W_tt` that keeps `u_t = 0` if inside the cone,
+/// otherwise the cone's edge along which the slip restarts.
+fn tangential_rate(slipping: bool, ut: f64, wtt: f64, wtn: f64, mu: f64) -> (f64, bool) {
+    if slipping {
+        return (-ut.signum() * mu, false);
+    }
+    let r_stick = -wtn / wtt; // formula: du_t/dp = W_tt r + W_tn = 0
+    if r_stick.abs() <= mu {
+        (r_stick, true)
+    } else {
+        (-wtn.signum() * mu, false) // formula: the slip restarts along sign(W_tn)
+    }
+}
+
+/// The normal impulse `dp` over which restitution gives back the work `rem` (J) on a
+/// linear piece `u_n(p) = un + kn p` (infinite if it never does).
+fn restitution_step(un: f64, kn: f64, rem: f64) -> f64 {
+    // formula: int u_n dp over the step = un dp + kn dp^2/2 = rem
+    if kn.abs() < 1e-300 {
+        rem / un.max(1e-300)
+    } else {
+        let disc = un * un + 2.0 * kn * rem;
+        if disc < 0.0 {
+            f64::INFINITY
+        } else {
+            (-un + disc.sqrt()) / kn
+        }
+    }
 }
 
 #[cfg(test)]

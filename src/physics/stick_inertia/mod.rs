@@ -16,7 +16,8 @@
 //! (2 DOF), integrated ([`contact`]); a fall ends the run. Impacts at C with restitution
 //! and friction ([`impact`]); the Painleve cases of the slides ([`painleve`]); the
 //! transition rules and the [`crate::numerics::hybrid::HybridSystem`] implementation
-//! ([`system`]); the run and its summary ([`run`]).
+//! ([`system`]); the run and its summary ([`run`]); the massless limit as a singular
+//! perturbation ([`limit`]).
 //!
 //! | index | meaning | unit |
 //! |---|---|---|
@@ -29,6 +30,7 @@ pub mod compliant;
 pub mod contact;
 pub mod flight;
 pub mod impact;
+pub mod limit;
 pub mod painleve;
 pub mod params;
 pub mod run;

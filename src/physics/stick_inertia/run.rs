@@ -128,16 +128,7 @@ pub fn simulate_inertia(
     trace_dt_s: f64,
 ) -> InertiaRun {
     *model.log.borrow_mut() = Log::default();
-    let start = if model.h_c(t0, &y0) > 0.0 {
-        Transition::To {
-            mode: Mode::Flight,
-            state: y0,
-        }
-    } else if y0[super::VXC] != 0.0 {
-        model.enter_slide(t0, &model.canonical(Mode::Pivot, t0, &y0), 0)
-    } else {
-        model.select_contact(t0, &model.canonical(Mode::Pivot, t0, &y0), true, 0)
-    };
+    let start = start_transition(model, t0, &y0);
     let mut w = Watch {
         md: model,
         acc: [0.0; 4],
@@ -162,48 +153,20 @@ pub fn simulate_inertia(
             let mut s = state;
             s[W_PLATE..=D_IMPACT].fill(0.0);
             let run = simulate(model, mode, t0, s, t_end, &opts, &mut w);
-            let out = match run.outcome {
-                Outcome::Completed => InertiaOutcome::Completed,
-                Outcome::Stopped(InertiaStop::Fell) => InertiaOutcome::Fell,
-                Outcome::Stopped(InertiaStop::PainleveUnresolved(_)) => {
-                    InertiaOutcome::PainleveUnresolved
-                }
-                Outcome::Stopped(InertiaStop::Invalid(r)) => InertiaOutcome::Invalid(r),
-                Outcome::Zeno { .. } => InertiaOutcome::Zeno,
-                Outcome::Failed(e) => InertiaOutcome::Invalid(format!("integration failed: {e}")),
-            };
             (
-                out,
+                driver_outcome(run.outcome),
                 run.t_end_s,
                 model.canonical(run.mode_end, run.t_end_s, &run.y_end),
                 run.stats.rhs_evals,
             )
         }
-        Transition::Stop(x) => {
-            let out = match x {
-                InertiaStop::Fell => InertiaOutcome::Fell,
-                InertiaStop::PainleveUnresolved(_) => InertiaOutcome::PainleveUnresolved,
-                InertiaStop::Invalid(r) => InertiaOutcome::Invalid(r),
-            };
-            (out, t0, y0, 0)
-        }
+        Transition::Stop(x) => (stop_outcome(x), t0, y0, 0),
     };
     let mut y1 = y_end;
     for k in 0..4 {
         y1[W_PLATE + k] += w.acc[k];
     }
-    let (plate_w, de) = (
-        y1[W_PLATE],
-        model.mechanical_energy(&y1) - model.mechanical_energy(&y0),
-    );
-    let budget = Budget {
-        plate_work_j: plate_w,
-        delta_mechanical_j: de,
-        friction_j: y1[D_FRIC],
-        damper_j: y1[D_DAMP],
-        impact_j: y1[D_IMPACT],
-        residual_j: plate_w - de - y1[D_FRIC] - y1[D_DAMP] - y1[D_IMPACT], // formula: budget residual
-    };
+    let budget = budget(model, &y0, &y1);
     let log = model.log.borrow().clone();
     let dur = t_end_s - t0;
     InertiaRun {
@@ -223,6 +186,60 @@ pub fn simulate_inertia(
         budget,
         rhs_evals: rhs,
         trace: w.trace,
+    }
+}
+
+/// The first transition from `(t0, y0)`: flight above the plate, the slide of a slipping
+/// foot, the contact rules for a foot at rest on it.
+fn start_transition(
+    model: &InertiaModel,
+    t0: f64,
+    y0: &State,
+) -> Transition<Mode, InertiaStop, NSTATE> {
+    if model.h_c(t0, y0) > 0.0 {
+        Transition::To {
+            mode: Mode::Flight,
+            state: *y0,
+        }
+    } else if y0[super::VXC] != 0.0 {
+        model.enter_slide(t0, &model.canonical(Mode::Pivot, t0, y0), 0)
+    } else {
+        model.select_contact(t0, &model.canonical(Mode::Pivot, t0, y0), true, 0)
+    }
+}
+
+/// The typed outcome of a model stop.
+fn stop_outcome(x: InertiaStop) -> InertiaOutcome {
+    match x {
+        InertiaStop::Fell => InertiaOutcome::Fell,
+        InertiaStop::PainleveUnresolved(_) => InertiaOutcome::PainleveUnresolved,
+        InertiaStop::Invalid(r) => InertiaOutcome::Invalid(r),
+    }
+}
+
+/// The typed outcome of the driver's run.
+fn driver_outcome(o: Outcome<InertiaStop>) -> InertiaOutcome {
+    match o {
+        Outcome::Completed => InertiaOutcome::Completed,
+        Outcome::Stopped(x) => stop_outcome(x),
+        Outcome::Zeno { .. } => InertiaOutcome::Zeno,
+        Outcome::Failed(e) => InertiaOutcome::Invalid(format!("integration failed: {e}")),
+    }
+}
+
+/// The energy budget between the start `y0` and the end `y1` (accumulators summed).
+fn budget(model: &InertiaModel, y0: &State, y1: &State) -> Budget {
+    let (plate_w, de) = (
+        y1[W_PLATE],
+        model.mechanical_energy(y1) - model.mechanical_energy(y0),
+    );
+    Budget {
+        plate_work_j: plate_w,
+        delta_mechanical_j: de,
+        friction_j: y1[D_FRIC],
+        damper_j: y1[D_DAMP],
+        impact_j: y1[D_IMPACT],
+        residual_j: plate_w - de - y1[D_FRIC] - y1[D_DAMP] - y1[D_IMPACT], // formula: budget residual
     }
 }
 
