@@ -1,11 +1,11 @@
 //! The command line: clap derive types, one subcommand per chapter of the registry,
 //! and the dispatcher that maps results to exit codes (0 ok, 1 a claim failed, 2 bad input).
 
-use crate::chapters::{self, Context, CHAPTERS};
+use crate::chapters::{self, ChapterInfo, Context, CHAPTERS};
 use crate::error::{self, WorkbookError};
 use crate::render;
 use crate::report::ChapterReport;
-use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
+use clap::{ArgMatches, CommandFactory, FromArgMatches, Parser, Subcommand};
 use std::ffi::OsString;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -91,24 +91,56 @@ pub enum Command {
         #[arg(long, value_name = "DIR", default_value = "chapters")]
         dir: PathBuf,
     },
-    /// Ch. 1 (section 1): when is a motion locomotion and not dragging? Convex hull of the media velocities.
-    LocomotionDefinition(chapters::locomotion_definition::Args),
-    /// Ch. 2 (section 2): effective mass of a leaning stick and the sideways impulse J_l/J_v.
-    EffectiveMass(chapters::effective_mass::Args),
-    /// Ch. 3 (section 3.1.1): horizontal shaking turns Coulomb friction viscous (booktop).
-    HorizontalShaking(chapters::horizontal_shaking::Args),
-    /// Ch. 4 (section 3.1.2): vertical shaking and the law mu_eff = v_ave/v_z.
-    VerticalShaking(chapters::vertical_shaking::Args),
-    /// Ch. 5 (section 3.2): asymmetric shaking moves a block with Coulomb but not with linear friction.
-    AsymmetricShaking(chapters::asymmetric_shaking::Args),
-    /// Ch. 6 (sections 4, 5): the stick's hybrid state machine (flight, pivot, slide, collision).
-    StickStateMachine(chapters::stick_state_machine::Args),
-    /// Ch. 7 (all sections): speed versus accuracy of the numerical methods.
-    SpeedVsAccuracy(chapters::speed_vs_accuracy::Args),
-    /// Ch. 8 (sections 2, 4): the stick with inertia (rod mass, tip mass, impacts with friction, Painleve cases).
-    StickWithInertia(chapters::stick_with_inertia::Args),
+    /// One subcommand per chapter of the registry (`workbook <chapter-id> [flags]`).
+    #[command(flatten)]
+    Chapter(ChapterRun),
     /// The live lab: a local web page (127.0.0.1) where sliders drive chapter 6's simulator.
     Lab(crate::lab::Args),
+}
+
+/// A chapter's subcommand as parsed: its registry entry and its flags (read into the
+/// chapter's own `Args` by [`chapters::Chapter::run`]). The subcommands are built from
+/// [`CHAPTERS`]: nothing here names a chapter.
+#[derive(Debug, Clone)]
+pub struct ChapterRun {
+    /// The chapter.
+    pub chapter: &'static ChapterInfo,
+    /// Its flags.
+    pub matches: ArgMatches,
+}
+
+impl FromArgMatches for ChapterRun {
+    fn from_arg_matches(m: &ArgMatches) -> Result<Self, clap::Error> {
+        use clap::error::ErrorKind;
+        let (name, sub) = m
+            .subcommand()
+            .ok_or_else(|| clap::Error::new(ErrorKind::MissingSubcommand))?;
+        let chapter = chapters::info(name)
+            .ok_or_else(|| clap::Error::raw(ErrorKind::InvalidSubcommand, name.to_string()))?;
+        Ok(ChapterRun {
+            chapter,
+            matches: sub.clone(),
+        })
+    }
+
+    fn update_from_arg_matches(&mut self, m: &ArgMatches) -> Result<(), clap::Error> {
+        *self = ChapterRun::from_arg_matches(m)?;
+        Ok(())
+    }
+}
+
+impl Subcommand for ChapterRun {
+    fn augment_subcommands(cmd: clap::Command) -> clap::Command {
+        cmd.subcommands(CHAPTERS.iter().map(ChapterInfo::subcommand))
+    }
+
+    fn augment_subcommands_for_update(cmd: clap::Command) -> clap::Command {
+        ChapterRun::augment_subcommands(cmd)
+    }
+
+    fn has_subcommand(name: &str) -> bool {
+        chapters::info(name).is_some()
+    }
 }
 
 impl Cli {
@@ -329,23 +361,29 @@ fn join_negative_values(cmd: &clap::Command, args: Vec<OsString>) -> Vec<OsStrin
 /// --allow-long-runs only the chapter with a work budget (stick-state-machine; the
 /// others do a fixed amount of work). --g-mps2 is checked by the chapters.
 fn refuse_unused(cli: &Cli, given: &[&str]) -> error::Result<()> {
-    let (what, allowed): (&str, &[&str]) = match cli.command {
+    const RUN_FLAGS: &[&str] = &["quick", "json", "figures", "no_figures", "g_mps2"];
+    let (what, allowed): (&str, &[&str]) = match &cli.command {
         Command::List => ("list", &["json"]),
         Command::Render { .. } => ("render", &[]),
         Command::Lab(_) => ("lab", &[]),
-        Command::StickStateMachine(_) => return Ok(()),
-        Command::All => ("all", &["quick", "json", "figures", "no_figures", "g_mps2"]),
-        _ => (
-            "this chapter",
-            &["quick", "json", "figures", "no_figures", "g_mps2"],
-        ),
+        Command::Chapter(c) if c.chapter.work_budget() => return Ok(()),
+        Command::All => ("all", RUN_FLAGS),
+        Command::Chapter(_) => ("this chapter", RUN_FLAGS),
     };
     match given.iter().find(|id| !allowed.contains(id)) {
         Some(id) => {
+            let budgeted: Vec<&str> = CHAPTERS
+                .iter()
+                .filter(|c| c.work_budget())
+                .map(|c| c.id)
+                .collect();
             let why = if *id == "allow_long_runs" {
-                " (it applies to stick-state-machine, the one chapter with a work budget)"
+                format!(
+                    " (it applies to {}, the one chapter with a work budget)",
+                    budgeted.join(", ")
+                )
             } else {
-                ""
+                String::new()
             };
             Err(WorkbookError::bad_input(
                 &format!("--{}", id.replace('_', "-")),
@@ -406,31 +444,11 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
         check_figures(root)?;
     }
     let report = match &cli.command {
-        Command::List => {
-            if cli.json {
-                let list: Vec<serde_json::Value> = CHAPTERS
-                    .iter()
-                    .map(|c| serde_json::json!({"id": c.id, "section": c.section, "title": c.title, "question": c.question}))
-                    .collect();
-                writeln!(out, "{}", serde_json::Value::Array(list))?;
-            } else {
-                for c in CHAPTERS.iter() {
-                    writeln!(out, "{:<22} section {:<6} {}", c.id, c.section, c.question)?;
-                }
-            }
-            return Ok(0);
-        }
+        Command::List => return list(cli.json, out),
         Command::All => return run_all(cli, &ctx, out),
         Command::Render { check, dir } => return render::render(dir, *check, out),
         Command::Lab(a) => return crate::lab::run(a, out),
-        Command::LocomotionDefinition(a) => chapters::locomotion_definition::run(a, &ctx)?,
-        Command::EffectiveMass(a) => chapters::effective_mass::run(a, &ctx)?,
-        Command::HorizontalShaking(a) => chapters::horizontal_shaking::run(a, &ctx)?,
-        Command::VerticalShaking(a) => chapters::vertical_shaking::run(a, &ctx)?,
-        Command::AsymmetricShaking(a) => chapters::asymmetric_shaking::run(a, &ctx)?,
-        Command::StickStateMachine(a) => chapters::stick_state_machine::run(a, &ctx)?,
-        Command::SpeedVsAccuracy(a) => chapters::speed_vs_accuracy::run(a, &ctx)?,
-        Command::StickWithInertia(a) => chapters::stick_with_inertia::run(a, &ctx)?,
+        Command::Chapter(c) => c.chapter.chapter.run(&c.matches, &ctx)?,
     };
     let report = checked(&report)?;
     if cli.json {
@@ -441,25 +459,55 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
     Ok(i32::from(report.has_failures()))
 }
 
+/// `workbook list`: one line per chapter (with `--json`, one array).
+fn list(json: bool, out: &mut dyn Write) -> error::Result<i32> {
+    if json {
+        let list: Vec<serde_json::Value> = CHAPTERS
+            .iter()
+            .map(|c| serde_json::json!({"id": c.id, "section": c.section, "title": c.title, "question": c.question}))
+            .collect();
+        writeln!(out, "{}", serde_json::Value::Array(list))?;
+    } else {
+        for c in CHAPTERS.iter() {
+            writeln!(out, "{:<22} section {:<6} {}", c.id, c.section, c.question)?;
+        }
+    }
+    Ok(0)
+}
+
+/// Checks `all --g-mps2` before the first chapter runs, against the narrowest range of
+/// the chapters that use g (their tables' `--g-mps2` entries).
+fn check_all_g(g: f64) -> error::Result<()> {
+    let narrowest = CHAPTERS
+        .iter()
+        .filter_map(|c| crate::flags::find(c.flags, "--g-mps2").map(|f| (c, f)))
+        .max_by(|a, b| a.1.range.lo.total_cmp(&b.1.range.lo));
+    match narrowest {
+        Some((c, f)) if f.range.lo > crate::flags::G.range.lo => {
+            let why = format!(
+                "`all` runs chapter {}, validated from {} m/s^2 up: {}",
+                c.number,
+                error::num(f.range.lo),
+                f.reason
+            );
+            let valid = format!("{} ({}; {why})", f.range_text(), f.unit);
+            error::check("--g-mps2", g, |v| f.range.contains(v), &valid).map(drop)
+        }
+        _ => chapters::check_g(g).map(drop),
+    }
+}
+
 fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> {
     if let Some(g) = ctx.g_mps2 {
-        // checked before the first chapter runs: chapter 7 accepts the narrowest range
-        error::range(
-            "--g-mps2",
-            g,
-            chapters::speed_vs_accuracy::G_MIN_MPS2,
-            chapters::G_MAX_MPS2,
-            "m/s^2",
-            "`all` runs chapter 7, whose reference check is validated from 3 m/s^2 up",
-        )?;
+        check_all_g(g)?;
     }
     let mut reports: Vec<ChapterReport> = Vec::new();
     for c in CHAPTERS.iter() {
         let mut c_ctx = ctx.clone();
-        if !chapters::uses_g(c.id) {
+        if !c.uses_g() {
             c_ctx.g_mps2 = None; // documented: `all` applies g where it is used
         }
-        let r = chapters::run_default(c.id, &c_ctx)?;
+        let r = c.run_default(&c_ctx)?;
         checked(&r)?;
         if !cli.json {
             writeln!(out, "{}", r.human())?;

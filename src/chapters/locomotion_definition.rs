@@ -7,6 +7,8 @@
 
 use super::{info, Context};
 use crate::error::{check, parse_pair, Result};
+use crate::flags::Flag;
+use crate::physics::domain::Interval;
 use crate::physics::locomotion::{
     classify, hull, in_exact_range, is_locomotion, reason, Hull, Position, V2,
 };
@@ -16,15 +18,13 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-/// Flags of the chapter.
+/// Flags of the chapter (their help lines: [`FLAGS`]).
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Average velocity of the object as X,Y in m/s (horizontal plane; negative parts
-    /// are fine: --object-velocity -2,0). Default 1,3: a boat reaching across the wind.
+    /// Average velocity of the object as X,Y in m/s.
     #[arg(long, value_parser = parse_pair, default_value = "1,3", allow_hyphen_values = true)]
     pub object_velocity: V2,
     /// Average velocity of one medium as X,Y in m/s; repeat the flag for several media.
-    /// Default: wind 5,0 and still water 0,0 (the document's sailing scene).
     #[arg(long = "medium-velocity", value_parser = parse_pair, default_values = ["5,0", "0,0"], allow_hyphen_values = true)]
     pub medium_velocity: Vec<V2>,
 }
@@ -35,6 +35,31 @@ const WATER: V2 = [0.0, 0.0];
 
 const VALID: &str =
     "X,Y with each part 0 or 1e-100 <= |part| <= 1e100 (m/s), where the hull test is exact";
+
+/// The parts of a velocity pair: 0 or `1e-100 <= |part| <= 1e100` (the range field
+/// holds the magnitudes; either sign and 0 are accepted too).
+const PART: Interval = Interval::closed(1e-100, 1e100);
+
+/// The table of the chapter's flags (pairs X,Y: the range is that of each part's
+/// magnitude). No `--g-mps2`: the chapter is kinematics and refuses the flag.
+pub const FLAGS: &[Flag] = &[
+    Flag::new(
+        "--object-velocity",
+        "Average velocity of the object as X,Y (horizontal plane; negative parts are fine: --object-velocity -2,0); default 1,3: a boat reaching across the wind",
+        "m/s",
+        PART,
+    )
+    .shown_as("X,Y with each part 0 or 1e-100 <= |part| <= 1e100")
+    .why("where the hull test is exact"),
+    Flag::new(
+        "--medium-velocity",
+        "Average velocity of one medium as X,Y; repeat the flag for several media; default: wind 5,0 and still water 0,0 (the document's sailing scene)",
+        "m/s",
+        PART,
+    )
+    .shown_as("X,Y with each part 0 or 1e-100 <= |part| <= 1e100")
+    .why("where the hull test is exact"),
+];
 
 fn validate(flag: &str, v: V2) -> Result<V2> {
     for x in v {

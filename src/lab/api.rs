@@ -187,9 +187,13 @@ pub fn parse_run(body: &[u8]) -> Result<RunRequest, ApiError> {
         .try_get_matches_from(&argv)
         .map_err(|e| ApiError::bad(clap_line(&e)))?;
     let cli = Cli::from_arg_matches(&matches).map_err(|e| ApiError::bad(clap_line(&e)))?;
-    let Command::StickStateMachine(args) = &cli.command else {
-        return Err(internal("the request did not parse as stick-state-machine"));
+    let args = match &cli.command {
+        Command::Chapter(c) if c.chapter.id == ssm::ID => {
+            ssm::Args::from_arg_matches(&c.matches).map_err(|e| ApiError::bad(clap_line(&e)))?
+        }
+        _ => return Err(internal("the request did not parse as the stick's chapter")),
     };
+    let args = &args;
     let ctx = cli.context().map_err(|e| ApiError::bad(e.to_string()))?;
     let (params, duration_s, opts) =
         ssm::setup(args, &ctx).map_err(|e| ApiError::bad(e.to_string()))?;

@@ -25,9 +25,12 @@ mod sensitivity;
 mod slide_rules;
 
 use super::Context;
-use crate::error::{check, range, Result};
+use crate::error::{check, Result};
+use crate::flags::stick::{self as stick_flags, StickFlags};
+use crate::flags::Flag;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
+use crate::physics::domain::Interval;
 use crate::physics::stick::printed::{simulate_printed, Printed};
 use crate::physics::stick::run::{
     authors_code_state, initial_state, simulate_stick, Recording, RunSummary,
@@ -109,49 +112,28 @@ pub enum Rules {
 /// Flags of the chapter. Unset physical flags take the chosen scene's value. Ranges: a
 /// box within a factor 10 of the authors' stick (wider where a limit is physical: a free
 /// hinge, a still plate), over which the chapter's checks are run at the corners
-/// (tests/cli.rs); the duration is bounded by the rounding of the plate phase.
+/// (tests/cli.rs); the duration is bounded by the rounding of the plate phase. The help
+/// lines of the physical flags come from [`FLAGS`].
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Scene whose values the other flags override [default: jamming].
     #[arg(long, value_enum, default_value_t = Scene::Jamming)]
     pub scene: Scene,
-    /// Rod length L (m, 0.015 to 1.5) [scene: 0.15].
-    #[arg(long = "length-m")]
-    pub length_m: Option<f64>,
-    /// Tip mass m (kg, 0.1 to 10) [scene: 1].
+    /// The stick's flags, shared with chapter 8 ([`crate::flags::stick`]).
+    #[command(flatten)]
+    pub stick: StickFlags,
+    /// Tip mass m (kg), [`MASS_KG`].
     #[arg(long = "mass-kg")]
     pub mass_kg: Option<f64>,
-    /// Torsion-spring stiffness k (N m/rad, 0 to 100) [scene: 10].
-    #[arg(long)]
-    pub stiffness: Option<f64>,
-    /// Torsion damper gamma (N m s/rad, 0 to 0.1) [scene: 0.01].
-    #[arg(long)]
-    pub damping: Option<f64>,
-    /// Coulomb friction coefficient mu at the foot C (1, 0 to 2) [scene: 0.4].
-    #[arg(long)]
-    pub mu: Option<f64>,
-    /// Spring rest angle theta_0 from the vertical (rad), in (-pi/2, pi/2)
-    /// [jamming: 0.3; authors: 0.4281, from k (0.5 - theta_0) = m g L sin(0.5)].
-    #[arg(long = "theta0-rad")]
-    pub theta0_rad: Option<f64>,
-    /// Peak plate acceleration over g, Gamma = delta omega^2 / g (1, 0 to 50) [jamming: 3; authors: 10].
-    #[arg(long)]
-    pub gamma: Option<f64>,
-    /// Plate frequency f (Hz, 1 to 1000) [scene: 30].
-    #[arg(long = "frequency-hz")]
-    pub frequency_hz: Option<f64>,
-    /// Simulated time (s) [10; 2 with --quick]: 0 < t <= 1e4 s and omega t Gamma <= 1.5e5
-    /// (the rounding of the plate phase must stay under the cone check's 1e-10 m g);
-    /// runs estimated beyond 10 minutes (f t > 4e7 drive cycles in a release build,
-    /// 5e6 in a debug build) need --allow-long-runs.
+    /// Simulated time (s), [`DURATION_S`].
     #[arg(long = "duration-s")]
     pub duration_s: Option<f64>,
     /// Lever arm of the collision map: `actual` (the angle at landing, what the physics
     /// supports) or `reset` (the document's theta_0) [default: actual].
     #[arg(long = "collision-angle", default_value = "actual", value_parser = collision_angle_parser())]
     pub collision_angle: CollisionAngle,
-    /// Relative (and absolute) tolerance of Dormand-Prince in the contact modes (1, 1e-14
-    /// to 1e-2) [1e-10].
+    /// Relative (and absolute) tolerance in the contact modes,
+    /// [`crate::flags::stick::RTOL`].
     #[arg(long, default_value_t = 1e-10)]
     pub rtol: f64,
     /// Integrator of the contact modes; both locate events on their dense output
@@ -172,6 +154,40 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t = Rules::Physical)]
     pub rules: Rules,
 }
+
+/// `--mass-kg`: the tip mass of chapter 6's stick.
+pub const MASS_KG: Flag = Flag::new("--mass-kg", "Tip mass m", "kg", Interval::closed(0.1, 10.0))
+    .why(stick_flags::BOX10)
+    .default_is("scene: 1");
+
+/// `--duration-s`: its bound depends on `--frequency-hz` and `--gamma` (the range
+/// field holds it at the jamming scene: 1.5e5/(2 pi 30 x 3) = 265.26 s).
+pub const DURATION_S: Flag = Flag::new(
+    "--duration-s",
+    "Simulated time",
+    "s",
+    Interval::closed(0.0, 265.0).open_below(),
+)
+.shown_as("0 < t <= 1e4 s and omega t Gamma <= 1.5e5")
+.why("the rounding of the plate phase must stay under the cone check's 1e-10 m g; runs estimated beyond 10 minutes (f t > 4e7 drive cycles in a release build, 5e6 in a debug build) need --allow-long-runs")
+.default_is("10; 2 with --quick")
+.coupled()
+.budgeted();
+
+/// The table of the chapter's physical flags (`crate::flags`).
+pub const FLAGS: &[Flag] = &[
+    stick_flags::LENGTH_M,
+    MASS_KG,
+    stick_flags::STIFFNESS,
+    stick_flags::DAMPING,
+    stick_flags::MU,
+    stick_flags::THETA0_RAD,
+    stick_flags::GAMMA,
+    stick_flags::FREQUENCY_HZ,
+    DURATION_S,
+    stick_flags::RTOL,
+    crate::flags::G,
+];
 
 /// The scene's parameters with `g` (m/s^2): the flag, or the scene's own (10 for the
 /// authors' scene, 9.81 otherwise).
@@ -217,75 +233,14 @@ pub const SECONDS_PER_CYCLE: f64 = if cfg!(debug_assertions) {
     1.5e-5
 };
 
-/// Validated parameters, duration (s) and options from the flags.
+/// Validated parameters, duration (s) and options from the flags: each checked
+/// against its entry of [`FLAGS`], then by the model's constructor.
 pub fn setup(args: &Args, ctx: &Context) -> Result<(StickParams, f64, Options)> {
     let base = scene_params(args.scene, ctx.g_mps2);
-    let half_pi = std::f64::consts::FRAC_PI_2;
-    let box10 = "within a factor 10 of the authors' stick, the box over which the chapter's checks are run at the corners (tests/cli.rs)";
-    let l = range(
-        "--length-m",
-        args.length_m.unwrap_or(base.length_m),
-        0.015,
-        1.5,
-        "m",
-        box10,
-    )?;
-    let m = range(
-        "--mass-kg",
-        args.mass_kg.unwrap_or(base.mass_kg),
-        0.1,
-        10.0,
-        "kg",
-        box10,
-    )?;
-    let k = range(
-        "--stiffness",
-        args.stiffness.unwrap_or(base.stiffness_nm_per_rad),
-        0.0,
-        100.0,
-        "N m/rad",
-        "0 (a free hinge) to 10 x the authors' spring; a spring too weak to hold the stick lets it fall, which the run reports",
-    )?;
-    let c = range(
-        "--damping",
-        args.damping.unwrap_or(base.damping_nms_per_rad),
-        0.0,
-        0.1,
-        "N m s/rad",
-        "0 to 10 x the authors' damper",
-    )?;
-    let mu = range(
-        "--mu",
-        args.mu.unwrap_or(base.mu),
-        0.0,
-        2.0,
-        "1",
-        "dry friction at the foot",
-    )?;
-    let th0 = check(
-        "--theta0-rad",
-        args.theta0_rad.unwrap_or(base.theta0_rad),
-        |v| v.abs() < half_pi,
-        "-pi/2 < value < pi/2 (rad), i.e. strictly between -90 and 90 degrees",
-    )?;
-    let gam = range(
-        "--gamma",
-        args.gamma.unwrap_or(base.gamma_accel()),
-        0.0,
-        50.0,
-        "1",
-        "a still plate to 5 x the authors' Gamma = 10",
-    )?;
-    let f = range(
-        "--frequency-hz",
-        args.frequency_hz.unwrap_or(base.frequency_hz()),
-        1.0,
-        1000.0,
-        "Hz",
-        "1 Hz to 1 kHz; the duration is bounded by omega t Gamma, see --duration-s",
-    )?;
+    let v = args.stick.resolve(&base)?;
+    let m = MASS_KG.check(args.mass_kg.unwrap_or(base.mass_kg))?;
     let default_duration = if ctx.quick { 2.0 } else { 10.0 };
-    let t_max = max_duration_s(f, gam);
+    let t_max = max_duration_s(v.frequency_hz, v.gamma);
     let dur = check(
         "--duration-s",
         args.duration_s.unwrap_or(default_duration),
@@ -296,13 +251,8 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(StickParams, f64, Options)> 
             crate::error::num(PHASE_ROUNDING_MAX)
         ),
     )?;
-    let rtol = check(
-        "--rtol",
-        args.rtol,
-        |v| (1e-14..=1e-2).contains(&v),
-        "1e-14 <= value <= 1e-2 (1)",
-    )?;
-    let mut p = StickParams::new(l, m, k, c, mu, th0, base.g_mps2, gam, f);
+    let rtol = stick_flags::RTOL.check(args.rtol)?;
+    let mut p = crate::flags::stick_params(&base, &v, m)?;
     p.collision_angle = args.collision_angle;
     let opts = Options {
         method: args.method.method(),
