@@ -350,4 +350,76 @@ mod tests {
             assert_eq!(info(c.id), Some(c));
         }
     }
+
+    /// The value flags of a chapter's subcommand (`--x VALUE`, not an enumeration or a
+    /// path, not global).
+    fn value_flags(cmd: &clap::Command) -> Vec<String> {
+        cmd.get_arguments()
+            .filter(|a| a.get_action().takes_values() && a.get_possible_values().is_empty())
+            .filter(|a| a.get_value_hint() != clap::ValueHint::FilePath)
+            .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
+            .collect()
+    }
+
+    #[test]
+    fn every_value_flag_has_one_table_entry_and_its_help_line() {
+        for c in CHAPTERS {
+            let cmd = c.subcommand();
+            let flags = value_flags(&cmd);
+            for f in &flags {
+                assert_eq!(
+                    c.flags.iter().filter(|e| e.name == f).count(),
+                    1,
+                    "{}: {f} in the table once",
+                    c.id
+                );
+            }
+            for e in c.flags.iter().filter(|e| e.name != "--g-mps2") {
+                assert!(
+                    flags.contains(&e.name.to_string()),
+                    "{}: {} is no flag",
+                    c.id,
+                    e.name
+                );
+                let arg = cmd
+                    .get_arguments()
+                    .find(|a| a.get_long() == Some(&e.name[2..]))
+                    .unwrap();
+                let help = arg.get_help().map(|h| h.to_string()).unwrap_or_default();
+                assert_eq!(help, e.help(), "{}: {}", c.id, e.name);
+                assert!(
+                    help.contains(&e.range_text()) && !e.reason.is_empty(),
+                    "{help}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn g_and_the_work_budget_come_from_the_tables() {
+        for c in CHAPTERS {
+            assert_eq!(uses_g(c.id), c.flags.iter().any(|f| f.name == "--g-mps2"));
+        }
+        assert!(!uses_g("no-such-chapter"));
+        assert_eq!(CHAPTERS.iter().filter(|c| c.work_budget()).count(), 1);
+        assert_eq!(CHAPTERS.iter().filter(|c| !c.uses_g()).count(), 2);
+    }
+
+    #[test]
+    fn a_value_outside_its_entry_is_one_line_naming_flag_value_range_and_reason() {
+        for c in CHAPTERS {
+            for f in c.flags.iter().filter(|f| f.range.hi.is_finite()) {
+                let e = f.check(f.range.hi * 2.0 + 1.0).unwrap_err().to_string();
+                assert!(e.contains(f.name) && e.contains(&f.range_text()), "{e}");
+                assert!(e.contains(f.reason) && e.lines().count() == 1, "{e}");
+                assert_eq!(f.check(f64::NAN).unwrap_err().exit_code(), 2);
+            }
+        }
+    }
+
+    #[test]
+    fn unknown_ids_run_nothing() {
+        assert!(run_default("no-such-chapter", &Context::headless(true)).is_err());
+        assert!(mutations("no-such-chapter").is_empty());
+    }
 }

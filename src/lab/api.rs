@@ -259,5 +259,25 @@ pub fn scenes() -> Value {
     serde_json::json!({
         "jamming": one(Scene::Jamming, "jamming"),
         "authors": one(Scene::Authors, "authors"),
+        "ranges": ranges(),
     })
+}
+
+/// The sliders' ends, per request field: chapter 6's flag table ([`ssm::FLAGS`], the
+/// CLI's ranges with their reasons).
+pub fn ranges() -> Value {
+    let mut o = serde_json::Map::new();
+    for (key, flag, _) in FIELDS {
+        if let Some(f) = crate::flags::find(ssm::FLAGS, flag) {
+            let r = f.range;
+            o.insert(
+                key.to_string(),
+                serde_json::json!({
+                    "min": r.lo, "max": r.hi, "min_open": r.lo_open, "max_open": r.hi_open,
+                    "unit": f.unit, "range": f.range_text(), "reason": f.reason,
+                }),
+            );
+        }
+    }
+    Value::Object(o)
 }
