@@ -408,12 +408,7 @@ fn check_all_g(g: f64) -> error::Result<()> {
         .max_by(|a, b| a.1.range.lo.total_cmp(&b.1.range.lo));
     match narrowest {
         Some((c, f)) if f.range.lo > crate::flags::G.range.lo => {
-            let why = format!(
-                "`all` runs chapter {}, validated from {} m/s^2 up: {}",
-                c.number,
-                error::num(f.range.lo),
-                f.reason
-            );
+            let why = format!("`all` runs chapter {}: {}", c.number, f.reason);
             let valid = format!("{} ({}; {why})", f.range_text(), f.unit);
             error::check("--g-mps2", g, |v| f.range.contains(v), &valid).map(drop)
         }

@@ -63,7 +63,7 @@ pub const MU: Flag = Flag::new(
     "dimensionless",
     Interval::closed(0.0, MU_MAX).open_below(),
 )
-.why("large enough to reach the steady state within 1e4 periods: mu >= a/(g (T_s + 1e4 (T_s - T_f))), see the error line");
+.why("dry friction; it must also let the block reach its steady state within 1e4 periods: mu >= a/(g (T_s + 1e4 (T_s - T_f)))");
 
 /// `--slow-velocity-mps`.
 pub const SLOW_VELOCITY_MPS: Flag = Flag::new(
