@@ -36,29 +36,19 @@ const WATER: V2 = [0.0, 0.0];
 const VALID: &str =
     "X,Y with each part 0 or 1e-100 <= |part| <= 1e100 (m/s), where the hull test is exact";
 
-/// The parts of a velocity pair: 0 or `1e-100 <= |part| <= 1e100` (the range field
-/// holds the magnitudes; either sign and 0 are accepted too).
-const PART: Interval = Interval::closed(1e-100, 1e100);
+/// A velocity pair's entry: each part 0 or `1e-100 <= |part| <= 1e100` (the range
+/// field holds the magnitudes; either sign and 0 are accepted too).
+const fn pair(name: &'static str, about: &'static str) -> Flag {
+    Flag::new(name, about, "m/s", Interval::closed(1e-100, 1e100))
+        .shown_as("X,Y with each part 0 or 1e-100 <= |part| <= 1e100")
+        .why("where the hull test is exact")
+}
 
-/// The table of the chapter's flags (pairs X,Y: the range is that of each part's
-/// magnitude). No `--g-mps2`: the chapter is kinematics and refuses the flag.
+/// The table of the chapter's flags. No `--g-mps2`: the chapter is kinematics and
+/// refuses the flag.
 pub const FLAGS: &[Flag] = &[
-    Flag::new(
-        "--object-velocity",
-        "Average velocity of the object as X,Y (horizontal plane; negative parts are fine: --object-velocity -2,0); default 1,3: a boat reaching across the wind",
-        "m/s",
-        PART,
-    )
-    .shown_as("X,Y with each part 0 or 1e-100 <= |part| <= 1e100")
-    .why("where the hull test is exact"),
-    Flag::new(
-        "--medium-velocity",
-        "Average velocity of one medium as X,Y; repeat the flag for several media; default: wind 5,0 and still water 0,0 (the document's sailing scene)",
-        "m/s",
-        PART,
-    )
-    .shown_as("X,Y with each part 0 or 1e-100 <= |part| <= 1e100")
-    .why("where the hull test is exact"),
+    pair("--object-velocity", "Average velocity of the object as X,Y (horizontal plane; negative parts are fine: --object-velocity -2,0); default 1,3: a boat reaching across the wind"),
+    pair("--medium-velocity", "Average velocity of one medium as X,Y; repeat the flag for several media; default: wind 5,0 and still water 0,0 (the document's sailing scene)"),
 ];
 
 fn validate(flag: &str, v: V2) -> Result<V2> {
