@@ -71,7 +71,8 @@ fn centre_json(md: &InertiaModel, y: &[f64; 10]) -> String {
 /// the gap (done by the Python runner).
 fn painleve() {
     let th = -(59.0f64).to_radians();
-    let mut base = StickParams::new(2.0, 0.0, 0.0, 0.0, 5.0 / 3.0, th, 10.0, 0.0, 30.0);
+    let mut base = StickParams::new(2.0, 0.0, 0.0, 0.0, 5.0 / 3.0, th, 10.0, 0.0, 30.0)
+        .expect("a stick inside the model's domain");
     base.mass_kg = 0.0;
     let md = InertiaModel::new(InertiaParams {
         base,

@@ -17,6 +17,7 @@
 pub mod chapters;
 pub mod cli;
 pub mod error;
+pub mod flags;
 pub mod lab;
 pub mod ladder;
 pub mod numerics;

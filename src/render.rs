@@ -128,7 +128,7 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
         if text.is_none() && readme.is_none() && !in_appendix {
             continue; // neither its text, the README's findings nor the appendix need it
         }
-        let report = chapters::run_default(info.id, &ctx)?;
+        let report = info.run_default(&ctx)?;
         if let Some((path, text)) = text {
             let new = fill_blocks(text, &|n| table_of(&report, n))
                 .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;

@@ -298,3 +298,119 @@ fn the_cycle_finder_finds_cycles() {
             .collect()
     );
 }
+
+/// The top-level module of `f` (`cli.rs`, `chapters`, ...), relative to `src/`.
+fn top_level(f: &Path) -> String {
+    let rel = f.strip_prefix(src()).expect("below src");
+    rel.components()
+        .next()
+        .map(|c| c.as_os_str().to_string_lossy().to_string())
+        .unwrap_or_default()
+}
+
+#[test]
+fn clap_and_serde_stay_in_the_cli_chapter_and_report_layers() {
+    // the command line (cli, main, its flag table, render, the lab), the chapters and
+    // the report; every layer below knows neither
+    const ALLOWED: [&str; 8] = [
+        "cli",
+        "main.rs",
+        "render.rs",
+        "flags",
+        "lab",
+        "chapters",
+        "report",
+        "lib.rs",
+    ];
+    let mut bad = Vec::new();
+    for f in rust_files(&src()) {
+        if ALLOWED.contains(&top_level(&f).as_str()) {
+            continue;
+        }
+        let c = code(&f);
+        for w in ["clap::", "clap ", "serde", "#[arg(", "#[command("] {
+            if c.contains(w) {
+                bad.push(format!("{}: {w}", f.display()));
+            }
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "clap or serde below the CLI:\n{}",
+        bad.join("\n")
+    );
+}
+
+/// The registry's lines of `src/chapters/mod.rs`: (module, id) of each chapter.
+fn registry() -> Vec<(String, String)> {
+    let text = std::fs::read_to_string(src().join("chapters").join("mod.rs")).expect("registry");
+    text.lines()
+        .filter_map(|l| l.trim().strip_prefix("chapter!("))
+        .map(|rest| {
+            let parts: Vec<&str> = rest.splitn(4, ',').collect();
+            let id = parts.get(2).copied().unwrap_or("").trim().trim_matches('"');
+            (parts[0].trim().to_string(), id.to_string())
+        })
+        .collect()
+}
+
+/// Whether `code` names module `m` as a path (`m::` or `chapters::m`, not inside a
+/// longer identifier).
+fn names_module(code: &str, m: &str) -> bool {
+    let ident = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    code.match_indices(m).any(|(i, _)| {
+        let before = code[..i].chars().next_back().is_none_or(|c| !ident(c));
+        let after = &code[i + m.len()..];
+        before && (after.starts_with("::") || code[..i].ends_with("chapters::"))
+    })
+}
+
+#[test]
+fn the_registry_is_the_only_place_outside_a_chapter_that_names_it() {
+    // The one dependent by design: the lab is chapter 6's simulator in a browser.
+    const DEPENDENTS: [(&str, &str); 1] = [("lab", "stick_state_machine")];
+    let reg = registry();
+    let modules = chapter_modules();
+    assert_eq!(
+        reg.len(),
+        modules.len(),
+        "one registry line per chapter module: {reg:?}"
+    );
+    let mut bad = Vec::new();
+    for f in rust_files(&src()) {
+        let rel = f.strip_prefix(src()).unwrap().to_string_lossy().to_string();
+        if rel == "chapters/mod.rs" {
+            continue; // the registry
+        }
+        let c = code(&f);
+        for (m, id) in &reg {
+            let own =
+                rel.starts_with(&format!("chapters/{m}/")) || rel == format!("chapters/{m}.rs");
+            if own || DEPENDENTS.contains(&(top_level(&f).as_str(), m.as_str())) {
+                continue;
+            }
+            if c.contains(&format!("\"{id}\"")) || names_module(&c, m) {
+                bad.push(format!("{rel} names chapter {id}"));
+            }
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "chapters named outside the registry:\n{}",
+        bad.join("\n")
+    );
+}
+
+#[test]
+fn the_registry_reader_sees_the_module_names() {
+    assert!(names_module(
+        "use crate::chapters::stick_with_inertia;",
+        "stick_with_inertia"
+    ));
+    assert!(names_module(
+        "stick_with_inertia::run(a)",
+        "stick_with_inertia"
+    ));
+    assert!(!names_module("rigid::effective_mass(&b)", "effective_mass"));
+    assert!(!names_module("my_effective_mass::x", "effective_mass"));
+}

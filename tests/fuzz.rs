@@ -36,127 +36,27 @@ struct Flag {
     relative: bool,
 }
 
-const fn fl(name: &'static str, lo: f64, hi: f64, lo_open: bool, hi_open: bool) -> Flag {
-    Flag {
-        name,
-        lo,
-        hi,
-        lo_open,
-        hi_open,
-        relative: false,
-    }
-}
-
-const fn rel(name: &'static str, lo: f64, hi: f64, lo_open: bool, hi_open: bool) -> Flag {
-    Flag {
-        name,
-        lo,
-        hi,
-        lo_open,
-        hi_open,
-        relative: true,
-    }
-}
-
-const G: Flag = fl("--g-mps2", 1.0, 25.0, false, false);
-const HALF_PI: f64 = std::f64::consts::FRAC_PI_2;
-
-/// The documented ranges, chapter by chapter (the `--help` texts and README).
+/// The documented ranges, chapter by chapter: the library's flag table (the registry's
+/// `ChapterInfo::flags`, which also writes the `--help` lines and validates the values).
 fn table() -> Vec<(&'static str, Vec<Flag>)> {
-    vec![
-        (
-            "locomotion-definition",
-            vec![
-                // pairs: each part 0 or 1e-100 <= |part| <= 1e100
-                fl("--object-velocity", 1e-100, 1e100, false, false),
-                fl("--medium-velocity", 1e-100, 1e100, false, false),
-            ],
-        ),
-        (
-            "effective-mass",
-            vec![
-                fl("--angle-deg", -90.0, 90.0, true, true),
-                fl("--mu", 0.0, 2.0, false, false),
-            ],
-        ),
-        (
-            "horizontal-shaking",
-            vec![
-                fl("--mu", 0.01, 2.0, false, true),
-                fl("--amplitude-m", 1e-6, 10.0, false, false),
-                fl("--frequency-hz", 0.01, 1000.0, false, false),
-                fl("--bias", 0.0, 1.0, false, true),
-                G,
-            ],
-        ),
-        (
-            "vertical-shaking",
-            vec![
-                fl("--gamma", 1.000001, 100.0, false, false),
-                fl("--frequency-hz", 0.1, 1000.0, false, false),
-                fl("--mu", 0.01, 2.0, false, true),
-                fl("--bias", 0.0, 1.0, false, true),
-                G,
-            ],
-        ),
-        (
-            "asymmetric-shaking",
-            vec![
-                fl("--mu", 0.0, 10.0, true, false),
-                fl("--slow-velocity-mps", 1e-4, 10.0, false, false),
-                rel("--fast-velocity-mps", 0.1, 100.0, true, false),
-                fl("--slow-duration-s", 1e-4, 10.0, false, false),
-                rel("--fast-duration-s", 0.01, 0.01, false, false),
-                rel("--viscous-c", 0.25, 2.5e5, false, false),
-                G,
-            ],
-        ),
-        (
-            "stick-state-machine",
-            vec![
-                fl("--length-m", 0.015, 1.5, false, false),
-                fl("--mass-kg", 0.1, 10.0, false, false),
-                fl("--stiffness", 0.0, 100.0, false, false),
-                fl("--damping", 0.0, 0.1, false, false),
-                fl("--mu", 0.0, 2.0, false, false),
-                fl("--theta0-rad", -HALF_PI, HALF_PI, true, true),
-                fl("--gamma", 0.0, 50.0, false, false),
-                fl("--frequency-hz", 1.0, 1000.0, false, false),
-                rel("--duration-s", 0.0, 264.0, true, false),
-                fl("--rtol", 1e-14, 1e-2, false, false),
-                G,
-            ],
-        ),
-        (
-            "stick-with-inertia",
-            vec![
-                fl("--length-m", 0.015, 1.5, false, false),
-                rel("--tip-mass-kg", 0.0, 10.0, false, false), // m + m_r >= 1e-3 kg
-                rel("--rod-mass-kg", 0.0, 10.0, false, false),
-                fl("--stiffness", 0.0, 100.0, false, false),
-                rel("--damping", 0.0, 0.1, false, false), // above 0 when m_r = 0
-                fl("--mu", 0.0, 2.0, false, false),
-                fl("--theta0-rad", -HALF_PI, HALF_PI, true, true),
-                fl("--gamma", 0.0, 50.0, false, false),
-                fl("--frequency-hz", 1.0, 1000.0, false, false),
-                fl("--duration-s", 0.0, 100.0, true, false),
-                fl("--rtol", 1e-14, 1e-2, false, false),
-                fl("--restitution", 0.0, 1.0, false, false),
-                G,
-            ],
-        ),
-        (
-            "speed-vs-accuracy",
-            vec![
-                fl("--frequency-hz", 1.0, 100.0, false, false),
-                fl("--gamma", 1.5, 50.0, true, true),
-                fl("--mu", 0.01, 2.0, false, true),
-                rel("--bias", 7.5e-3, 0.99, false, false), // 3e-3/mu at mu = 0.4
-                fl("--restitution", 0.0, 0.8, true, false),
-                fl("--g-mps2", 3.0, 25.0, false, false),
-            ],
-        ),
-    ]
+    locomotion_workbook::chapters::CHAPTERS
+        .iter()
+        .map(|c| {
+            let flags = c
+                .flags
+                .iter()
+                .map(|f| Flag {
+                    name: f.name,
+                    lo: f.range.lo,
+                    hi: f.range.hi,
+                    lo_open: f.range.lo_open,
+                    hi_open: f.range.hi_open,
+                    relative: f.coupled,
+                })
+                .collect();
+            (c.id, flags)
+        })
+        .collect()
 }
 
 const SPECIAL: [&str; 9] = [

@@ -419,3 +419,19 @@ fn the_events_download_is_the_clis_events_file() {
     assert!(file.lines().count() > 50, "{file}");
     assert_eq!(lab["events_csv"].as_str().expect("csv"), file);
 }
+
+#[test]
+fn the_sliders_ends_are_the_flag_tables_ranges() {
+    // the page's sliders take their ends from /api/scenes `ranges`: chapter 6's table
+    let r = api::scenes()["ranges"].clone();
+    for f in locomotion_workbook::chapters::stick_state_machine::FLAGS {
+        let Some((key, _, _)) = api::FIELDS.iter().find(|(_, flag, _)| *flag == f.name) else {
+            continue;
+        };
+        assert_eq!(r[key]["min"].as_f64(), Some(f.range.lo), "{key}");
+        assert_eq!(r[key]["max"].as_f64(), Some(f.range.hi), "{key}");
+        assert_eq!(r[key]["max_open"].as_bool(), Some(f.range.hi_open), "{key}");
+    }
+    assert_eq!(r["mu"]["max"].as_f64(), Some(2.0));
+    assert_eq!(r["theta0_rad"]["min_open"].as_bool(), Some(true));
+}

@@ -398,7 +398,7 @@ use locomotion_workbook::physics::stick::StickParams;
 fn still_plate_stick() -> StickParams {
     // The self-locking stick (L = 0.15 m, m = 1 kg, k = 10, gamma = 0.01, mu = 0.4,
     // theta_0 = 0.3) on a plate that does not move (Gamma = 0).
-    StickParams::new(0.15, 1.0, 10.0, 0.01, 0.4, 0.3, 9.81, 0.0, 30.0)
+    StickParams::new(0.15, 1.0, 10.0, 0.01, 0.4, 0.3, 9.81, 0.0, 30.0).unwrap()
 }
 
 #[test]

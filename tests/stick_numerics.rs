@@ -223,7 +223,7 @@ fn random_scenes_have_one_transition_sequence_with_both_pairs() {
         let mu = uniform(0.2, 0.8);
         let gamma = uniform(1.5, 12.0);
         let f_hz = uniform(15.0, 60.0);
-        let p = StickParams::new(0.15, 1.0, 10.0, 0.01, mu, theta0, 9.81, gamma, f_hz);
+        let p = StickParams::new(0.15, 1.0, 10.0, 0.01, mu, theta0, 9.81, gamma, f_hz).unwrap();
         let duration = 12.0 / f_hz;
         let reference = phases(&p, duration, Method::Dopri5, 1e-12, true);
         for (method, tol) in [

@@ -842,7 +842,8 @@ fn a_period_three_gait_is_found_as_period_three() {
         p.g_mps2,
         12.0,
         10.0,
-    );
+    )
+    .unwrap();
     let m = StickModel::new(p);
     let o = opts(1e-12, Method::Dop853);
     let x0 = static_start(&m).unwrap();

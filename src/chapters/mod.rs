@@ -1,11 +1,24 @@
-//! The chapter registry: one entry per chapter id of `DESIGN.md`.
+//! The chapter registry: one entry per chapter id of `DESIGN.md`, in [`CHAPTERS`].
 //!
-//! Each chapter module exposes `Args` (its clap flags, SI units in the names, the
-//! document's scene as defaults) and `run(&Args, &Context) -> Result<ChapterReport>`.
+//! Everything that lists or runs chapters is built from it: the CLI's subcommands and
+//! their `--help` (`crate::cli`), `list`, `all`, `render`, the falsification test
+//! (`tests/falsification.rs` through [`mutations`]), [`run_default`], [`uses_g`], the
+//! fuzz test's table of ranges and the lab's sliders (through [`ChapterInfo::flags`]).
+//!
+//! A chapter is a module (folder `<id with _>/` or file) that exposes
+//!
+//! - `Args`: its clap flags (SI units in the names, the document's scene as defaults);
+//! - `FLAGS: &[crate::flags::Flag]`: the table of its physical flags (range, reason,
+//!   default per scene), which writes their `--help` lines and validates them;
+//! - `run(&Args, &Context) -> Result<ChapterReport>`;
+//! - `mutations() -> Vec<Mutation>`: its falsification mutations;
+//!
+//! and is plugged in by its `pub mod` line and its one [`chapter!`] line in [`CHAPTERS`].
 //! Chapters compose `physics` and `numerics`; they hold no stepping loops.
 
-use crate::error::Result;
-use crate::report::ChapterReport;
+use crate::error::{Result, WorkbookError};
+use crate::flags::Flag;
+use crate::report::{ChapterReport, Mutation};
 use clap::{Args as ClapArgs, FromArgMatches};
 use std::path::PathBuf;
 
@@ -23,8 +36,49 @@ pub mod vertical_shaking;
 /// byte-identical set (`.gitignore`: `figures/*/wall-time/`).
 pub const WALL_TIME_DIR: &str = "wall-time";
 
-/// Static description of a chapter.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// What a chapter does, whatever the type of its flags: the registry's view of a
+/// chapter module (implemented by [`Module`] for every module's `Args`).
+pub trait Chapter: Sync {
+    /// Adds the chapter's flags (its `Args`) to its subcommand.
+    fn args(&self, cmd: clap::Command) -> clap::Command;
+    /// Runs the chapter on the parsed flags of its subcommand.
+    fn run(&self, matches: &clap::ArgMatches, ctx: &Context) -> Result<ChapterReport>;
+    /// Runs the chapter with its default flags.
+    fn run_default(&self, ctx: &Context) -> Result<ChapterReport>;
+    /// The falsification mutations of its claims.
+    fn mutations(&self) -> Vec<Mutation>;
+}
+
+/// A chapter module's entry points, typed by its `Args` (`A`).
+pub struct Module<A> {
+    /// The module's `run`.
+    pub run: fn(&A, &Context) -> Result<ChapterReport>,
+    /// The module's `mutations`.
+    pub mutations: fn() -> Vec<Mutation>,
+}
+
+impl<A: ClapArgs + FromArgMatches> Chapter for Module<A> {
+    fn args(&self, cmd: clap::Command) -> clap::Command {
+        A::augment_args(cmd)
+    }
+
+    fn run(&self, matches: &clap::ArgMatches, ctx: &Context) -> Result<ChapterReport> {
+        let args = A::from_arg_matches(matches)
+            .map_err(|e| WorkbookError::Invalid(format!("flags parsed but not read: {e}")))?;
+        (self.run)(&args, ctx)
+    }
+
+    fn run_default(&self, ctx: &Context) -> Result<ChapterReport> {
+        (self.run)(&default_args(), ctx)
+    }
+
+    fn mutations(&self) -> Vec<Mutation> {
+        (self.mutations)()
+    }
+}
+
+/// A registered chapter: its description and its entry points.
+#[derive(Clone, Copy)]
 pub struct ChapterInfo {
     /// Kebab-case id: the subcommand, figure folder and course-text name.
     pub id: &'static str,
@@ -34,8 +88,29 @@ pub struct ChapterInfo {
     pub title: &'static str,
     /// Section(s) of the source document.
     pub section: &'static str,
-    /// The question the chapter answers.
+    /// The question the chapter answers (its line in `list` and `--help`).
     pub question: &'static str,
+    /// The table of its physical flags (the module's `FLAGS`).
+    pub flags: &'static [Flag],
+    /// Its entry points.
+    pub chapter: &'static dyn Chapter,
+}
+
+impl PartialEq for ChapterInfo {
+    fn eq(&self, other: &Self) -> bool {
+        self.id == other.id
+    }
+}
+
+impl Eq for ChapterInfo {}
+
+impl std::fmt::Debug for ChapterInfo {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ChapterInfo")
+            .field("id", &self.id)
+            .field("number", &self.number)
+            .finish_non_exhaustive()
+    }
 }
 
 impl ChapterInfo {
@@ -48,66 +123,84 @@ impl ChapterInfo {
     pub fn report(&self) -> ChapterReport {
         ChapterReport::new(self.id, self.title, self.section)
     }
+
+    /// Whether its results depend on g: its table lists `--g-mps2` (chapters 1 and 2
+    /// compute ratios independent of it and refuse the flag).
+    pub fn uses_g(&self) -> bool {
+        crate::flags::find(self.flags, "--g-mps2").is_some()
+    }
+
+    /// Whether its work grows with its flags (a [`Flag::budgeted`] entry): the one kind
+    /// of chapter that accepts `--allow-long-runs`.
+    pub fn work_budget(&self) -> bool {
+        self.flags.iter().any(|f| f.budgeted)
+    }
+
+    /// Its subcommand: `workbook <id>`, its flags with their help lines from [`Self::flags`].
+    pub fn subcommand(&self) -> clap::Command {
+        let sections = match self.section {
+            "all" => "all sections".to_string(),
+            s if s.contains(',') => format!("sections {s}"),
+            s => format!("section {s}"),
+        };
+        let table = self.flags;
+        self.chapter
+            .args(clap::Command::new(self.id))
+            .about(format!(
+                "Ch. {} ({sections}): {}",
+                self.number, self.question
+            ))
+            .long_about(None)
+            .mut_args(move |a| {
+                let entry = a
+                    .get_long()
+                    .and_then(|l| crate::flags::find(table, &format!("--{l}")));
+                match entry {
+                    Some(f) => a.help(f.help()),
+                    None => a,
+                }
+            })
+    }
+
+    /// Runs it with its default flags.
+    pub fn run_default(&self, ctx: &Context) -> Result<ChapterReport> {
+        self.chapter.run_default(ctx)
+    }
+
+    /// Its falsification mutations.
+    pub fn mutations(&self) -> Vec<Mutation> {
+        self.chapter.mutations()
+    }
 }
 
-/// All chapters, in course order.
-pub const CHAPTERS: [ChapterInfo; 8] = [
-    ChapterInfo {
-        id: "locomotion-definition",
-        number: 1,
-        title: "What counts as locomotion",
-        section: "1",
-        question: "When is a motion locomotion and not dragging? (convex hull of media velocities; sailing)",
-    },
-    ChapterInfo {
-        id: "effective-mass",
-        number: 2,
-        title: "Effective mass and dynamic jamming",
-        section: "2",
-        question: "Why does a vertical impulse on a leaning stick push it sideways? (m along, m/4 across; J_ℓ/J_v)",
-    },
-    ChapterInfo {
-        id: "horizontal-shaking",
-        number: 3,
-        title: "Horizontal shaking turns Coulomb friction viscous",
-        section: "3.1.1",
-        question: "How does horizontal vibration turn Coulomb friction into an effective viscous law? (booktop)",
-    },
-    ChapterInfo {
-        id: "vertical-shaking",
-        number: 4,
-        title: "Vertical shaking and the law μ_eff = v_ave/v_z",
-        section: "3.1.2",
-        question: "How does vertical vibration make a small bias force move a block? (μ_eff = v_ave/v_z)",
-    },
-    ChapterInfo {
-        id: "asymmetric-shaking",
-        number: 5,
-        title: "Linear versus Coulomb friction under asymmetric shaking",
-        section: "3.2",
-        question: "Why does asymmetric shaking move a block with Coulomb friction but not with linear friction?",
-    },
-    ChapterInfo {
-        id: "stick-state-machine",
-        number: 6,
-        title: "The stick's hybrid state machine",
-        section: "4, 5",
-        question: "The hybrid simulation of the stick: flight, pivot, slide left, slide right, collision",
-    },
-    ChapterInfo {
-        id: "speed-vs-accuracy",
-        number: 7,
-        title: "Speed versus accuracy of the numerical methods",
-        section: "all",
-        question: "Work-precision charts and the places where numerical methods fail",
-    },
-    ChapterInfo {
-        id: "stick-with-inertia",
-        number: 8,
-        title: "The stick with inertia",
-        section: "2, 4",
-        question: "Does a stick with real mass walk as the massless model says? (rod mass + tip mass, impacts with friction, Painleve cases, the massless limit)",
-    },
+/// One registry line: `chapter!(module, number, "id", "title", "section", "question")`.
+macro_rules! chapter {
+    ($module:ident, $number:literal, $id:literal, $title:literal, $section:literal, $question:literal) => {
+        ChapterInfo {
+            id: $id,
+            number: $number,
+            title: $title,
+            section: $section,
+            question: $question,
+            flags: $module::FLAGS,
+            chapter: &Module {
+                run: $module::run,
+                mutations: $module::mutations,
+            },
+        }
+    };
+}
+
+/// All chapters, in course order: the registry.
+pub static CHAPTERS: &[ChapterInfo] = &[
+    chapter!(locomotion_definition, 1, "locomotion-definition", "What counts as locomotion", "1", "When is a motion locomotion and not dragging? (convex hull of media velocities; sailing)"),
+    chapter!(effective_mass, 2, "effective-mass", "Effective mass and dynamic jamming", "2", "Why does a vertical impulse on a leaning stick push it sideways? (m along, m/4 across; J_ℓ/J_v)"),
+    chapter!(horizontal_shaking, 3, "horizontal-shaking", "Horizontal shaking turns Coulomb friction viscous", "3.1.1", "How does horizontal vibration turn Coulomb friction into an effective viscous law? (booktop)"),
+    chapter!(vertical_shaking, 4, "vertical-shaking", "Vertical shaking and the law μ_eff = v_ave/v_z", "3.1.2", "How does vertical vibration make a small bias force move a block? (μ_eff = v_ave/v_z)"),
+    chapter!(asymmetric_shaking, 5, "asymmetric-shaking", "Linear versus Coulomb friction under asymmetric shaking", "3.2", "Why does asymmetric shaking move a block with Coulomb friction but not with linear friction?"),
+    chapter!(stick_state_machine, 6, "stick-state-machine", "The stick's hybrid state machine", "4, 5", "The hybrid simulation of the stick: flight, pivot, slide left, slide right, collision"),
+    chapter!(speed_vs_accuracy, 7, "speed-vs-accuracy", "Speed versus accuracy of the numerical methods", "all", "Work-precision charts and the places where numerical methods fail"),
+    chapter!(stick_with_inertia, 8, "stick-with-inertia", "The stick with inertia", "2, 4", "Does a stick with real mass walk as the massless model says? (rod mass + tip mass, impacts with friction, Painleve cases, the massless limit)"),
 ];
 
 /// Looks a chapter up by id.
@@ -115,29 +208,24 @@ pub fn info(id: &str) -> Option<&'static ChapterInfo> {
     CHAPTERS.iter().find(|c| c.id == id)
 }
 
-/// Smallest accepted `--g-mps2` (m/s^2).
-pub const G_MIN_MPS2: f64 = 1.0;
-/// Largest accepted `--g-mps2` (m/s^2).
-pub const G_MAX_MPS2: f64 = 25.0;
-/// Why `--g-mps2` has its range (the error line and `--help` quote it).
-pub const G_WHY: &str = "the scenes are table-top experiments on a planet's surface, from below the Moon's 1.62 to above Jupiter's 24.8 m/s^2; every chapter's checks are run at both ends (tests/cli.rs), and the stick's spring holds it up over this range";
+pub use crate::flags::{G_MAX_MPS2, G_MIN_MPS2};
 
-/// Checks `--g-mps2` against [`G_MIN_MPS2`, `G_MAX_MPS2`] (m/s^2).
+/// Checks `--g-mps2` against [`crate::flags::G`]: [`G_MIN_MPS2`, `G_MAX_MPS2`] (m/s^2).
 pub fn check_g(g_mps2: f64) -> Result<f64> {
-    crate::error::range("--g-mps2", g_mps2, G_MIN_MPS2, G_MAX_MPS2, "m/s^2", G_WHY)
+    crate::flags::G.check(g_mps2)
 }
 
-/// Whether chapter `id` uses g (chapters 1 and 2 compute ratios independent of it).
+/// Whether chapter `id` uses g ([`ChapterInfo::uses_g`]; false for an unknown id).
 /// `all --g-mps2` applies g to these chapters only.
 pub fn uses_g(id: &str) -> bool {
-    !matches!(id, "locomotion-definition" | "effective-mass")
+    info(id).is_some_and(ChapterInfo::uses_g)
 }
 
 /// Refuses `--g-mps2` in a chapter whose results do not depend on g (a flag must mean
 /// something wherever it is accepted).
 pub fn refuse_g(id: &str, ctx: &Context) -> Result<()> {
     match ctx.g_mps2 {
-        Some(g) => Err(crate::error::WorkbookError::bad_input(
+        Some(g) => Err(WorkbookError::bad_input(
             "--g-mps2",
             g,
             &format!("none: {id} does not use g (its results are ratios independent of gravity); drop the flag"),
@@ -212,18 +300,11 @@ pub fn default_args<A: ClapArgs + FromArgMatches>() -> A {
 
 /// Runs a chapter by id with its default flags.
 pub fn run_default(id: &str, ctx: &Context) -> Result<ChapterReport> {
-    match id {
-        "locomotion-definition" => locomotion_definition::run(&default_args(), ctx),
-        "effective-mass" => effective_mass::run(&default_args(), ctx),
-        "horizontal-shaking" => horizontal_shaking::run(&default_args(), ctx),
-        "vertical-shaking" => vertical_shaking::run(&default_args(), ctx),
-        "asymmetric-shaking" => asymmetric_shaking::run(&default_args(), ctx),
-        "stick-state-machine" => stick_state_machine::run(&default_args(), ctx),
-        "speed-vs-accuracy" => speed_vs_accuracy::run(&default_args(), ctx),
-        "stick-with-inertia" => stick_with_inertia::run(&default_args(), ctx),
-        other => Err(crate::error::WorkbookError::bad_input(
+    match info(id) {
+        Some(c) => c.run_default(ctx),
+        None => Err(WorkbookError::bad_input(
             "<chapter-id>",
-            other,
+            id,
             "one of the ids printed by `workbook list`",
         )),
     }
@@ -246,18 +327,8 @@ pub fn quick_claim<A: ClapArgs + FromArgMatches, D>(
 }
 
 /// The falsification mutations of chapter `id`'s claims (empty for an unknown id).
-pub fn mutations(id: &str) -> Vec<crate::report::Mutation> {
-    match id {
-        "locomotion-definition" => locomotion_definition::mutations(),
-        "effective-mass" => effective_mass::mutations(),
-        "horizontal-shaking" => horizontal_shaking::mutations(),
-        "vertical-shaking" => vertical_shaking::mutations(),
-        "asymmetric-shaking" => asymmetric_shaking::mutations(),
-        "stick-state-machine" => stick_state_machine::mutations(),
-        "speed-vs-accuracy" => speed_vs_accuracy::mutations(),
-        "stick-with-inertia" => stick_with_inertia::mutations(),
-        _ => Vec::new(),
-    }
+pub fn mutations(id: &str) -> Vec<Mutation> {
+    info(id).map(ChapterInfo::mutations).unwrap_or_default()
 }
 
 /// The report of a chapter that is not built yet: says so, no claims.
@@ -278,5 +349,77 @@ mod tests {
             assert_eq!(c.number as usize, i + 1);
             assert_eq!(info(c.id), Some(c));
         }
+    }
+
+    /// The value flags of a chapter's subcommand (`--x VALUE`, not an enumeration or a
+    /// path, not global).
+    fn value_flags(cmd: &clap::Command) -> Vec<String> {
+        cmd.get_arguments()
+            .filter(|a| a.get_action().takes_values() && a.get_possible_values().is_empty())
+            .filter(|a| a.get_value_hint() != clap::ValueHint::FilePath)
+            .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
+            .collect()
+    }
+
+    #[test]
+    fn every_value_flag_has_one_table_entry_and_its_help_line() {
+        for c in CHAPTERS {
+            let cmd = c.subcommand();
+            let flags = value_flags(&cmd);
+            for f in &flags {
+                assert_eq!(
+                    c.flags.iter().filter(|e| e.name == f).count(),
+                    1,
+                    "{}: {f} in the table once",
+                    c.id
+                );
+            }
+            for e in c.flags.iter().filter(|e| e.name != "--g-mps2") {
+                assert!(
+                    flags.contains(&e.name.to_string()),
+                    "{}: {} is no flag",
+                    c.id,
+                    e.name
+                );
+                let arg = cmd
+                    .get_arguments()
+                    .find(|a| a.get_long() == Some(&e.name[2..]))
+                    .unwrap();
+                let help = arg.get_help().map(|h| h.to_string()).unwrap_or_default();
+                assert_eq!(help, e.help(), "{}: {}", c.id, e.name);
+                assert!(
+                    help.contains(&e.range_text()) && !e.reason.is_empty(),
+                    "{help}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn g_and_the_work_budget_come_from_the_tables() {
+        for c in CHAPTERS {
+            assert_eq!(uses_g(c.id), c.flags.iter().any(|f| f.name == "--g-mps2"));
+        }
+        assert!(!uses_g("no-such-chapter"));
+        assert_eq!(CHAPTERS.iter().filter(|c| c.work_budget()).count(), 1);
+        assert_eq!(CHAPTERS.iter().filter(|c| !c.uses_g()).count(), 2);
+    }
+
+    #[test]
+    fn a_value_outside_its_entry_is_one_line_naming_flag_value_range_and_reason() {
+        for c in CHAPTERS {
+            for f in c.flags.iter().filter(|f| f.range.hi.is_finite()) {
+                let e = f.check(f.range.hi * 2.0 + 1.0).unwrap_err().to_string();
+                assert!(e.contains(f.name) && e.contains(&f.range_text()), "{e}");
+                assert!(e.contains(f.reason) && e.lines().count() == 1, "{e}");
+                assert_eq!(f.check(f64::NAN).unwrap_err().exit_code(), 2);
+            }
+        }
+    }
+
+    #[test]
+    fn unknown_ids_run_nothing() {
+        assert!(run_default("no-such-chapter", &Context::headless(true)).is_err());
+        assert!(mutations("no-such-chapter").is_empty());
     }
 }

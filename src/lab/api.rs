@@ -187,9 +187,13 @@ pub fn parse_run(body: &[u8]) -> Result<RunRequest, ApiError> {
         .try_get_matches_from(&argv)
         .map_err(|e| ApiError::bad(clap_line(&e)))?;
     let cli = Cli::from_arg_matches(&matches).map_err(|e| ApiError::bad(clap_line(&e)))?;
-    let Command::StickStateMachine(args) = &cli.command else {
-        return Err(internal("the request did not parse as stick-state-machine"));
+    let args = match &cli.command {
+        Command::Chapter(c) if c.chapter.id == ssm::ID => {
+            ssm::Args::from_arg_matches(&c.matches).map_err(|e| ApiError::bad(clap_line(&e)))?
+        }
+        _ => return Err(internal("the request did not parse as the stick's chapter")),
     };
+    let args = &args;
     let ctx = cli.context().map_err(|e| ApiError::bad(e.to_string()))?;
     let (params, duration_s, opts) =
         ssm::setup(args, &ctx).map_err(|e| ApiError::bad(e.to_string()))?;
@@ -255,5 +259,25 @@ pub fn scenes() -> Value {
     serde_json::json!({
         "jamming": one(Scene::Jamming, "jamming"),
         "authors": one(Scene::Authors, "authors"),
+        "ranges": ranges(),
     })
+}
+
+/// The sliders' ends, per request field: chapter 6's flag table ([`ssm::FLAGS`], the
+/// CLI's ranges with their reasons).
+pub fn ranges() -> Value {
+    let mut o = serde_json::Map::new();
+    for (key, flag, _) in FIELDS {
+        if let Some(f) = crate::flags::find(ssm::FLAGS, flag) {
+            let r = f.range;
+            o.insert(
+                key.to_string(),
+                serde_json::json!({
+                    "min": r.lo, "max": r.hi, "min_open": r.lo_open, "max_open": r.hi_open,
+                    "unit": f.unit, "range": f.range_text(), "reason": f.reason,
+                }),
+            );
+        }
+    }
+    Value::Object(o)
 }

@@ -12,8 +12,11 @@ const PARAMS = [
   { key: "damping", name: "γ", unit: "N m s/rad", min: 0, max: 0.1, step: 0.0005, help: "hinge damper" },
   { key: "length_m", name: "L", unit: "m", min: 0.015, max: 1.5, step: 0.005, help: "rod length" },
   { key: "mass_kg", name: "m", unit: "kg", min: 0.1, max: 10, step: 0.1, help: "tip mass at P" },
-  { key: "duration_s", name: "duration", unit: "s", min: 0.2, max: 10, step: 0.1, help: "simulated time" },
+  { key: "duration_s", name: "duration", unit: "s", min: 0.2, max: 10, step: 0.1, help: "simulated time", own: true },
 ];
+// min and max above are the fallback: the sliders' ends come from chapter 6's flag table
+// (/api/scenes `ranges`, the CLI's ranges), except where the lab has its own bound
+// (`own`: the duration, bounded by the lab's 1000 drive cycles).
 const FLAG_OF = {
   theta0_rad: "--theta0-rad", mu: "--mu", gamma: "--gamma", frequency_hz: "--frequency-hz",
   stiffness: "--stiffness", damping: "--damping", length_m: "--length-m", mass_kg: "--mass-kg",
@@ -58,6 +61,18 @@ function buildSliders() {
       if (v !== "" && Number.isFinite(Number(v))) slider.value = v;
       setValue(p.key, v);
     });
+  }
+}
+
+// The sliders' ends from the flag table; an open end stays one step inside.
+function applyRanges(ranges) {
+  for (const p of PARAMS) {
+    const r = ranges && ranges[p.key];
+    if (!r || p.own) continue;
+    const s = $(`s-${p.key}`);
+    s.min = r.min_open ? r.min + p.step : r.min;
+    s.max = r.max_open ? r.max - p.step : r.max;
+    s.title = `${r.range} (${r.unit}): ${r.reason}`;
   }
 }
 
@@ -283,6 +298,7 @@ async function start() {
   legend();
   try {
     lab.scenes = await (await fetch("/api/scenes")).json();
+    applyRanges(lab.scenes.ranges);
   } catch (e) {
     showError(`the lab does not answer: is \`workbook lab\` still running? (${e.message})`);
     return;

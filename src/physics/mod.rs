@@ -4,6 +4,7 @@
 //! integration exposes itself as a [`crate::numerics::hybrid::HybridSystem`].
 
 pub mod block;
+pub mod domain;
 pub mod friction;
 pub mod locomotion;
 pub mod plate;

@@ -180,9 +180,9 @@ fn check_6_5<E: Exercises>() {
         g_mps2: 9.81,
     };
     let (gamma, f_hz) = (3.0, 30.0);
-    let model = StickModel::new(StickParams::new(
-        0.15, 1.0, 10.0, 0.01, 0.4, 0.3, 9.81, gamma, f_hz,
-    ));
+    let model = StickModel::new(
+        StickParams::new(0.15, 1.0, 10.0, 0.01, 0.4, 0.3, 9.81, gamma, f_hz).unwrap(),
+    );
     for (i, (theta, w)) in [
         (0.35, 0.0),
         (0.3, 2.0),

@@ -19,7 +19,9 @@ pub mod statements;
 pub mod work;
 
 use super::{info, Context};
-use crate::error::{blame, check, range, Result, WorkbookError};
+use crate::error::{blame, check, Result, WorkbookError};
+use crate::flags::Flag;
+use crate::physics::domain::Interval;
 use crate::physics::plate::{PlateMotion, Sawtooth};
 use crate::physics::sawtooth::mu_min_for_lock;
 use crate::report::ChapterReport;
@@ -37,34 +39,100 @@ pub const MU_MAX: f64 = 10.0;
 /// Largest ratio of the fast to the slow speed accepted.
 pub const MAX_SPEED_RATIO: f64 = 1e3;
 
-/// Flags of the chapter: the two-velocity sawtooth and the two friction laws.
+/// Flags of the chapter: the two-velocity sawtooth and the two friction laws. Their
+/// help lines: [`FLAGS`].
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Coulomb friction coefficient mu between block and plate (dimensionless, <= 10 and
-    /// large enough to reach the steady state within 1e4 periods; default 0.3).
+    /// Coulomb friction coefficient mu between block and plate, [`MU`].
     #[arg(long, default_value_t = 0.3)]
     pub mu: f64,
-    /// Plate speed of the slow stroke, towards +x (m/s, 1e-4 to 10; default 0.1).
+    /// Plate speed of the slow stroke (m/s), [`SLOW_VELOCITY_MPS`].
     #[arg(long, default_value_t = 0.1)]
     pub slow_velocity_mps: f64,
-    /// Plate speed of the fast stroke back, towards -x (m/s, above the slow speed and at
-    /// most 1000 times it; default 0.3).
+    /// Plate speed of the fast stroke back (m/s), [`FAST_VELOCITY_MPS`].
     #[arg(long, default_value_t = 0.3)]
     pub fast_velocity_mps: f64,
-    /// Duration of the slow stroke (s, 1e-4 to 10; default 0.03; the block must lock
-    /// within 1e4 periods, see --mu). The fast stroke lasts
-    /// slow speed x slow duration / fast speed (zero net displacement).
+    /// Duration of the slow stroke (s), [`SLOW_DURATION_S`].
     #[arg(long, default_value_t = 0.03)]
     pub slow_duration_s: f64,
-    /// Duration of the fast stroke (s); optional: if given it must equal
-    /// slow speed x slow duration / fast speed (default: computed, 0.01 s).
+    /// Duration of the fast stroke (s), optional, [`FAST_DURATION_S`].
     #[arg(long)]
     pub fast_duration_s: Option<f64>,
-    /// Linear viscous friction coefficient per unit mass c for the linear law
-    /// F = -m c v_rel (1/s; 0.01/T <= c <= 1e4/T with T the period; default 30).
+    /// Linear viscous friction coefficient per unit mass c (1/s), [`VISCOUS_C`].
     #[arg(long, default_value_t = 30.0)]
     pub viscous_c: f64,
 }
+
+/// `--mu`.
+pub const MU: Flag = Flag::new(
+    "--mu",
+    "Coulomb friction coefficient mu between block and plate; default 0.3",
+    "dimensionless",
+    Interval::closed(0.0, MU_MAX).open_below(),
+)
+.why("dry friction; it must also let the block reach its steady state within 1e4 periods: mu >= a/(g (T_s + 1e4 (T_s - T_f)))");
+
+/// `--slow-velocity-mps`.
+pub const SLOW_VELOCITY_MPS: Flag = Flag::new(
+    "--slow-velocity-mps",
+    "Plate speed of the slow stroke, towards +x; default 0.1",
+    "m/s",
+    Interval::closed(1e-4, 10.0),
+)
+.why("0.1 mm/s to 10 m/s; with --slow-duration-s it sets the stroke, bounded with --mu below");
+
+/// `--fast-velocity-mps`: its range is relative to the slow speed (here at its default).
+pub const FAST_VELOCITY_MPS: Flag = Flag::new(
+    "--fast-velocity-mps",
+    "Plate speed of the fast stroke back, towards -x; default 0.3",
+    "m/s",
+    Interval::closed(0.1, 100.0).open_below(),
+)
+.shown_as("slow speed < value <= 1000 x slow speed")
+.why("above the slow speed and at most 1000 times it")
+.coupled();
+
+/// `--slow-duration-s`.
+pub const SLOW_DURATION_S: Flag = Flag::new(
+    "--slow-duration-s",
+    "Duration of the slow stroke; the fast stroke lasts slow speed x slow duration / fast speed (zero net displacement); default 0.03",
+    "s",
+    Interval::closed(1e-4, 10.0),
+)
+.why("0.1 ms to 10 s; with the speeds and --mu it must let the block lock within 1e4 periods");
+
+/// `--fast-duration-s`: set by the other strokes (here at their defaults).
+pub const FAST_DURATION_S: Flag = Flag::new(
+    "--fast-duration-s",
+    "Duration of the fast stroke, optional (default: computed, 0.01 s)",
+    "s",
+    Interval::closed(0.01, 0.01),
+)
+.shown_as("value = slow speed x slow duration / fast speed")
+.why("zero net displacement of the plate")
+.coupled();
+
+/// `--viscous-c`: its range is relative to the period (here at the default strokes).
+pub const VISCOUS_C: Flag = Flag::new(
+    "--viscous-c",
+    "Linear viscous friction coefficient per unit mass c for the linear law F = -m c v_rel; default 30",
+    "1/s",
+    Interval::closed(0.25, 2.5e5),
+)
+.shown_as("0.01/T <= c <= 1e4/T with T the period")
+.why("six decades scaled by the period T of the sawtooth")
+.coupled();
+
+/// The table of the chapter's physical flags.
+pub const FLAGS: &[Flag] = &[
+    MU,
+    SLOW_VELOCITY_MPS,
+    FAST_VELOCITY_MPS,
+    SLOW_DURATION_S,
+    FAST_DURATION_S,
+    VISCOUS_C,
+    crate::flags::G,
+];
 
 /// The validated scene.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -89,14 +157,7 @@ impl Scene {
 /// Checks every flag (one line naming the flag, value and valid range on error).
 pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
     let g_mps2 = super::check_g(g_mps2)?;
-    let vs = range(
-        "--slow-velocity-mps",
-        a.slow_velocity_mps,
-        1e-4,
-        10.0,
-        "m/s",
-        "0.1 mm/s to 10 m/s; with --slow-duration-s it sets the stroke, bounded with --mu below",
-    )?;
+    let vs = SLOW_VELOCITY_MPS.check(a.slow_velocity_mps)?;
     let vf = check(
         "--fast-velocity-mps",
         a.fast_velocity_mps,
@@ -106,14 +167,7 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
             MAX_SPEED_RATIO * vs
         ),
     )?;
-    let ts = range(
-        "--slow-duration-s",
-        a.slow_duration_s,
-        1e-4,
-        10.0,
-        "s",
-        "0.1 ms to 10 s; with the speeds and --mu it must let the block lock within 1e4 periods",
-    )?;
+    let ts = SLOW_DURATION_S.check(a.slow_duration_s)?;
     let saw = Sawtooth {
         slow_velocity_mps: vs,
         fast_velocity_mps: vf,
@@ -130,7 +184,7 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
         )?;
     }
     let mu_min = mu_min_for_lock(&saw, g_mps2, MAX_LOCK_PERIODS);
-    let mu = check("--mu", a.mu, |m| m <= MU_MAX && m > 0.0, &format!("0 < mu <= {MU_MAX} (dimensionless), and mu >= a/(g (T_s + 1e4 (T_s - T_f))) to lock within 1e4 periods"))?;
+    let mu = MU.check(a.mu)?;
     if mu < mu_min {
         // The lock condition combines five flags: name the one the user set.
         let d: Args = super::default_args();

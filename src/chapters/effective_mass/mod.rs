@@ -20,27 +20,48 @@ mod sketch;
 mod statements;
 
 use super::{info, Context};
-use crate::error::{open_interval, range, Result};
+use crate::error::Result;
+use crate::flags::Flag;
+use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
 pub use evidence::{bisect, golden_max, rod_lock_angles_closed_form, rod_ratio};
 pub use mutations::PRINTS_NO_NUMBER;
 
-/// Flags of the chapter.
+/// Flags of the chapter (their help lines: [`FLAGS`]).
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Lean angle theta of the stick from the vertical, in degrees (-90 < theta < 90;
-    /// positive leans towards +x). Default 45 (the document's example, q = tan(theta) = 1).
+    /// Lean angle theta of the stick from the vertical (degrees), [`ANGLE_DEG`].
     #[arg(long, default_value_t = 45.0)]
     pub angle_deg: f64,
-    /// Coulomb friction coefficient mu at the contact point C (dimensionless, 0 <= mu <= 2:
-    /// dry contacts; the point-mass-limit check at I_G = 1e-6 m L^2 has a gap growing
-    /// like mu^3 that stays under its 1e-5 tolerance up to 2). Default 0.4 (the authors' scene).
+    /// Coulomb friction coefficient mu at the contact point C, [`MU`].
     #[arg(long, default_value_t = 0.4)]
     pub mu: f64,
 }
 
 /// Largest accepted friction coefficient (dimensionless).
 pub const MU_MAX: f64 = 2.0;
+
+/// `--angle-deg`.
+pub const ANGLE_DEG: Flag = Flag::new(
+    "--angle-deg",
+    "Lean angle theta of the stick from the vertical, positive towards +x; default 45, the document's example (q = tan(theta) = 1)",
+    "degrees",
+    Interval::open(-90.0, 90.0),
+)
+.why("a stick leaning on its foot C: at 90 degrees it lies on the plate");
+
+/// `--mu`.
+pub const MU: Flag = Flag::new(
+    "--mu",
+    "Coulomb friction coefficient mu at the contact point C; default 0.4, the authors' scene",
+    "dimensionless",
+    Interval::closed(0.0, MU_MAX),
+)
+.why("dry contacts; the point-mass-limit check at I_G = 1e-6 m L^2 (gap ~ mu^3) holds to its 1e-5 tolerance up to 2");
+
+/// The table of the chapter's physical flags (no `--g-mps2`: every ratio here is
+/// independent of g, and the chapter refuses the flag).
+pub const FLAGS: &[Flag] = &[ANGLE_DEG, MU];
 
 /// Stick mass (kg) and length (m) of the authors' scene. Every ratio in this chapter
 /// is independent of them (checked in the tests); they only set the units.
@@ -50,16 +71,9 @@ pub const LENGTH_M: f64 = 0.15;
 
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
-    let angle_deg = open_interval("--angle-deg", args.angle_deg, -90.0, 90.0, "degrees")?;
+    let angle_deg = ANGLE_DEG.check(args.angle_deg)?;
     super::refuse_g("effective-mass", ctx)?;
-    let mu = range(
-        "--mu",
-        args.mu,
-        0.0,
-        MU_MAX,
-        "dimensionless",
-        "dry contacts; the point-mass-limit check at I_G = 1e-6 m L^2 (gap ~ mu^3) holds to its 1e-5 tolerance up to 2",
-    )?;
+    let mu = MU.check(args.mu)?;
     let mut r = info("effective-mass").expect("registered").report();
     r.param("angle_deg", angle_deg);
     r.param("mu", mu);

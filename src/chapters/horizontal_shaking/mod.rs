@@ -14,7 +14,9 @@
 //! orchestration.
 
 use super::{report_with_g, Context};
-use crate::error::{blame, check, half_open, num, range, Result};
+use crate::error::{blame, check, num, Result};
+use crate::flags::Flag;
+use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
 use drift::Scene;
 pub use drift::{gamma_for_1pct, relative_error};
@@ -27,26 +29,63 @@ mod figures;
 mod mutations;
 mod statements;
 
-/// Flags of the chapter: the document's scene (a coin on a hand-shaken book).
+/// Flags of the chapter: the document's scene (a coin on a hand-shaken book). Their
+/// help lines: [`FLAGS`].
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Coulomb friction coefficient mu between block and plate (dimensionless,
-    /// 0.01 <= mu < 2; with amplitude, frequency and g it must give 2e-3 <= Gamma_x =
-    /// delta_x omega^2/(mu g) and Gamma_x omega <= 1e6 1/s, see the error line);
-    /// default 0.36, so that arctan(mu) = 19.8 deg, the document's "about 20 deg".
+    /// Coulomb friction coefficient mu between block and plate, [`MU`].
     #[arg(long, default_value_t = 0.36)]
     pub mu: f64,
-    /// Plate displacement amplitude delta_x (m, 1e-6 <= delta_x <= 10); default 0.02 m, a hand-shaken book.
+    /// Plate displacement amplitude delta_x (m), [`AMPLITUDE_M`].
     #[arg(long = "amplitude-m", default_value_t = 0.02)]
     pub amplitude_m: f64,
-    /// Plate frequency f = omega/(2 pi) (Hz, 0.01 <= f <= 1000); default 5 Hz, the document's "say 5 oscillations/s".
+    /// Plate frequency f (Hz), [`FREQUENCY_HZ`].
     #[arg(long = "frequency-hz", default_value_t = 5.0)]
     pub frequency_hz: f64,
-    /// Bias force F as a fraction of mu m g (dimensionless: 0, or 1e-6 <= bias < 1; below
-    /// 1e-6 the drift is within the rounding of the exact periodic solution); default 0.5.
+    /// Bias force F as a fraction of mu m g, [`BIAS`].
     #[arg(long, default_value_t = 0.5)]
     pub bias: f64,
 }
+
+/// `--mu`.
+pub const MU: Flag = Flag::new(
+    "--mu",
+    "Coulomb friction coefficient mu between block and plate; default 0.36, so that arctan(mu) = 19.8 deg, the document's \"about 20 deg\"",
+    "dimensionless",
+    Interval::closed(0.01, 2.0).open_above(),
+)
+.why("dry friction between block and plate; with amplitude, frequency and g it must give 2e-3 <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= 1e6 1/s, see the error line");
+
+/// `--amplitude-m`.
+pub const AMPLITUDE_M: Flag = Flag::new(
+    "--amplitude-m",
+    "Plate displacement amplitude delta_x; default 0.02 m, a hand-shaken book",
+    "m",
+    Interval::closed(1e-6, 10.0),
+)
+.why("a micrometre to a 10 m stroke; Gamma_x is bounded too");
+
+/// `--frequency-hz`.
+pub const FREQUENCY_HZ: Flag = Flag::new(
+    "--frequency-hz",
+    "Plate frequency f = omega/(2 pi); default 5 Hz, the document's \"say 5 oscillations/s\"",
+    "Hz",
+    Interval::closed(0.01, 1000.0),
+)
+.why("a hand-shaken book to an ultrasonic-free shaker; Gamma_x is bounded too");
+
+/// `--bias`.
+pub const BIAS: Flag = Flag::new(
+    "--bias",
+    "Bias force F as a fraction of mu m g",
+    "fraction of mu m g",
+    Interval::closed(0.0, 1.0).open_above(),
+)
+.shown_as("0, or 1e-6 <= bias < 1")
+.why("below 1e-6 the drift is within the rounding of the exact periodic solution");
+
+/// The table of the chapter's physical flags.
+pub const FLAGS: &[Flag] = &[MU, AMPLITUDE_M, FREQUENCY_HZ, BIAS, crate::flags::G];
 
 /// Smallest nonzero bias accepted (fraction of mu m g): see `validate`.
 pub const BIAS_MIN: f64 = 1e-6;
@@ -63,31 +102,10 @@ pub const GAMMA_X_OMEGA_MAX: f64 = 1e6;
 
 /// Checks every flag and the derived Gamma_x (the error names the flag the user set).
 pub fn validate(args: &Args, ctx: &Context) -> Result<Scene> {
-    let mu = crate::error::range_below(
-        "--mu",
-        args.mu,
-        0.01,
-        2.0,
-        "dimensionless",
-        "dry friction between block and plate",
-    )?;
-    let amp = range(
-        "--amplitude-m",
-        args.amplitude_m,
-        1e-6,
-        10.0,
-        "m",
-        "a micrometre to a 10 m stroke; Gamma_x is bounded too",
-    )?;
-    let freq = range(
-        "--frequency-hz",
-        args.frequency_hz,
-        0.01,
-        1000.0,
-        "Hz",
-        "a hand-shaken book to an ultrasonic-free shaker; Gamma_x is bounded too",
-    )?;
-    let bias = half_open("--bias", args.bias, 0.0, 1.0, "fraction of mu m g")?;
+    let mu = MU.check(args.mu)?;
+    let amp = AMPLITUDE_M.check(args.amplitude_m)?;
+    let freq = FREQUENCY_HZ.check(args.frequency_hz)?;
+    let bias = BIAS.check(args.bias)?;
     // The exact periodic drift is resolved to about 3e-12 V (measured: relative error
     // 1.8e-3 at b = 1e-9 and Gamma_x = 1000); the arcsin-law claim's tolerance 1e-5
     // needs the drift V sin(pi b/2) above a few 1e-7 V: b >= 1e-6 (b = 0: the checks

@@ -17,6 +17,8 @@ mod statements;
 
 use super::{info, Context};
 use crate::error::{check, parse_pair, Result};
+use crate::flags::Flag;
+use crate::physics::domain::Interval;
 use crate::physics::locomotion::{in_exact_range, is_locomotion, reason, V2};
 use crate::plot::save_drawing;
 use crate::report::{ChapterReport, Mutation};
@@ -24,21 +26,34 @@ use figures::{HullFigure, Panel};
 pub use mutations::PRINTS_NO_NUMBER;
 use statements::{CASES, WATER, WIND};
 
-/// Flags of the chapter.
+/// Flags of the chapter (their help lines: [`FLAGS`]).
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Average velocity of the object as X,Y in m/s (horizontal plane; negative parts
-    /// are fine: --object-velocity -2,0). Default 1,3: a boat reaching across the wind.
+    /// Average velocity of the object as X,Y in m/s.
     #[arg(long, value_parser = parse_pair, default_value = "1,3", allow_hyphen_values = true)]
     pub object_velocity: V2,
     /// Average velocity of one medium as X,Y in m/s; repeat the flag for several media.
-    /// Default: wind 5,0 and still water 0,0 (the document's sailing scene).
     #[arg(long = "medium-velocity", value_parser = parse_pair, default_values = ["5,0", "0,0"], allow_hyphen_values = true)]
     pub medium_velocity: Vec<V2>,
 }
 
 const VALID: &str =
     "X,Y with each part 0 or 1e-100 <= |part| <= 1e100 (m/s), where the hull test is exact";
+
+/// A velocity pair's entry: each part 0 or `1e-100 <= |part| <= 1e100` (the range
+/// field holds the magnitudes; either sign and 0 are accepted too).
+const fn pair(name: &'static str, about: &'static str) -> Flag {
+    Flag::new(name, about, "m/s", Interval::closed(1e-100, 1e100))
+        .shown_as("X,Y with each part 0 or 1e-100 <= |part| <= 1e100")
+        .why("where the hull test is exact")
+}
+
+/// The table of the chapter's flags. No `--g-mps2`: the chapter is kinematics and
+/// refuses the flag.
+pub const FLAGS: &[Flag] = &[
+    pair("--object-velocity", "Average velocity of the object as X,Y (horizontal plane; negative parts are fine: --object-velocity -2,0); default 1,3: a boat reaching across the wind"),
+    pair("--medium-velocity", "Average velocity of one medium as X,Y; repeat the flag for several media; default: wind 5,0 and still water 0,0 (the document's sailing scene)"),
+];
 
 fn validate(flag: &str, v: V2) -> Result<V2> {
     for x in v {

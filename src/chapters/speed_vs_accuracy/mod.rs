@@ -30,28 +30,28 @@ pub mod tables;
 pub mod work_precision;
 
 use super::Context;
-use crate::error::{check, open_interval, range, Result};
+use crate::error::{check, Result};
+use crate::flags::Flag;
+use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
 
 /// Flags of the chapter: the block scene of the work-precision ladder (section 3.1.2).
+/// Their help lines: [`FLAGS`].
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Drive frequency f of the vertically vibrating plate (Hz, 1 <= f <= 100). Default
-    /// 30 Hz, the stick scene's frequency.
+    /// Drive frequency f of the vertically vibrating plate (Hz), [`FREQUENCY_HZ`].
     #[arg(long, default_value_t = 30.0)]
     pub frequency_hz: f64,
-    /// Peak plate acceleration over gravity, Gamma = delta omega^2 / g (dimensionless,
-    /// 1.5 < Gamma < 50). Default 2.5: period-one bouncing.
+    /// Peak plate acceleration over gravity, [`GAMMA`].
     #[arg(long, default_value_t = 2.5)]
     pub gamma: f64,
-    /// Coulomb friction coefficient mu between block and plate (dimensionless, 0.01 <= mu < 2). Default 0.4.
+    /// Coulomb friction coefficient mu between block and plate, [`MU`].
     #[arg(long, default_value_t = 0.4)]
     pub mu: f64,
-    /// Bias force over the sliding friction, b = F/(mu m g) as in every chapter
-    /// (dimensionless, 3e-3/mu <= b <= 0.99). Default 0.05: F = 0.02 m g at mu = 0.4.
+    /// Bias force over the sliding friction, b = F/(mu m g), [`BIAS`].
     #[arg(long, default_value_t = 0.05)]
     pub bias: f64,
-    /// Restitution coefficient e of the Zeno scenes (dimensionless, 0 < e <= 0.8). Default 0.5.
+    /// Restitution coefficient e of the Zeno scenes, [`RESTITUTION`].
     #[arg(long, default_value_t = 0.5)]
     pub restitution: f64,
 }
@@ -62,29 +62,68 @@ impl Default for Args {
     }
 }
 
+/// `--frequency-hz`.
+pub const FREQUENCY_HZ: Flag = Flag::new(
+    "--frequency-hz",
+    "Drive frequency f of the vertically vibrating plate; default 30 Hz, the stick scene's frequency",
+    "Hz",
+    Interval::closed(1.0, 100.0),
+)
+.why("above 100 Hz the plate amplitude Gamma g/omega^2 falls under the reference's resolution; below 1 Hz the fixed-step ladders (steps per period) no longer end within the chapter's budget");
+
+/// `--gamma`.
+pub const GAMMA: Flag = Flag::new(
+    "--gamma",
+    "Peak plate acceleration over gravity, Gamma = delta omega^2 / g; default 2.5: period-one bouncing",
+    "dimensionless",
+    Interval::open(1.5, 50.0),
+)
+.why("flight needs Gamma > 1, and below 1.5 the flights are shorter than the guard sampling interval T/20 of the integrated runs, which then miss landings");
+
+/// `--mu`.
+pub const MU: Flag = Flag::new(
+    "--mu",
+    "Coulomb friction coefficient mu between block and plate; default 0.4",
+    "dimensionless",
+    Interval::closed(0.01, 2.0).open_above(),
+)
+.why("dry friction");
+
+/// `--bias`: its lower end is relative to `--mu` (here at its default, 0.4).
+pub const BIAS: Flag = Flag::new(
+    "--bias",
+    "Bias force over the sliding friction, b = F/(mu m g) as in every chapter; default 0.05: F = 0.02 m g at mu = 0.4",
+    "dimensionless",
+    Interval::closed(BIAS_MIN_TIMES_MU / 0.4, BIAS_MAX),
+)
+.shown_as("3e-3/mu <= b <= 0.99")
+.why("the drift must stay above the reference check's rounding floor, so b mu >= 3e-3; closer to 1 the block sticks only in a sliver of each period, where rounding decides stick or slip")
+.coupled();
+
+/// `--restitution`.
+pub const RESTITUTION: Flag = Flag::new(
+    "--restitution",
+    "Restitution coefficient e of the Zeno scenes; default 0.5",
+    "dimensionless",
+    Interval::closed(0.0, 0.8).open_below(),
+)
+.why("above 0.8 the bouncing block no longer chatters to rest every period and the Zeno scene's comparison loses its meaning");
+
+/// `--g-mps2` in this chapter: validated from 3 m/s^2 up.
+pub const G: Flag = Flag {
+    range: Interval::closed(G_MIN_MPS2, super::G_MAX_MPS2),
+    reason: "chapter 7's reference check (DP5 at 1e-12 within 1e-8 of the closed-form drift) is validated from 3 m/s^2 up; at 1 it misses (1.25e-8)",
+    ..crate::flags::G
+};
+
+/// The table of the chapter's physical flags.
+pub const FLAGS: &[Flag] = &[FREQUENCY_HZ, GAMMA, MU, BIAS, RESTITUTION, G];
+
 /// Validated flags.
 fn validate(a: &Args) -> Result<()> {
-    // Above about a hundred hertz the plate's amplitude (Gamma g / omega^2) falls below a
-    // micrometre and the fixed absolute tolerance of the reference check (1e-12) no
-    // longer resolves it.
-    range(
-        "--frequency-hz",
-        a.frequency_hz,
-        1.0,
-        100.0,
-        "Hz",
-        "above 100 Hz the plate amplitude Gamma g/omega^2 falls under the reference's resolution; below 1 Hz the fixed-step ladders (steps per period) no longer end within the chapter's budget",
-    )?;
-    // Flight needs Gamma > 1; below 1.5 the flights are shorter than the guard sampling
-    // interval T/20 of the integrated runs, which then miss landings.
-    open_interval(
-        "--gamma",
-        a.gamma,
-        1.5,
-        50.0,
-        "dimensionless; flights long enough to sample need Gamma > 1.5",
-    )?;
-    crate::error::range_below("--mu", a.mu, 0.01, 2.0, "dimensionless", "dry friction")?;
+    FREQUENCY_HZ.check(a.frequency_hz)?;
+    GAMMA.check(a.gamma)?;
+    MU.check(a.mu)?;
     check(
         "--bias",
         a.bias,
@@ -94,14 +133,7 @@ fn validate(a: &Args) -> Result<()> {
             BIAS_MIN_TIMES_MU / a.mu
         ),
     )?;
-    // Above 0.8 the bouncing block on the plate no longer chatters to rest every period
-    // (its motion turns irregular) and the Zeno scene's comparison loses its meaning.
-    check(
-        "--restitution",
-        a.restitution,
-        |e| e > 0.0 && e <= 0.8,
-        "0 < value <= 0.8 (dimensionless)",
-    )?;
+    RESTITUTION.check(a.restitution)?;
     Ok(())
 }
 
@@ -137,14 +169,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
 /// tests).
 pub fn run_with(args: &Args, ctx: &Context, doc: &statements::Statements) -> Result<ChapterReport> {
     validate(args)?;
-    crate::error::range(
-        "--g-mps2",
-        super::check_g(ctx.g())?,
-        G_MIN_MPS2,
-        super::G_MAX_MPS2,
-        "m/s^2",
-        "chapter 7's reference check (DP5 at 1e-12 within 1e-8 of the closed-form drift) is validated from 3 m/s^2 up; at 1 it misses (1.25e-8)",
-    )?;
+    G.check(super::check_g(ctx.g())?)?;
     let mut r = super::info("speed-vs-accuracy")
         .expect("registered")
         .report();

@@ -29,7 +29,6 @@ mod printed_table;
 mod rule_claims;
 pub mod saltation;
 mod sensitivity;
-mod setup;
 mod slide_rules;
 mod statements;
 mod table1_claims;
@@ -37,12 +36,14 @@ mod table1_claims;
 pub use cycle_report::COARSER_THAN_10_PERCENT;
 pub use events::{events_csv, EVENTS_CAP};
 pub use mutations::NO_PRINTED_NUMBER;
-pub use setup::{max_duration_s, setup, PHASE_ROUNDING_MAX, SECONDS_PER_CYCLE};
 
 use super::Context;
-use crate::error::Result;
+use crate::error::{check, Result};
+use crate::flags::stick::{self as stick_flags, StickFlags};
+use crate::flags::Flag;
 use crate::numerics::hybrid::Options;
-use crate::numerics::ode::Method;
+use crate::numerics::ode::{Method, StepControl};
+use crate::physics::domain::Interval;
 use crate::physics::stick::printed::{simulate_printed, Printed};
 use crate::physics::stick::run::{
     authors_code_state, initial_state, simulate_stick, Recording, RunSummary,
@@ -124,50 +125,28 @@ pub enum Rules {
 /// Flags of the chapter. Unset physical flags take the chosen scene's value. Ranges: a
 /// box within a factor 10 of the authors' stick (wider where a limit is physical: a free
 /// hinge, a still plate), over which the chapter's checks are run at the corners
-/// (tests/cli.rs); the duration is bounded by the rounding of the plate phase.
+/// (tests/cli.rs); the duration is bounded by the rounding of the plate phase. The help
+/// lines of the physical flags come from [`FLAGS`].
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Scene whose values the other flags override [default: jamming].
     #[arg(long, value_enum, default_value_t = Scene::Jamming)]
     pub scene: Scene,
-    /// Rod length L (m, 0.015 to 1.5) [scene: 0.15].
-    #[arg(long = "length-m")]
-    pub length_m: Option<f64>,
-    /// Tip mass m (kg, 0.1 to 10) [scene: 1].
+    /// The stick's flags, shared with chapter 8 ([`crate::flags::stick`]).
+    #[command(flatten)]
+    pub stick: StickFlags,
+    /// Tip mass m (kg), [`MASS_KG`].
     #[arg(long = "mass-kg")]
     pub mass_kg: Option<f64>,
-    /// Torsion-spring stiffness k (N m/rad, 0 to 100) [scene: 10].
-    #[arg(long)]
-    pub stiffness: Option<f64>,
-    /// Torsion damper gamma (N m s/rad, 0 to 0.1; above 0 when k > 0: the massless rod's
-    /// flight needs it) [scene: 0.01].
-    #[arg(long)]
-    pub damping: Option<f64>,
-    /// Coulomb friction coefficient mu at the foot C (1, 0 to 2) [scene: 0.4].
-    #[arg(long)]
-    pub mu: Option<f64>,
-    /// Spring rest angle theta_0 from the vertical (rad), in (-pi/2, pi/2)
-    /// [jamming: 0.3; authors: 0.4281, from k (0.5 - theta_0) = m g L sin(0.5)].
-    #[arg(long = "theta0-rad")]
-    pub theta0_rad: Option<f64>,
-    /// Peak plate acceleration over g, Gamma = delta omega^2 / g (1, 0 to 50) [jamming: 3; authors: 10].
-    #[arg(long)]
-    pub gamma: Option<f64>,
-    /// Plate frequency f (Hz, 1 to 1000) [scene: 30].
-    #[arg(long = "frequency-hz")]
-    pub frequency_hz: Option<f64>,
-    /// Simulated time (s) [10; 2 with --quick]: 0 < t <= 1e4 s and omega t Gamma <= 1.5e5
-    /// (the rounding of the plate phase must stay under the cone check's 1e-10 m g);
-    /// runs estimated beyond 10 minutes (f t > 4e7 drive cycles in a release build,
-    /// 5e6 in a debug build) need --allow-long-runs.
+    /// Simulated time (s), [`DURATION_S`].
     #[arg(long = "duration-s")]
     pub duration_s: Option<f64>,
     /// Lever arm of the collision map: `actual` (the angle at landing, what the physics
     /// supports) or `reset` (the document's theta_0) [default: actual].
     #[arg(long = "collision-angle", default_value = "actual", value_parser = collision_angle_parser())]
     pub collision_angle: CollisionAngle,
-    /// Relative (and absolute) tolerance of Dormand-Prince in the contact modes (1, 1e-14
-    /// to 1e-2) [1e-10].
+    /// Relative (and absolute) tolerance in the contact modes,
+    /// [`crate::flags::stick::RTOL`].
     #[arg(long, default_value_t = 1e-10)]
     pub rtol: f64,
     /// Integrator of the contact modes; both locate events on their dense output
@@ -189,6 +168,40 @@ pub struct Args {
     pub rules: Rules,
 }
 
+/// `--mass-kg`: the tip mass of chapter 6's stick.
+pub const MASS_KG: Flag = Flag::new("--mass-kg", "Tip mass m", "kg", Interval::closed(0.1, 10.0))
+    .why(stick_flags::BOX10)
+    .default_is("scene: 1");
+
+/// `--duration-s`: its bound depends on `--frequency-hz` and `--gamma` (the range
+/// field holds it at the jamming scene: 1.5e5/(2 pi 30 x 3) = 265.26 s).
+pub const DURATION_S: Flag = Flag::new(
+    "--duration-s",
+    "Simulated time",
+    "s",
+    Interval::closed(0.0, 265.0).open_below(),
+)
+.shown_as("0 < t <= 1e4 s and omega t Gamma <= 1.5e5")
+.why("the rounding of the plate phase must stay under the cone check's 1e-10 m g; runs estimated beyond 10 minutes (f t > 4e7 drive cycles in a release build, 5e6 in a debug build) need --allow-long-runs")
+.default_is("10; 2 with --quick")
+.coupled()
+.budgeted();
+
+/// The table of the chapter's physical flags (`crate::flags`).
+pub const FLAGS: &[Flag] = &[
+    stick_flags::LENGTH_M,
+    MASS_KG,
+    stick_flags::STIFFNESS,
+    stick_flags::DAMPING,
+    stick_flags::MU,
+    stick_flags::THETA0_RAD,
+    stick_flags::GAMMA,
+    stick_flags::FREQUENCY_HZ,
+    DURATION_S,
+    stick_flags::RTOL,
+    crate::flags::G,
+];
+
 /// The scene's parameters with `g` (m/s^2): the flag, or the scene's own (10 for the
 /// authors' scene, 9.81 otherwise).
 pub fn scene_params(scene: Scene, g_flag: Option<f64>) -> StickParams {
@@ -196,6 +209,78 @@ pub fn scene_params(scene: Scene, g_flag: Option<f64>) -> StickParams {
         Scene::Authors => authors_scene(g_flag.unwrap_or(10.0)),
         Scene::Jamming => jamming_scene(g_flag.unwrap_or(Context::G_DEFAULT_MPS2)),
     }
+}
+
+/// Largest `omega t Gamma` accepted: the plate phase `omega t` is rounded to `eps omega
+/// t`, which moves the plate acceleration, and the contact forces with it, by about
+/// `3 eps omega t Gamma m g` (the factor 3 measured: 2.3e-10 m g at omega t Gamma =
+/// 5.7e5); the cone check allows 1e-10 m g, so `omega t Gamma <= 1e-10 / (3 eps)`.
+pub const PHASE_ROUNDING_MAX: f64 = 1.5e5;
+
+/// Longest accepted duration (s) at frequency `f_hz` and `gamma`: `omega t Gamma <=`
+/// [`PHASE_ROUNDING_MAX`] and at most 1e4 s.
+pub fn max_duration_s(f_hz: f64, gamma: f64) -> f64 {
+    let omega = 2.0 * std::f64::consts::PI * f_hz;
+    if gamma > 0.0 {
+        (PHASE_ROUNDING_MAX / (omega * gamma)).min(1e4) // formula: omega t Gamma <= 1e-10/(3 eps)
+    } else {
+        1e4
+    }
+}
+
+/// `x` (> 0) rounded down to `digits` significant digits, as text: a bound printed in
+/// an error line that is never above the bound checked.
+fn floor_digits(x: f64, digits: i32) -> String {
+    let scale = 10f64.powi(digits - 1 - x.log10().floor() as i32);
+    crate::error::num((x * scale).floor() / scale)
+}
+
+/// Measured cost of one drive cycle of the main run (s), for the build that runs: the
+/// test (dev) build takes 3.3 s for 3e4 cycles of the jamming scene (2 cores), rounded
+/// up to 1.2e-4; the release build about 1e-5 (criterion: about 100k cycles/s on the
+/// jamming scene; 3 s for 2e5 cycles of a gently shaken plate at 1 kHz), rounded up to
+/// 1.5e-5, so that the budget's estimate is the time a reader will wait.
+pub const SECONDS_PER_CYCLE: f64 = if cfg!(debug_assertions) {
+    1.2e-4
+} else {
+    1.5e-5
+};
+
+/// Validated parameters, duration (s) and options from the flags: each checked
+/// against its entry of [`FLAGS`], then by the model's constructor.
+pub fn setup(args: &Args, ctx: &Context) -> Result<(StickParams, f64, Options)> {
+    let base = scene_params(args.scene, ctx.g_mps2);
+    let v = args.stick.resolve(&base)?;
+    if v.damping == 0.0 && v.stiffness > 0.0 {
+        // formula: in flight the massless rod's moment balance is k (theta - theta_0) + gamma theta' = 0 (C.3)
+        return Err(crate::error::WorkbookError::bad_input(
+            "--damping",
+            v.damping,
+            "0 < value <= 0.1 (N m s/rad) when --stiffness is above 0: in flight the massless rod follows θ' = -(k/γ)(θ - θ₀) (C.3), undetermined at γ = 0 (0 is accepted only with --stiffness 0)",
+        ));
+    }
+    let m = MASS_KG.check(args.mass_kg.unwrap_or(base.mass_kg))?;
+    let default_duration = if ctx.quick { 2.0 } else { 10.0 };
+    let t_max = max_duration_s(v.frequency_hz, v.gamma);
+    let dur = check(
+        "--duration-s",
+        args.duration_s.unwrap_or(default_duration),
+        |v| v > 0.0 && v <= t_max,
+        &format!(
+            "0 < value <= {} (s): omega t Gamma <= {} and t <= 1e4 s; the plate phase omega t carries a rounding of eps omega t, a force error of ~3 eps omega t Gamma m g that the cone check's 1e-10 m g must cover",
+            floor_digits(t_max, 6),
+            crate::error::num(PHASE_ROUNDING_MAX)
+        ),
+    )?;
+    let rtol = stick_flags::RTOL.check(args.rtol)?;
+    let mut p = crate::flags::stick_params(&base, &v, m)?;
+    p.collision_angle = args.collision_angle;
+    let opts = Options {
+        method: args.method.method(),
+        control: StepControl::tol(rtol, rtol),
+        ..Options::default()
+    };
+    Ok((p, dur, opts))
 }
 
 /// One run of a scene from its static equilibrium (or theta_0 if the spring cannot hold

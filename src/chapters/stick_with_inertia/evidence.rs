@@ -20,7 +20,8 @@ pub fn options(rtol: f64) -> Options {
 /// A test rig: a rod of length 0.15 m with rod mass `m_r` and tip mass `m` (kg) at rest
 /// over a still plate, spring at rest at `theta` (so no couple), friction `mu`.
 pub fn rig(m_r: f64, m: f64, theta: f64, mu: f64, e: f64) -> InertiaModel {
-    let mut base = StickParams::new(0.15, m, 10.0, 0.01, mu, theta, 9.81, 0.0, 30.0);
+    let mut base = StickParams::new(0.15, m, 10.0, 0.01, mu, theta, 9.81, 0.0, 30.0)
+        .expect("a stick inside the model's domain");
     base.mass_kg = m;
     InertiaModel::new(InertiaParams {
         base,
@@ -327,7 +328,8 @@ pub fn moreau_jean() -> (f64, Vec<(f64, f64)>) {
 /// right at 30 m/s on a still floor. Returns the run (first Painleve event, impacts).
 pub fn glocker_scene() -> InertiaRun {
     let th = -(59.0f64).to_radians();
-    let mut base = StickParams::new(2.0, 0.0, 0.0, 0.0, 5.0 / 3.0, th, 10.0, 0.0, 30.0);
+    let mut base = StickParams::new(2.0, 0.0, 0.0, 0.0, 5.0 / 3.0, th, 10.0, 0.0, 30.0)
+        .expect("a stick inside the model's domain");
     base.mass_kg = 0.0;
     let md = InertiaModel::new(InertiaParams {
         base,

@@ -19,8 +19,11 @@ mod statements;
 pub use statements::{Statements, PRINTED};
 
 use super::Context;
-use crate::error::{check, range, Result, WorkbookError};
-use crate::physics::stick::{authors_scene, jamming_scene, StickParams};
+use crate::error::{Result, WorkbookError};
+use crate::flags::stick::{self as stick_flags, StickFlags};
+use crate::flags::Flag;
+use crate::physics::domain::Interval;
+use crate::physics::stick::{authors_scene, jamming_scene};
 use crate::physics::stick_inertia::limit;
 use crate::physics::stick_inertia::run::{InertiaOutcome, InertiaRun};
 use crate::physics::stick_inertia::InertiaParams;
@@ -39,95 +42,106 @@ pub enum Scene {
     Authors,
 }
 
-/// Flags of the chapter: chapter 6's (same names, same ranges) with the tip mass and the
-/// rod's mass in place of `--mass-kg`, and the restitution of impacts.
+/// Flags of the chapter: chapter 6's (the same entries, [`crate::flags::stick`]) with
+/// the tip mass and the rod's mass in place of `--mass-kg`, and the restitution of
+/// impacts. The help lines of the physical flags come from [`FLAGS`].
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Scene whose values the other flags override [default: jamming].
     #[arg(long, value_enum, default_value_t = Scene::Jamming)]
     pub scene: Scene,
-    /// Rod length L (m, 0.015 to 1.5) [scene: 0.15].
-    #[arg(long = "length-m")]
-    pub length_m: Option<f64>,
-    /// Point mass m at the top P (kg, 0 to 10; 0 is a uniform stick, a toothpick) [1].
+    /// The stick's flags, shared with chapter 6.
+    #[command(flatten)]
+    pub stick: StickFlags,
+    /// Point mass m at the top P (kg), [`TIP_MASS_KG`].
     #[arg(long = "tip-mass-kg", default_value_t = 1.0)]
     pub tip_mass_kg: f64,
-    /// Mass of the rod, uniform along C-P (kg, 0 to 10; 0 is chapter 6's massless rod;
-    /// m + m_r >= 1e-3 kg) [0.01: 1 % of the tip mass].
+    /// Mass of the rod (kg), [`ROD_MASS_KG`].
     #[arg(long = "rod-mass-kg", default_value_t = 0.01)]
     pub rod_mass_kg: f64,
-    /// Torsion-spring stiffness k (N m/rad, 0 to 100) [scene: 10].
-    #[arg(long)]
-    pub stiffness: Option<f64>,
-    /// Torsion damper gamma (N m s/rad, 0 to 0.1; above 0 when m_r = 0) [scene: 0.01].
-    #[arg(long)]
-    pub damping: Option<f64>,
-    /// Coulomb friction coefficient mu at the foot C (1, 0 to 2) [scene: 0.4].
-    #[arg(long)]
-    pub mu: Option<f64>,
-    /// Spring rest angle theta_0 from the vertical (rad), in (-pi/2, pi/2) [scene].
-    #[arg(long = "theta0-rad")]
-    pub theta0_rad: Option<f64>,
-    /// Peak plate acceleration over g, Gamma = delta omega^2 / g (1, 0 to 50) [scene].
-    #[arg(long)]
-    pub gamma: Option<f64>,
-    /// Plate frequency f (Hz, 1 to 1000) [scene: 30].
-    #[arg(long = "frequency-hz")]
-    pub frequency_hz: Option<f64>,
-    /// Simulated time (s, above 0, at most 100) [10; 2 with --quick].
+    /// Simulated time (s), [`DURATION_S`].
     #[arg(long = "duration-s")]
     pub duration_s: Option<f64>,
-    /// Relative (and absolute) tolerance of DOP853 in the contact modes (1, 1e-14 to 1e-2) [1e-10].
+    /// Relative (and absolute) tolerance in the contact modes,
+    /// [`crate::flags::stick::RTOL`].
     #[arg(long, default_value_t = 1e-10)]
     pub rtol: f64,
-    /// Restitution e of impacts at C (Stronge's energetic coefficient, 0 to 1; 0 is the
-    /// document's plastic impact) [0].
+    /// Restitution e of impacts at C, [`RESTITUTION`].
     #[arg(long, default_value_t = 0.0)]
     pub restitution: f64,
 }
 
-/// Validated parameters and duration (s).
+/// Why the masses have their range.
+const WHY_MASS: &str =
+    "0 allowed (a uniform stick, or chapter 6's massless rod) up to 10 x the authors' 1 kg";
+
+/// `--tip-mass-kg`.
+pub const TIP_MASS_KG: Flag = Flag::new(
+    "--tip-mass-kg",
+    "Point mass m at the top P (0 is a uniform stick, a toothpick)",
+    "kg",
+    Interval::closed(0.0, 10.0),
+)
+.why(WHY_MASS)
+.coupled(); // m + m_r >= 1e-3 kg
+
+/// `--rod-mass-kg`.
+pub const ROD_MASS_KG: Flag = Flag::new(
+    "--rod-mass-kg",
+    "Mass of the rod, uniform along C-P (0 is chapter 6's massless rod; m + m_r >= 1e-3 kg, and --damping above 0 when m_r = 0); default 0.01: 1 % of the tip mass",
+    "kg",
+    Interval::closed(0.0, 10.0),
+)
+.why(WHY_MASS)
+.coupled();
+
+/// `--duration-s`.
+pub const DURATION_S: Flag = Flag::new(
+    "--duration-s",
+    "Simulated time",
+    "s",
+    Interval::closed(0.0, 100.0).open_below(),
+)
+.why("the work budget of one chapter run")
+.default_is("10; 2 with --quick");
+
+/// `--restitution`.
+pub const RESTITUTION: Flag = Flag::new(
+    "--restitution",
+    "Restitution e of impacts at C (0 is the document's plastic impact)",
+    "1",
+    Interval::closed(0.0, 1.0),
+)
+.why("Stronge's energetic coefficient: above 1 an impact would create energy");
+
+/// The table of the chapter's physical flags: chapter 6's entries and its own.
+pub const FLAGS: &[Flag] = &[
+    stick_flags::LENGTH_M,
+    TIP_MASS_KG,
+    ROD_MASS_KG,
+    stick_flags::STIFFNESS,
+    stick_flags::DAMPING,
+    stick_flags::MU,
+    stick_flags::THETA0_RAD,
+    stick_flags::GAMMA,
+    stick_flags::FREQUENCY_HZ,
+    DURATION_S,
+    stick_flags::RTOL,
+    RESTITUTION,
+    crate::flags::G,
+];
+
+/// Validated parameters and duration (s): each flag checked against its entry of
+/// [`FLAGS`], the couplings of the masses and the damper, then the model's constructor.
 pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
     let base = match args.scene {
         Scene::Authors => authors_scene(ctx.g_mps2.unwrap_or(10.0)),
         Scene::Jamming => jamming_scene(ctx.g_mps2.unwrap_or(Context::G_DEFAULT_MPS2)),
     };
     crate::chapters::check_g(base.g_mps2)?;
-    let (l, m, m_r) = length_and_masses(args, &base)?;
-    let (k, c, mu, th0) = spring_and_contact(args, &base, m_r)?;
-    let (gam, f, dur, e) = drive_and_run(args, &base, ctx)?;
-    let mut b = StickParams::new(l, m, k, c, mu, th0, base.g_mps2, gam, f);
-    b.mass_kg = m;
-    let p = InertiaParams {
-        base: b,
-        rod_mass_kg: m_r,
-        restitution: e,
-    };
-    if m_r > 0.0 && c == 0.0 && p.geometry().alpha() >= limit::ALPHA_SWITCH {
-        return Err(WorkbookError::bad_input(
-            "--damping",
-            c,
-            "above 0 (N m s/rad) for a rod this light (alpha = M l_G^2/I_G >= 1e9): its impacts lose 9 digits, and without a damper chapter 6's model is no limit to replace them",
-        ));
-    }
-    Ok((p, dur))
-}
-
-/// `--length-m`, `--tip-mass-kg`, `--rod-mass-kg` (m, kg, kg).
-fn length_and_masses(args: &Args, base: &StickParams) -> Result<(f64, f64, f64)> {
-    let box10 = "within a factor 10 of the authors' stick, as in stick-state-machine";
-    let l = range(
-        "--length-m",
-        args.length_m.unwrap_or(base.length_m),
-        0.015,
-        1.5,
-        "m",
-        box10,
-    )?;
-    let why_m =
-        "0 allowed (a uniform stick, or chapter 6's massless rod) up to 10 x the authors' 1 kg";
-    let m = range("--tip-mass-kg", args.tip_mass_kg, 0.0, 10.0, "kg", why_m)?;
-    let m_r = range("--rod-mass-kg", args.rod_mass_kg, 0.0, 10.0, "kg", why_m)?;
+    let v = args.stick.resolve(&base)?;
+    let m = TIP_MASS_KG.check(args.tip_mass_kg)?;
+    let m_r = ROD_MASS_KG.check(args.rod_mass_kg)?;
     if m + m_r < 1e-3 {
         return Err(WorkbookError::bad_input(
             "--rod-mass-kg",
@@ -135,87 +149,28 @@ fn length_and_masses(args: &Args, base: &StickParams) -> Result<(f64, f64, f64)>
             "m + m_r >= 1e-3 kg (kg): a lighter stick makes the pivot's time scale I_C/gamma shorter than the explicit integrator can follow at the drive's step",
         ));
     }
-    Ok((l, m, m_r))
-}
-
-/// `--stiffness`, `--damping`, `--mu`, `--theta0-rad` (N m/rad, N m s/rad, 1, rad).
-fn spring_and_contact(args: &Args, base: &StickParams, m_r: f64) -> Result<(f64, f64, f64, f64)> {
-    let k = range(
-        "--stiffness",
-        args.stiffness.unwrap_or(base.stiffness_nm_per_rad),
-        0.0,
-        100.0,
-        "N m/rad",
-        "0 (a free hinge) to 10 x the authors' spring",
-    )?;
-    let c = range(
-        "--damping",
-        args.damping.unwrap_or(base.damping_nms_per_rad),
-        0.0,
-        0.1,
-        "N m s/rad",
-        "0 to 10 x the authors' damper",
-    )?;
-    if m_r == 0.0 && c == 0.0 && k > 0.0 {
-        return Err(WorkbookError::bad_input("--damping", c, "above 0 (N m s/rad) when --rod-mass-kg is 0: the massless rod's angle in flight needs the damper"));
+    if m_r == 0.0 && v.damping == 0.0 && v.stiffness > 0.0 {
+        return Err(WorkbookError::bad_input("--damping", v.damping, "above 0 (N m s/rad) when --rod-mass-kg is 0: the massless rod's angle in flight needs the damper"));
     }
-    let mu = range(
-        "--mu",
-        args.mu.unwrap_or(base.mu),
-        0.0,
-        2.0,
-        "1",
-        "dry friction at the foot",
-    )?;
-    let th0 = check(
-        "--theta0-rad",
-        args.theta0_rad.unwrap_or(base.theta0_rad),
-        |v| v.abs() < std::f64::consts::FRAC_PI_2,
-        "-pi/2 < value < pi/2 (rad)",
-    )?;
-    Ok((k, c, mu, th0))
-}
-
-/// `--gamma`, `--frequency-hz`, `--duration-s`, `--rtol` (checked), `--restitution`.
-fn drive_and_run(args: &Args, base: &StickParams, ctx: &Context) -> Result<(f64, f64, f64, f64)> {
-    let gam = range(
-        "--gamma",
-        args.gamma.unwrap_or(base.gamma_accel()),
-        0.0,
-        50.0,
-        "1",
-        "a still plate to 5 x the authors' Gamma = 10",
-    )?;
-    let f = range(
-        "--frequency-hz",
-        args.frequency_hz.unwrap_or(base.frequency_hz()),
-        1.0,
-        1000.0,
-        "Hz",
-        "1 Hz to 1 kHz",
-    )?;
-    let dur = check(
-        "--duration-s",
+    let dur = DURATION_S.check(
         args.duration_s
             .unwrap_or(if ctx.quick { 2.0 } else { 10.0 }),
-        |v| v > 0.0 && v <= 100.0,
-        "0 < value <= 100 (s): the work budget of one chapter run",
     )?;
-    check(
-        "--rtol",
-        args.rtol,
-        |v| (1e-14..=1e-2).contains(&v),
-        "1e-14 <= value <= 1e-2 (1)",
-    )?;
-    let e = range(
-        "--restitution",
-        args.restitution,
-        0.0,
-        1.0,
-        "1",
-        "Stronge's energetic coefficient: above 1 an impact would create energy",
-    )?;
-    Ok((gam, f, dur, e))
+    stick_flags::RTOL.check(args.rtol)?;
+    let e = RESTITUTION.check(args.restitution)?;
+    let p = InertiaParams {
+        base: crate::flags::stick_params(&base, &v, m)?,
+        rod_mass_kg: m_r,
+        restitution: e,
+    };
+    if m_r > 0.0 && v.damping == 0.0 && p.geometry().alpha() >= limit::ALPHA_SWITCH {
+        return Err(WorkbookError::bad_input(
+            "--damping",
+            v.damping,
+            "above 0 (N m s/rad) for a rod this light (alpha = M l_G^2/I_G >= 1e9): its impacts lose 9 digits, and without a damper chapter 6's model is no limit to replace them",
+        ));
+    }
+    Ok((p, dur))
 }
 
 /// Runs the chapter.

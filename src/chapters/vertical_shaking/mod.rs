@@ -17,7 +17,9 @@
 //! statements judged by the same claims).
 
 use super::{report_with_g, Context};
-use crate::error::{half_open, range, Result};
+use crate::error::Result;
+use crate::flags::Flag;
+use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
 use scene::Scene;
 
@@ -36,18 +38,16 @@ mod tables;
 /// Flags of the chapter (defaults: the authors' vibrating plate at 30 Hz, mu = 0.4).
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Peak plate acceleration in units of g, Gamma = delta_z omega^2 / g (dimensionless,
-    /// 1 + 1e-6 <= Gamma <= 100: flights last ~ (Gamma - 1) T and must stay resolvable); default 2.
+    /// Peak plate acceleration in units of g, [`GAMMA`].
     #[arg(long, default_value_t = 2.0)]
     pub gamma: f64,
-    /// Plate frequency f = omega / (2 pi) (Hz, 0.1 <= f <= 1000); default 30 Hz.
+    /// Plate frequency f (Hz), [`FREQUENCY_HZ`].
     #[arg(long = "frequency-hz", default_value_t = 30.0)]
     pub frequency_hz: f64,
-    /// Coulomb friction coefficient mu (dimensionless, 0.01 <= mu < 2); default 0.4.
+    /// Coulomb friction coefficient mu, [`MU`].
     #[arg(long, default_value_t = 0.4)]
     pub mu: f64,
-    /// Bias force F as a fraction of mu m g (dimensionless, 0 <= bias < 1: the law is
-    /// stated for F < mu m g); default 0.1.
+    /// Bias force F as a fraction of mu m g, [`BIAS`].
     #[arg(long, default_value_t = 0.1)]
     pub bias: f64,
 }
@@ -65,39 +65,51 @@ pub fn budget(quick: bool) -> (usize, usize) {
 /// Smallest accepted Gamma (dimensionless): 1 + 1e-6.
 pub const GAMMA_MIN: f64 = 1.000001;
 
+/// `--gamma`.
+pub const GAMMA: Flag = Flag::new(
+    "--gamma",
+    "Peak plate acceleration in units of g, Gamma = delta_z omega^2 / g",
+    "dimensionless",
+    Interval::closed(GAMMA_MIN, 100.0),
+)
+.why("at Gamma <= 1 the plate never throws the block; flights last ~ (Gamma - 1) T, and below 1 + 1e-6 they shrink under the resolution of the take-off phase and the flight-time table");
+
+/// `--frequency-hz`.
+pub const FREQUENCY_HZ: Flag = Flag::new(
+    "--frequency-hz",
+    "Plate frequency f = omega / (2 pi)",
+    "Hz",
+    Interval::closed(0.1, 1000.0),
+)
+.why("the plate amplitude Gamma g/omega^2 stays between a nanometre and kilometres, where the block model's absolute tolerances resolve a period");
+
+/// `--mu`.
+pub const MU: Flag = Flag::new(
+    "--mu",
+    "Coulomb friction coefficient mu",
+    "dimensionless",
+    Interval::closed(0.01, 2.0).open_above(),
+)
+.why("dry friction between block and plate");
+
+/// `--bias`.
+pub const BIAS: Flag = Flag::new(
+    "--bias",
+    "Bias force F as a fraction of mu m g",
+    "fraction of mu m g",
+    Interval::closed(0.0, 1.0).open_above(),
+)
+.why("the law is stated for F < mu m g");
+
+/// The table of the chapter's physical flags.
+pub const FLAGS: &[Flag] = &[GAMMA, FREQUENCY_HZ, MU, BIAS, crate::flags::G];
+
 /// Runs the chapter.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
-    let gamma = range(
-        "--gamma",
-        args.gamma,
-        GAMMA_MIN,
-        100.0,
-        "dimensionless",
-        "at Gamma <= 1 the plate never throws the block; flights last ~ (Gamma - 1) T, and below 1 + 1e-6 they shrink under the resolution of the take-off phase and the flight-time table",
-    )?;
-    let freq = range(
-        "--frequency-hz",
-        args.frequency_hz,
-        0.1,
-        1000.0,
-        "Hz",
-        "the plate amplitude Gamma g/omega^2 stays between a nanometre and kilometres, where the block model's absolute tolerances resolve a period",
-    )?;
-    let mu = crate::error::range_below(
-        "--mu",
-        args.mu,
-        0.01,
-        2.0,
-        "dimensionless",
-        "dry friction between block and plate",
-    )?;
-    let bias = half_open(
-        "--bias",
-        args.bias,
-        0.0,
-        1.0,
-        "fraction of mu m g; the law needs F < mu m g",
-    )?;
+    let gamma = GAMMA.check(args.gamma)?;
+    let freq = FREQUENCY_HZ.check(args.frequency_hz)?;
+    let mu = MU.check(args.mu)?;
+    let bias = BIAS.check(args.bias)?;
     let (mut r, g) = report_with_g(
         "vertical-shaking",
         ctx,

@@ -57,7 +57,7 @@ use crate::numerics::trig::{sin_cos, Table};
 use std::f64::consts::TAU;
 
 pub use params::{
-    authors_scene, jamming_scene, theta0_for_static_angle, CollisionAngle, StickParams,
+    authors_scene, domain, jamming_scene, theta0_for_static_angle, CollisionAngle, StickParams,
 };
 
 /// State index: theta (rad).

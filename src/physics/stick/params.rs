@@ -1,6 +1,33 @@
 //! Parameters of the stick model and the two scenes of the chapter.
 
+use crate::physics::domain::{within, DomainError, Interval};
 use crate::physics::plate::{Axis, Harmonic};
+
+/// Where the stick model is defined: the domains [`StickParams::new`] checks. The
+/// command line accepts a narrower box (`crate::flags::stick`), inside these
+/// (`tests/architecture.rs` and the flag table's unit tests check the inclusion).
+pub mod domain {
+    use super::Interval;
+    /// Rod length L (m): positive.
+    pub const LENGTH_M: Interval = Interval::above(0.0);
+    /// Tip mass m (kg): 0 (a massless tip, chapter 8's uniform rod) or more.
+    pub const MASS_KG: Interval = Interval::at_least(0.0);
+    /// Spring stiffness k (N m/rad): 0 (a free hinge) or more.
+    pub const STIFFNESS_NM_PER_RAD: Interval = Interval::at_least(0.0);
+    /// Damper gamma (N m s/rad): 0 or more.
+    pub const DAMPING_NMS_PER_RAD: Interval = Interval::at_least(0.0);
+    /// Friction coefficient mu (1): 0 or more.
+    pub const MU: Interval = Interval::at_least(0.0);
+    /// Spring rest angle theta_0 (rad): strictly between -pi/2 and pi/2 (the foot below P).
+    pub const THETA0_RAD: Interval =
+        Interval::open(-std::f64::consts::FRAC_PI_2, std::f64::consts::FRAC_PI_2);
+    /// Gravity g (m/s^2): positive (the plate's phases are measured in g).
+    pub const G_MPS2: Interval = Interval::above(0.0);
+    /// Peak plate acceleration over g, Gamma (1): 0 (a still plate) or more.
+    pub const GAMMA: Interval = Interval::at_least(0.0);
+    /// Plate frequency f (Hz): positive.
+    pub const FREQUENCY_HZ: Interval = Interval::above(0.0);
+}
 
 /// Which angle the collision map (C.15) uses for the lever arm `r_P/C`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -40,6 +67,10 @@ impl StickParams {
     /// The same stick on a plate of peak acceleration `gamma_accel` (over g) at
     /// `frequency_hz` (Hz), built by [`StickParams::new`] (its collision angle is `new`'s
     /// default, not `self`'s).
+    ///
+    /// # Panics
+    /// When `gamma_accel` or `frequency_hz` is outside [`domain`] (the callers sweep
+    /// validated ranges).
     pub fn with_drive(&self, gamma_accel: f64, frequency_hz: f64) -> StickParams {
         StickParams::new(
             self.length_m,
@@ -52,10 +83,12 @@ impl StickParams {
             gamma_accel,
             frequency_hz,
         )
+        .expect("a drive inside the stick's domain")
     }
 
     /// Parameters with the plate given by its peak acceleration over g (`gamma_accel`,
-    /// `Gamma = delta omega^2 / g`) and frequency (Hz).
+    /// `Gamma = delta omega^2 / g`) and frequency (Hz). Each value is checked against
+    /// its [`domain`]: the error names the first one outside it.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         length_m: f64,
@@ -67,10 +100,29 @@ impl StickParams {
         g_mps2: f64,
         gamma_accel: f64,
         frequency_hz: f64,
-    ) -> Self {
+    ) -> Result<Self, DomainError> {
+        within("length_m", length_m, domain::LENGTH_M, "m")?;
+        within("mass_kg", mass_kg, domain::MASS_KG, "kg")?;
+        within(
+            "stiffness_nm_per_rad",
+            stiffness_nm_per_rad,
+            domain::STIFFNESS_NM_PER_RAD,
+            "N m/rad",
+        )?;
+        within(
+            "damping_nms_per_rad",
+            damping_nms_per_rad,
+            domain::DAMPING_NMS_PER_RAD,
+            "N m s/rad",
+        )?;
+        within("mu", mu, domain::MU, "1")?;
+        within("theta0_rad", theta0_rad, domain::THETA0_RAD, "rad")?;
+        within("g_mps2", g_mps2, domain::G_MPS2, "m/s^2")?;
+        within("gamma_accel", gamma_accel, domain::GAMMA, "1")?;
+        within("frequency_hz", frequency_hz, domain::FREQUENCY_HZ, "Hz")?;
         let omega = std::f64::consts::TAU * frequency_hz;
         let delta = gamma_accel * g_mps2 / (omega * omega); // formula: delta = Gamma g / omega^2
-        StickParams {
+        Ok(StickParams {
             length_m,
             mass_kg,
             stiffness_nm_per_rad,
@@ -80,7 +132,7 @@ impl StickParams {
             g_mps2,
             plate: Harmonic::cosine(Axis::Z, delta, frequency_hz),
             collision_angle: CollisionAngle::Actual,
-        }
+        })
     }
 
     /// Peak plate acceleration over g, `Gamma = delta omega^2 / g` (1).
@@ -150,16 +202,23 @@ pub fn theta0_for_static_angle(theta_f: f64, k: f64, m: f64, g: f64, l: f64) -> 
 /// gamma = 0.01 N m s/rad, mu = 0.4, static angle 0.5 rad; `g` is 10 m/s^2 in their runs.
 /// Source: the authors' public code of the same model (`main_rod.m` in
 /// github.com/toshankarghosh/toothpicks), not the document, which gives no numbers.
+///
+/// # Panics
+/// When `g_mps2` is not positive and finite (the callers pass a validated g).
 pub fn authors_scene(g_mps2: f64) -> StickParams {
     let (l, m, k) = (0.15, 1.0, 10.0);
     let theta0 = theta0_for_static_angle(0.5, k, m, g_mps2, l);
     StickParams::new(l, m, k, 0.01, 0.4, theta0, g_mps2, 10.0, 30.0)
+        .expect("the authors' scene at a g in its domain")
 }
 
 /// The self-locking scene (default of the chapter): the authors' stick (L, m, k, gamma,
 /// mu, f) with its spring rest angle inside the friction cone, `theta_0 = 0.3 rad`
 /// (`tan(theta_0) = 0.309 < mu = 0.4`), on a gentler plate, `Gamma = 3`. It walks by
 /// stick-slip: pivot (jammed: the rod's thrust lies inside the cone), then slide right.
+///
+/// # Panics
+/// When `g_mps2` is not positive and finite (the callers pass a validated g).
 pub fn jamming_scene(g_mps2: f64) -> StickParams {
     StickParams::new(
         0.15,
@@ -172,9 +231,39 @@ pub fn jamming_scene(g_mps2: f64) -> StickParams {
         JAMMING_GAMMA,
         30.0,
     )
+    .expect("the self-locking scene at a g in its domain")
 }
 
 /// Spring rest angle of the self-locking scene (rad).
 pub const JAMMING_THETA0_RAD: f64 = 0.3;
 /// Peak plate acceleration over g of the self-locking scene.
 pub const JAMMING_GAMMA: f64 = 3.0;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_constructor_refuses_values_outside_the_domain_naming_them() {
+        let ok = |l: f64, mu: f64, th: f64, f: f64| {
+            StickParams::new(l, 1.0, 10.0, 0.01, mu, th, 9.81, 3.0, f)
+        };
+        assert!(ok(0.15, 0.4, 0.3, 30.0).is_ok());
+        let e = ok(f64::NAN, 0.4, 0.3, 30.0).unwrap_err();
+        assert_eq!(e.parameter, "length_m");
+        assert!(e.to_string().contains("0 < value (m)"), "{e}");
+        assert_eq!(ok(0.15, -0.1, 0.3, 30.0).unwrap_err().parameter, "mu");
+        assert_eq!(
+            ok(0.15, 0.4, 1.6, 30.0).unwrap_err().parameter,
+            "theta0_rad"
+        );
+        assert_eq!(
+            ok(0.15, 0.4, 0.3, 0.0).unwrap_err().parameter,
+            "frequency_hz"
+        );
+        assert_eq!(
+            ok(0.15, 0.4, 0.3, f64::INFINITY).unwrap_err().parameter,
+            "frequency_hz"
+        );
+    }
+}

@@ -5,7 +5,7 @@ use crate::numerics::ode::{Method, StepControl};
 
 /// The self-locking stick on a plate that does not move (Gamma = 0).
 fn still() -> StickParams {
-    StickParams::new(0.15, 1.0, 10.0, 0.01, 0.4, 0.3, 9.81, 0.0, 30.0)
+    StickParams::new(0.15, 1.0, 10.0, 0.01, 0.4, 0.3, 9.81, 0.0, 30.0).unwrap()
 }
 
 #[test]

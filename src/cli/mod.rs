@@ -1,14 +1,18 @@
 //! The command line: clap derive types, one subcommand per chapter of the registry,
 //! and the dispatcher that maps results to exit codes (0 ok, 1 a claim failed, 2 bad input).
 
-use crate::chapters::{self, Context, CHAPTERS};
+use crate::chapters::{self, ChapterInfo, Context, CHAPTERS};
 use crate::error::{self, WorkbookError};
 use crate::render;
 use crate::report::ChapterReport;
-use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
+use clap::{ArgMatches, CommandFactory, FromArgMatches, Parser, Subcommand};
 use std::ffi::OsString;
 use std::io::Write;
 use std::path::{Path, PathBuf};
+
+mod argv;
+pub use argv::clap_error_line;
+use argv::{join_negative_values, non_utf8_value};
 
 /// Runnable, verified course material on vibration-driven locomotion: a leaning stick
 /// that walks on a vertically vibrating plate (dynamic jamming).
@@ -91,24 +95,56 @@ pub enum Command {
         #[arg(long, value_name = "DIR", default_value = "chapters")]
         dir: PathBuf,
     },
-    /// Ch. 1 (section 1): when is a motion locomotion and not dragging? Convex hull of the media velocities.
-    LocomotionDefinition(chapters::locomotion_definition::Args),
-    /// Ch. 2 (section 2): effective mass of a leaning stick and the sideways impulse J_l/J_v.
-    EffectiveMass(chapters::effective_mass::Args),
-    /// Ch. 3 (section 3.1.1): horizontal shaking turns Coulomb friction viscous (booktop).
-    HorizontalShaking(chapters::horizontal_shaking::Args),
-    /// Ch. 4 (section 3.1.2): vertical shaking and the law mu_eff = v_ave/v_z.
-    VerticalShaking(chapters::vertical_shaking::Args),
-    /// Ch. 5 (section 3.2): asymmetric shaking moves a block with Coulomb but not with linear friction.
-    AsymmetricShaking(chapters::asymmetric_shaking::Args),
-    /// Ch. 6 (sections 4, 5): the stick's hybrid state machine (flight, pivot, slide, collision).
-    StickStateMachine(chapters::stick_state_machine::Args),
-    /// Ch. 7 (all sections): speed versus accuracy of the numerical methods.
-    SpeedVsAccuracy(chapters::speed_vs_accuracy::Args),
-    /// Ch. 8 (sections 2, 4): the stick with inertia (rod mass, tip mass, impacts with friction, Painleve cases).
-    StickWithInertia(chapters::stick_with_inertia::Args),
+    /// One subcommand per chapter of the registry (`workbook <chapter-id> [flags]`).
+    #[command(flatten)]
+    Chapter(ChapterRun),
     /// The live lab: a local web page (127.0.0.1) where sliders drive chapter 6's simulator.
     Lab(crate::lab::Args),
+}
+
+/// A chapter's subcommand as parsed: its registry entry and its flags (read into the
+/// chapter's own `Args` by [`chapters::Chapter::run`]). The subcommands are built from
+/// [`CHAPTERS`]: nothing here names a chapter.
+#[derive(Debug, Clone)]
+pub struct ChapterRun {
+    /// The chapter.
+    pub chapter: &'static ChapterInfo,
+    /// Its flags.
+    pub matches: ArgMatches,
+}
+
+impl FromArgMatches for ChapterRun {
+    fn from_arg_matches(m: &ArgMatches) -> Result<Self, clap::Error> {
+        use clap::error::ErrorKind;
+        let (name, sub) = m
+            .subcommand()
+            .ok_or_else(|| clap::Error::new(ErrorKind::MissingSubcommand))?;
+        let chapter = chapters::info(name)
+            .ok_or_else(|| clap::Error::raw(ErrorKind::InvalidSubcommand, name.to_string()))?;
+        Ok(ChapterRun {
+            chapter,
+            matches: sub.clone(),
+        })
+    }
+
+    fn update_from_arg_matches(&mut self, m: &ArgMatches) -> Result<(), clap::Error> {
+        *self = ChapterRun::from_arg_matches(m)?;
+        Ok(())
+    }
+}
+
+impl Subcommand for ChapterRun {
+    fn augment_subcommands(cmd: clap::Command) -> clap::Command {
+        cmd.subcommands(CHAPTERS.iter().map(ChapterInfo::subcommand))
+    }
+
+    fn augment_subcommands_for_update(cmd: clap::Command) -> clap::Command {
+        ChapterRun::augment_subcommands(cmd)
+    }
+
+    fn has_subcommand(name: &str) -> bool {
+        chapters::info(name).is_some()
+    }
 }
 
 impl Cli {
@@ -244,108 +280,34 @@ fn computes(c: &Command) -> bool {
     !matches!(c, Command::List | Command::Render { .. } | Command::Lab(_))
 }
 
-/// The one line the CLI prints for a clap error: clap's first paragraph (the error,
-/// naming the flag and the value), its indented continuation lines (such as
-/// `[possible values: ...]`) joined with a space, a line break inside the value shown as
-/// `\n`, and a pointer to `--help`. The lab answers with the same line.
-pub fn clap_error_line(e: &clap::Error) -> String {
-    let rendered = e.render().to_string();
-    let first = rendered.trim_start().split("\n\n").next().unwrap_or("");
-    let mut line = String::new();
-    for (i, l) in first.trim_end().lines().enumerate() {
-        if i > 0 {
-            let continuation = l.starts_with(' ') || l.starts_with('\t');
-            line.push_str(if continuation { " " } else { "\\n" });
-        }
-        line.push_str(if i > 0 { l.trim_start() } else { l });
-    }
-    if line.is_empty() {
-        line = "error: bad arguments".into();
-    }
-    format!("{} (see --help)", line.replace('\r', "\\r"))
-}
-
-/// The error line for an argument that is not UTF-8, naming its flag (`--x VALUE` or
-/// `--x=VALUE`); clap's own message names none.
-fn non_utf8_value(args: &[OsString]) -> Option<String> {
-    let i = args.iter().skip(1).position(|a| a.to_str().is_none())? + 1;
-    let bytes = args[i].as_encoded_bytes();
-    let flag = if bytes.starts_with(b"--") {
-        let end = bytes.iter().position(|&b| b == b'=').unwrap_or(bytes.len());
-        String::from_utf8_lossy(&bytes[..end]).into_owned()
-    } else {
-        match args[i - 1].to_str() {
-            Some(prev) if prev.starts_with("--") => prev.to_string(),
-            _ => "an argument".to_string(),
-        }
-    };
-    Some(format!(
-        "error: invalid value {:?} for {flag}: not valid UTF-8 text (see --help)",
-        args[i].to_string_lossy()
-    ))
-}
-
-/// Joins a value flag and a following negative number into one argument
-/// (`--theta0-rad -.3` into `--theta0-rad=-.3`): clap takes a leading `-` for a flag
-/// unless the text looks like a plain decimal, and refuses `-.5` or `-3e-1`. Only a
-/// token that parses as a number is joined, so no flag can be swallowed.
-fn join_negative_values(cmd: &clap::Command, args: Vec<OsString>) -> Vec<OsString> {
-    fn value_flags(cmd: &clap::Command, names: &mut Vec<String>) {
-        for a in cmd.get_arguments() {
-            if let (Some(long), true) = (a.get_long(), a.get_action().takes_values()) {
-                names.push(format!("--{long}"));
-            }
-        }
-        for sub in cmd.get_subcommands() {
-            value_flags(sub, names);
-        }
-    }
-    let mut names = Vec::new();
-    value_flags(cmd, &mut names);
-    let mut out: Vec<OsString> = Vec::with_capacity(args.len());
-    let mut it = args.into_iter().peekable();
-    while let Some(a) = it.next() {
-        let is_value_flag = a.to_str().is_some_and(|s| names.iter().any(|n| n == s));
-        let next_is_negative = it
-            .peek()
-            .and_then(|n| n.to_str())
-            .is_some_and(|n| n.starts_with('-') && n.len() > 1 && n.parse::<f64>().is_ok());
-        match (is_value_flag, next_is_negative, it.peek().cloned()) {
-            (true, true, Some(v)) => {
-                let mut joined = a.clone();
-                joined.push("=");
-                joined.push(&v);
-                it.next();
-                out.push(joined);
-            }
-            _ => out.push(a),
-        }
-    }
-    out
-}
-
 /// Refuses a global flag where it would mean nothing (every flag means something
 /// wherever it is accepted): `list` takes only --json, `render` none, and
 /// --allow-long-runs only the chapter with a work budget (stick-state-machine; the
 /// others do a fixed amount of work). --g-mps2 is checked by the chapters.
 fn refuse_unused(cli: &Cli, given: &[&str]) -> error::Result<()> {
-    let (what, allowed): (&str, &[&str]) = match cli.command {
+    const RUN_FLAGS: &[&str] = &["quick", "json", "figures", "no_figures", "g_mps2"];
+    let (what, allowed): (&str, &[&str]) = match &cli.command {
         Command::List => ("list", &["json"]),
         Command::Render { .. } => ("render", &[]),
         Command::Lab(_) => ("lab", &[]),
-        Command::StickStateMachine(_) => return Ok(()),
-        Command::All => ("all", &["quick", "json", "figures", "no_figures", "g_mps2"]),
-        _ => (
-            "this chapter",
-            &["quick", "json", "figures", "no_figures", "g_mps2"],
-        ),
+        Command::Chapter(c) if c.chapter.work_budget() => return Ok(()),
+        Command::All => ("all", RUN_FLAGS),
+        Command::Chapter(_) => ("this chapter", RUN_FLAGS),
     };
     match given.iter().find(|id| !allowed.contains(id)) {
         Some(id) => {
+            let budgeted: Vec<&str> = CHAPTERS
+                .iter()
+                .filter(|c| c.work_budget())
+                .map(|c| c.id)
+                .collect();
             let why = if *id == "allow_long_runs" {
-                " (it applies to stick-state-machine, the one chapter with a work budget)"
+                format!(
+                    " (it applies to {}, the one chapter with a work budget)",
+                    budgeted.join(", ")
+                )
             } else {
-                ""
+                String::new()
             };
             Err(WorkbookError::bad_input(
                 &format!("--{}", id.replace('_', "-")),
@@ -406,31 +368,11 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
         check_figures(root)?;
     }
     let report = match &cli.command {
-        Command::List => {
-            if cli.json {
-                let list: Vec<serde_json::Value> = CHAPTERS
-                    .iter()
-                    .map(|c| serde_json::json!({"id": c.id, "section": c.section, "title": c.title, "question": c.question}))
-                    .collect();
-                writeln!(out, "{}", serde_json::Value::Array(list))?;
-            } else {
-                for c in CHAPTERS.iter() {
-                    writeln!(out, "{:<22} section {:<6} {}", c.id, c.section, c.question)?;
-                }
-            }
-            return Ok(0);
-        }
+        Command::List => return list(cli.json, out),
         Command::All => return run_all(cli, &ctx, out),
         Command::Render { check, dir } => return render::render(dir, *check, out),
         Command::Lab(a) => return crate::lab::run(a, out),
-        Command::LocomotionDefinition(a) => chapters::locomotion_definition::run(a, &ctx)?,
-        Command::EffectiveMass(a) => chapters::effective_mass::run(a, &ctx)?,
-        Command::HorizontalShaking(a) => chapters::horizontal_shaking::run(a, &ctx)?,
-        Command::VerticalShaking(a) => chapters::vertical_shaking::run(a, &ctx)?,
-        Command::AsymmetricShaking(a) => chapters::asymmetric_shaking::run(a, &ctx)?,
-        Command::StickStateMachine(a) => chapters::stick_state_machine::run(a, &ctx)?,
-        Command::SpeedVsAccuracy(a) => chapters::speed_vs_accuracy::run(a, &ctx)?,
-        Command::StickWithInertia(a) => chapters::stick_with_inertia::run(a, &ctx)?,
+        Command::Chapter(c) => c.chapter.chapter.run(&c.matches, &ctx)?,
     };
     let report = checked(&report)?;
     if cli.json {
@@ -441,25 +383,50 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
     Ok(i32::from(report.has_failures()))
 }
 
+/// `workbook list`: one line per chapter (with `--json`, one array).
+fn list(json: bool, out: &mut dyn Write) -> error::Result<i32> {
+    if json {
+        let list: Vec<serde_json::Value> = CHAPTERS
+            .iter()
+            .map(|c| serde_json::json!({"id": c.id, "section": c.section, "title": c.title, "question": c.question}))
+            .collect();
+        writeln!(out, "{}", serde_json::Value::Array(list))?;
+    } else {
+        for c in CHAPTERS.iter() {
+            writeln!(out, "{:<22} section {:<6} {}", c.id, c.section, c.question)?;
+        }
+    }
+    Ok(0)
+}
+
+/// Checks `all --g-mps2` before the first chapter runs, against the narrowest range of
+/// the chapters that use g (their tables' `--g-mps2` entries).
+fn check_all_g(g: f64) -> error::Result<()> {
+    let narrowest = CHAPTERS
+        .iter()
+        .filter_map(|c| crate::flags::find(c.flags, "--g-mps2").map(|f| (c, f)))
+        .max_by(|a, b| a.1.range.lo.total_cmp(&b.1.range.lo));
+    match narrowest {
+        Some((c, f)) if f.range.lo > crate::flags::G.range.lo => {
+            let why = format!("`all` runs chapter {}: {}", c.number, f.reason);
+            let valid = format!("{} ({}; {why})", f.range_text(), f.unit);
+            error::check("--g-mps2", g, |v| f.range.contains(v), &valid).map(drop)
+        }
+        _ => chapters::check_g(g).map(drop),
+    }
+}
+
 fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> {
     if let Some(g) = ctx.g_mps2 {
-        // checked before the first chapter runs: chapter 7 accepts the narrowest range
-        error::range(
-            "--g-mps2",
-            g,
-            chapters::speed_vs_accuracy::G_MIN_MPS2,
-            chapters::G_MAX_MPS2,
-            "m/s^2",
-            "`all` runs chapter 7, whose reference check is validated from 3 m/s^2 up",
-        )?;
+        check_all_g(g)?;
     }
     let mut reports: Vec<ChapterReport> = Vec::new();
     for c in CHAPTERS.iter() {
         let mut c_ctx = ctx.clone();
-        if !chapters::uses_g(c.id) {
+        if !c.uses_g() {
             c_ctx.g_mps2 = None; // documented: `all` applies g where it is used
         }
-        let r = chapters::run_default(c.id, &c_ctx)?;
+        let r = c.run_default(&c_ctx)?;
         checked(&r)?;
         if !cli.json {
             writeln!(out, "{}", r.human())?;
