@@ -352,7 +352,7 @@ fn a_closed_stdout_pipe_ends_quietly() {
 
 #[test]
 fn the_report_layer_refuses_non_finite_numbers() {
-    use locomotion_workbook::report::{ChapterReport, Claim};
+    use locomotion_workbook::report::{ChapterReport, Check, Claim};
     let mut r = ChapterReport::new("x", "t", "s");
     r.param("ok_m", 1.0);
     assert_eq!(r.first_non_finite(), None);
@@ -362,7 +362,7 @@ fn the_report_layer_refuses_non_finite_numbers() {
     r.result("speed_mps", vec![1.0, f64::INFINITY]);
     assert_eq!(r.first_non_finite().as_deref(), Some("results.speed_mps"));
     let mut r = ChapterReport::new("x", "t", "s");
-    r.claim(Claim::close("c", "s", "st", 1.0, f64::NAN, 1e-3));
+    r.claim(Claim::draft(Check::Simulation, "c", "s", "st").close(1.0, f64::NAN, 1e-3));
     assert!(r.first_non_finite().unwrap().contains("claims[0]"));
 }
 

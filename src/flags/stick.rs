@@ -37,7 +37,9 @@ pub const DAMPING: Flag = Flag::new(
     "N m s/rad",
     Interval::closed(0.0, 0.1),
 )
-.why("0 to 10 x the authors' damper")
+.shown_as("0 <= value <= 0.1, and above 0 when a spring and a massless rod need it")
+.why("0 to 10 x the authors' damper; the massless rod's flight (C.3, theta' = -(k/gamma)(theta - theta_0)) is undetermined at gamma = 0 when k > 0")
+.coupled()
 .default_is("scene: 0.01");
 
 /// `--mu`.

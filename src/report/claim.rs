@@ -143,8 +143,8 @@ pub struct Claim {
     pub tolerance: Value,
     /// The verdict.
     pub verdict: Verdict,
-    /// The kind of evidence behind the verdict (set with [`Claim::with_check`]; a
-    /// claim whose kind was never stated counts as [`Check::Consistency`]).
+    /// The kind of evidence behind the verdict (the first argument of [`Claim::draft`]:
+    /// there is no default).
     pub check: Check,
     /// Id of another claim of the same chapter whose numbers and finding this one
     /// shares (two algorithms printing the same line, judged on the same events): an
@@ -269,95 +269,11 @@ impl Claim {
         }
     }
 
-    /// Old form, being replaced by [`Claim::draft`] (issue 20): a claim whose verdict is `verdict_if_holds` when the check `holds`, and
-    /// [`Verdict::Failed`] otherwise.
-    ///
-    /// `holds` must come from a comparison of `expected` with `computed` (or of the
-    /// corrected statement with the computation, for an erratum).
-    #[allow(clippy::too_many_arguments)]
-    pub fn judged(
-        id: &str,
-        section: &str,
-        statement: &str,
-        expected: impl Into<Value>,
-        computed: impl Into<Value>,
-        tolerance: impl Into<Value>,
-        holds: bool,
-        verdict_if_holds: Verdict,
-    ) -> Claim {
-        Claim {
-            id: id.to_string(),
-            section: section.to_string(),
-            statement: statement.to_string(),
-            expected: finite_or_text(expected.into()),
-            computed: finite_or_text(computed.into()),
-            tolerance: finite_or_text(tolerance.into()),
-            verdict: if holds {
-                verdict_if_holds
-            } else {
-                Verdict::Failed
-            },
-            check: Check::Consistency,
-            same_as: None,
-        }
-    }
-
     /// The claim marked as sharing its numbers and finding with claim `id` (see
     /// [`Claim::same_as`]).
     pub fn same_finding_as(mut self, id: &str) -> Claim {
         self.same_as = Some(id.to_string());
         self
-    }
-
-    /// The claim with its kind of evidence stated.
-    pub fn with_check(mut self, kind: Check) -> Claim {
-        self.check = kind;
-        self
-    }
-
-    /// A numeric claim: confirmed when `|computed - expected| <= tolerance`, failed
-    /// otherwise (also when either number is not finite).
-    pub fn close(
-        id: &str,
-        section: &str,
-        statement: &str,
-        expected: f64,
-        computed: f64,
-        tolerance: f64,
-    ) -> Claim {
-        let holds = is_close(expected, computed, tolerance);
-        Claim::judged(
-            id,
-            section,
-            statement,
-            expected,
-            computed,
-            tolerance,
-            holds,
-            Verdict::Confirmed,
-        )
-    }
-
-    /// An exact comparison of two discrete values (booleans, labels, counts):
-    /// confirmed when equal, failed otherwise.
-    pub fn exact<T: Into<Value> + PartialEq + Clone>(
-        id: &str,
-        section: &str,
-        statement: &str,
-        expected: T,
-        computed: T,
-    ) -> Claim {
-        let holds = expected == computed;
-        Claim::judged(
-            id,
-            section,
-            statement,
-            expected,
-            computed,
-            "exact",
-            holds,
-            Verdict::Confirmed,
-        )
     }
 }
 

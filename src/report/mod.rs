@@ -71,16 +71,16 @@ impl ChapterReport {
     pub fn result(&mut self, key: &str, value: impl Into<Value>) {
         let v = value.into();
         if v.is_null() || contains_null(&v) {
-            self.claims.push(Claim::judged(
-                &format!("finite-{key}"),
-                "workbook",
-                &format!("result {key} is a finite number"),
-                "finite",
-                "non-finite",
-                "exact",
-                false,
-                Verdict::Failed,
-            ));
+            self.claims.push(
+                Claim::draft(
+                    Check::Consistency,
+                    &format!("finite-{key}"),
+                    "workbook",
+                    &format!("result {key} is a finite number"),
+                )
+                .values("finite", "non-finite", "exact")
+                .confirmed_if(false),
+            );
         }
         self.results.insert(key.to_string(), finite_or_text(v));
     }

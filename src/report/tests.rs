@@ -3,14 +3,17 @@ use super::*;
 
 #[test]
 fn verdict_follows_the_check() {
-    let ok = Claim::close("a", "2", "x is one", 1.0, 1.0 + 1e-13, 1e-12);
+    let c = |id| Claim::draft(Check::ClosedForm, id, "2", "x is one");
+    let ok = c("a").close(1.0, 1.0 + 1e-13, 1e-12);
     assert_eq!(ok.verdict, Verdict::Confirmed);
-    let bad = Claim::close("b", "2", "x is one", 1.0, 1.1, 1e-12);
+    let bad = c("b").close(1.0, 1.1, 1e-12);
     assert_eq!(bad.verdict, Verdict::Failed);
-    let nan = Claim::close("c", "2", "x is one", 1.0, f64::NAN, 1e-12);
+    let nan = c("c").close(1.0, f64::NAN, 1e-12);
     assert_eq!(nan.verdict, Verdict::Failed);
     assert_eq!(nan.computed, Value::String("non-finite".into()));
-    let e = Claim::judged("d", "3", "s", 1.0, 2.0, 0.1, true, Verdict::Erratum);
+    let e = c("d")
+        .values(1.0, 2.0, 0.1)
+        .printed_or_corrected(false, true);
     assert_eq!(e.verdict, Verdict::Erratum);
 }
 
@@ -19,7 +22,7 @@ fn json_has_exactly_the_contract_keys() {
     let mut r = ChapterReport::new("x", "T", "1");
     r.param("mu", 0.4);
     r.result("ratio", 0.6);
-    r.claim(Claim::exact("k", "1", "s", true, true));
+    r.claim(Claim::draft(Check::ClosedForm, "k", "1", "s").exact(true, true));
     r.table("t", "|a|".into());
     let j = r.to_json();
     let keys: Vec<&String> = j.as_object().unwrap().keys().collect();
@@ -66,11 +69,12 @@ fn numbers_format_stably() {
 #[test]
 fn consistency_checks_are_counted_apart_from_confirmations() {
     let mut r = ChapterReport::new("x", "T", "1");
-    r.claim(Claim::exact("a", "1", "s", 1, 1).with_check(Check::ClosedForm));
-    r.claim(Claim::exact("b", "1", "s", 1, 1)); // kind never stated: consistency
+    r.claim(Claim::draft(Check::ClosedForm, "a", "1", "s").exact(1, 1));
+    r.claim(Claim::draft(Check::Consistency, "b", "1", "s").exact(1, 1));
     r.claim(
-        Claim::judged("c", "1", "s", 1.0, 1.0, 0.1, true, Verdict::Erratum)
-            .with_check(Check::Simulation),
+        Claim::draft(Check::Simulation, "c", "1", "s")
+            .values(1.0, 1.0, 0.1)
+            .printed_or_corrected(false, true),
     );
     assert_eq!(r.confirmed(), 1);
     assert_eq!(r.consistency_checks(), 1);
