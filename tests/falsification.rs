@@ -104,3 +104,61 @@ fn the_quick_reports_have_no_failed_claim() {
         }
     }
 }
+
+/// Each chapter's claims that carry no 10 % mutation, with the reason (the statement
+/// prints no number a 10 % error could move, or the derived tolerance is coarser): the
+/// lists live beside the mutations, in each chapter's `mutations.rs`.
+fn without_ten_percent(chapter: &str) -> Vec<(&'static str, &'static str)> {
+    use locomotion_workbook::chapters::*;
+    let lists: &[&[(&str, &str)]] = match chapter {
+        "locomotion-definition" => &[locomotion_definition::PRINTS_NO_NUMBER],
+        "effective-mass" => &[effective_mass::PRINTS_NO_NUMBER],
+        "horizontal-shaking" => &[horizontal_shaking::PRINTS_NO_NUMBER],
+        "vertical-shaking" => &[vertical_shaking::PRINTS_NO_NUMBER],
+        "asymmetric-shaking" => &[asymmetric_shaking::PRINTS_NO_NUMBER],
+        "stick-state-machine" => &[
+            stick_state_machine::NO_PRINTED_NUMBER,
+            stick_state_machine::COARSER_THAN_10_PERCENT,
+        ],
+        "speed-vs-accuracy" => &[speed_vs_accuracy::NO_TEN_PERCENT],
+        _ => &[],
+    };
+    lists.iter().flat_map(|l| l.iter().copied()).collect()
+}
+
+/// Issue 21: a 10 % error in any printed number must flip its claim. Every document
+/// claim (check not `consistency`) has a mutation whose description says "10 %" (and
+/// flips it: `every_mutation_changes_its_claims_verdict`), or is listed with its reason
+/// in its chapter's `mutations.rs`; every listed id is a document claim of the chapter.
+#[test]
+fn every_document_claim_has_a_10_percent_mutation_or_a_listed_reason() {
+    let mut wrong = Vec::new();
+    for r in reports() {
+        let listed = without_ten_percent(&r.chapter);
+        for (id, why) in &listed {
+            let ok = r
+                .claims
+                .iter()
+                .any(|c| c.id == *id && c.check != Check::Consistency);
+            if !ok || why.is_empty() {
+                wrong.push(format!(
+                    "{}/{id}: listed, but no document claim or no reason",
+                    r.chapter
+                ));
+            }
+        }
+        for c in r.claims.iter().filter(|c| c.check != Check::Consistency) {
+            let ten = mutated()
+                .get(&(r.chapter.clone(), c.id.clone()))
+                .is_some_and(|runs| runs.iter().any(|(what, _)| what.contains("10 %")));
+            let is_listed = listed.iter().any(|(id, _)| *id == c.id);
+            if !ten && !is_listed {
+                wrong.push(format!(
+                    "{}/{}: no 10 % mutation and not listed",
+                    r.chapter, c.id
+                ));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}

@@ -19,6 +19,7 @@ pub mod figures;
 pub mod measure;
 pub mod missed_event;
 pub mod mutations;
+pub use mutations::NO_TEN_PERCENT;
 pub mod report_parts;
 pub mod setup;
 pub mod statements;

@@ -26,6 +26,35 @@
 //!   methods, not the document's; each has its inequality reversed or its tolerance
 //!   loosened as mutation.
 
+/// The chapter's document claims without a 10 % mutation, each with its reason (the
+/// list above, as data for `tests/falsification.rs`).
+pub const NO_TEN_PERCENT: &[(&str, &str)] = &[
+    ("reference-converged", SETTING),
+    ("reference-convergence-study", OWN),
+    ("euler-located-order", ORDER),
+    ("moreau-jean-order", ORDER),
+    ("unlocated-events-stall", SETTING),
+    ("stick-reference-converged", SETTING),
+    ("stick-rk4-located-order", ORDER),
+    ("stick-euler-located-order", ORDER),
+    ("stick-unlocated-events-stall", SETTING),
+    ("stick-dop853-cheaper-at-1e-10", SETTING),
+    ("stick-no-missed-event", OWN),
+    ("stick-methods-moreau-jean-order", ORDER),
+    ("stick-methods-moreau-jean-gap-within-estimate", RATIO),
+    ("soft-contact-order", ORDER),
+    ("soft-contact-richardson-gap", RATIO),
+];
+
+/// Why an order of convergence has no 10 % mutation.
+const ORDER: &str = "an integer order of convergence: an order off by 10 % is no order; the neighbouring order (off by one) is the mutation, and the band is derived so that it fails";
+/// Why an estimate's ratio has none.
+const RATIO: &str = "a ratio whose tolerance is the estimate's own uncertainty (1 within 0.5): the mutation is the estimate with the wrong order, a factor 3 off";
+/// Why a tolerance printed as a setting has none.
+const SETTING: &str = "a tolerance or step range printed as a setting, not a statement about the model: the mutation reverses the inequality";
+/// Why the workbook's own statements have none.
+const OWN: &str = "the workbook's own statement about its methods (no printed number of the document): the mutation reverses it";
+
 use super::statements::Statements;
 use crate::report::{DocEdit, Mutation};
 
