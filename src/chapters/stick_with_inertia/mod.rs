@@ -256,14 +256,14 @@ fn scene_results(r: &mut ChapterReport, p: &InertiaParams, dur: f64, rtol: f64) 
         } else {
             r.result("alpha", "above 1e308 (a rod of the smallest doubles)");
         }
-        r.result("inertia_ratio", p.inertia_ratio());
+        inertia_ratio_result(r, p);
     } else {
         let run = evidence::scene_run(p, dur, rtol, 0.0);
         r.result("mean_velocity_mps", run.mean_velocity_mps);
         r.result("method", "event-driven (full model)");
         full_run_results(r, &run, "");
         r.result("alpha", p.geometry().alpha());
-        r.result("inertia_ratio", p.inertia_ratio());
+        inertia_ratio_result(r, p);
         r.result(
             "energy_budget_relative_residual",
             run.budget.relative_residual(),
@@ -315,4 +315,19 @@ fn answer_results(r: &mut ChapterReport, ctx: &Context) {
 /// Falsification: each statement's printed number off by 10 % ([`mutations`]).
 pub fn mutations() -> Vec<Mutation> {
     mutations::all()
+}
+
+/// `inertia_ratio` = I_P k / gamma^2 (dimensionless), or a text when there is no damper
+/// (gamma = 0: the massless model has no flight law to be the limit of, the ratio is
+/// infinite).
+fn inertia_ratio_result(r: &mut ChapterReport, p: &InertiaParams) {
+    let ratio = p.inertia_ratio();
+    if ratio.is_finite() {
+        r.result("inertia_ratio", ratio);
+    } else {
+        r.result(
+            "inertia_ratio",
+            "infinite (no damper: gamma = 0, the massless model has no flight law to compare)",
+        );
+    }
 }
