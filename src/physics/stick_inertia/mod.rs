@@ -71,56 +71,8 @@ pub const FLOW_ARGS: usize = 3;
 /// The state vector.
 pub type State = [f64; NSTATE];
 
-/// The contact modes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Mode {
-    /// No contact: G ballistic, the angle a damped oscillator (3 DOF).
-    Flight,
-    /// C stuck on the plate (1 DOF).
-    Pivot,
-    /// C slipping towards -x, friction `F_x = +mu F_z` (2 DOF).
-    SlideLeft,
-    /// C slipping towards +x, friction `F_x = -mu F_z` (2 DOF).
-    SlideRight,
-}
-
-impl Mode {
-    /// All modes.
-    pub const ALL: [Mode; 4] = [Mode::Flight, Mode::Pivot, Mode::SlideLeft, Mode::SlideRight];
-
-    /// snake_case name.
-    pub fn name(self) -> &'static str {
-        match self {
-            Mode::Flight => "flight",
-            Mode::Pivot => "pivot",
-            Mode::SlideLeft => "slide_left",
-            Mode::SlideRight => "slide_right",
-        }
-    }
-
-    /// Index in [`Mode::ALL`].
-    pub fn index(self) -> usize {
-        self as usize
-    }
-
-    /// Sign of the friction of a slide, `F_x = sigma mu F_z` (+1 left, -1 right, 0 else).
-    pub fn sigma(self) -> f64 {
-        match self {
-            Mode::SlideLeft => 1.0,
-            Mode::SlideRight => -1.0,
-            _ => 0.0,
-        }
-    }
-
-    /// The slide whose friction sign is `sigma`.
-    pub fn slide(sigma: f64) -> Mode {
-        if sigma > 0.0 {
-            Mode::SlideLeft
-        } else {
-            Mode::SlideRight
-        }
-    }
-}
+/// The contact modes: chapter 6's four (flight 3 DOF here, pivot 1, the slides 2).
+pub use crate::physics::stick::Mode;
 
 /// Why a run stopped early.
 #[derive(Debug, Clone, PartialEq)]
