@@ -14,10 +14,10 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::common::Tol;
-use super::pair::{self, Pair};
+use super::pair::Pair;
 use super::step::{Interp, Step};
-use super::stepper::{At, Memory, Stepper};
-use super::{OdeError, OdeSystem, Stats, StepControl};
+use super::stepper::{At, Memory};
+use super::{OdeSystem, Stats};
 use std::cell::OnceCell;
 
 /// Short name for tables and JSON.
@@ -29,19 +29,6 @@ pub(super) const ORDER: u32 = 8;
 /// interpolant (a trial returns only its end state, so nothing large is moved per trial).
 #[derive(Debug, Clone, Default)]
 pub(super) struct Dop853<const N: usize>;
-
-impl<const N: usize> Stepper<N> for Dop853<N> {
-    fn step<S: OdeSystem<N> + ?Sized>(
-        &mut self,
-        sys: &S,
-        at: At<'_, N>,
-        control: StepControl,
-        mem: &mut Memory<N>,
-        stats: &mut Stats,
-    ) -> Result<(), OdeError> {
-        pair::step(self, sys, at, control, mem, stats)
-    }
-}
 
 impl<const N: usize> Pair<N> for Dop853<N> {
     const ORDER: u32 = ORDER;

@@ -6,10 +6,10 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::common::{comb, stage_arg, Tol};
-use super::pair::{self, Pair};
+use super::pair::Pair;
 use super::step::Interp;
-use super::stepper::{At, Memory, Stepper};
-use super::{OdeError, OdeSystem, Stats, StepControl};
+use super::stepper::{At, Memory};
+use super::{OdeSystem, Stats};
 
 /// Short name for tables and JSON.
 pub(super) const NAME: &str = "dopri5";
@@ -28,19 +28,6 @@ impl<const N: usize> Default for Dopri5<N> {
         Dopri5 {
             trial: ([0.0; N], [[0.0; N]; 4]),
         }
-    }
-}
-
-impl<const N: usize> Stepper<N> for Dopri5<N> {
-    fn step<S: OdeSystem<N> + ?Sized>(
-        &mut self,
-        sys: &S,
-        at: At<'_, N>,
-        control: StepControl,
-        mem: &mut Memory<N>,
-        stats: &mut Stats,
-    ) -> Result<(), OdeError> {
-        pair::step(self, sys, at, control, mem, stats)
     }
 }
 

@@ -2,7 +2,7 @@
 //! around a trial step (error-controlled), or one trial taken as it is (fixed steps).
 
 use super::common::{initial_step, place_step, Tol};
-use super::stepper::{accept_fixed, fixed_step, At, Memory};
+use super::stepper::{accept_fixed, fixed_step, At, Memory, Stepper};
 use super::{OdeError, OdeSystem, Stats, StepControl};
 
 /// An explicit embedded Runge-Kutta pair: a trial step with its error norm, and the
@@ -107,5 +107,19 @@ fn adaptive<P: Pair<N>, S: OdeSystem<N> + ?Sized, const N: usize>(
         };
         h *= fac;
         mem.h_next = Some(h);
+    }
+}
+
+/// Every embedded pair steps the same way: [`step`].
+impl<P: Pair<N> + Default, const N: usize> Stepper<N> for P {
+    fn step<S: OdeSystem<N> + ?Sized>(
+        &mut self,
+        sys: &S,
+        at: At<'_, N>,
+        control: StepControl,
+        mem: &mut Memory<N>,
+        stats: &mut Stats,
+    ) -> Result<(), OdeError> {
+        step(self, sys, at, control, mem, stats)
     }
 }
