@@ -19,11 +19,10 @@
 //
 // Usage: node --experimental-websocket book/browser-test.mjs [chromium binary]
 // (Node 20 needs the flag for its built-in WebSocket; Node 22 has it by default.)
-import { spawn } from "node:child_process";
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from "node:fs";
-import { tmpdir } from "node:os";
+import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { fileURLToPath, pathToFileURL } from "node:url";
+import { Cdp, launchChromium } from "./cdp.mjs";
 
 const bookDir = resolve("target/book");
 const shotDir = resolve("target/book-screenshots");
@@ -85,86 +84,6 @@ function gifFrames(path) {
     }
   }
   return { frames, delayMs };
-}
-
-function launch() {
-  const profile = mkdtempSync(join(tmpdir(), "book-test-"));
-  const args = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-background-networking",
-    "--disable-extensions",
-    "--disable-sync",
-    "--no-first-run",
-    "--no-default-browser-check",
-    "--hide-scrollbars",
-    "--mute-audio",
-    `--user-data-dir=${profile}`,
-    "--remote-debugging-port=0",
-    "--window-size=1280,1600",
-    "about:blank",
-  ];
-  const proc = spawn(chromiumBin, args, { stdio: ["ignore", "ignore", "pipe"] });
-  return new Promise((ok, fail) => {
-    let err = "";
-    const timer = setTimeout(() => fail(new Error(`chromium did not start:\n${err}`)), 30000);
-    proc.stderr.on("data", (d) => {
-      err += d;
-      const m = /DevTools listening on (ws:\/\/[^\s]+)/.exec(err);
-      if (m) {
-        clearTimeout(timer);
-        ok({ proc, profile, browserUrl: m[1] });
-      }
-    });
-    proc.on("exit", (code) => fail(new Error(`chromium exited (${code}):\n${err}`)));
-  });
-}
-
-class Cdp {
-  constructor(url) {
-    this.ws = new WebSocket(url);
-    this.id = 0;
-    this.pending = new Map();
-    this.listeners = [];
-    this.ws.onmessage = (ev) => {
-      const msg = JSON.parse(ev.data);
-      if (msg.id && this.pending.has(msg.id)) {
-        const { ok, fail } = this.pending.get(msg.id);
-        this.pending.delete(msg.id);
-        if (msg.error) fail(new Error(JSON.stringify(msg.error)));
-        else ok(msg.result);
-      } else if (msg.method) {
-        for (const l of this.listeners) l(msg);
-      }
-    };
-  }
-  open() {
-    return new Promise((ok, fail) => {
-      this.ws.onopen = ok;
-      this.ws.onerror = fail;
-    });
-  }
-  send(method, params = {}, sessionId) {
-    const id = ++this.id;
-    const msg = { id, method, params };
-    if (sessionId) msg.sessionId = sessionId;
-    this.ws.send(JSON.stringify(msg));
-    return new Promise((ok, fail) => this.pending.set(id, { ok, fail }));
-  }
-  once(method, timeoutMs) {
-    return new Promise((ok, fail) => {
-      const timer = setTimeout(() => fail(new Error(`timeout waiting for ${method}`)), timeoutMs);
-      const l = (msg) => {
-        if (msg.method === method) {
-          clearTimeout(timer);
-          this.listeners = this.listeners.filter((x) => x !== l);
-          ok(msg);
-        }
-      };
-      this.listeners.push(l);
-    });
-  }
 }
 
 // Runs in the page: everything the test reads from the rendered DOM.
@@ -232,7 +151,7 @@ async function main() {
   if (list.length < 3) throw new Error(`no book in ${bookDir}: run scripts/book-build.sh`);
   rmSync(shotDir, { recursive: true, force: true });
   mkdirSync(shotDir, { recursive: true });
-  const { proc, profile, browserUrl } = await launch();
+  const { proc, profile, browserUrl } = await launchChromium(chromiumBin, "book-test-", "1280,1600");
   const failures = [];
   try {
     const cdp = new Cdp(browserUrl);

@@ -14,9 +14,9 @@
 //
 // Usage: node [--experimental-websocket] book/lab-test.mjs <chromium> <workbook binary>
 import { spawn, execFileSync } from "node:child_process";
-import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
-import { tmpdir } from "node:os";
+import { mkdirSync, rmSync, writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
+import { Cdp, launchChromium } from "./cdp.mjs";
 
 const shotDir = resolve("target/lab-screenshots");
 const chromiumBin = process.argv[2] || "chromium";
@@ -39,68 +39,6 @@ function startLab() {
   });
 }
 
-function launchChromium() {
-  const profile = mkdtempSync(join(tmpdir(), "lab-test-"));
-  const args = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-    "--disable-extensions", "--disable-sync", "--no-first-run", "--no-default-browser-check",
-    "--hide-scrollbars", "--mute-audio", `--user-data-dir=${profile}`, "--remote-debugging-port=0",
-    "--window-size=1320,1000", "about:blank"];
-  const proc = spawn(chromiumBin, args, { stdio: ["ignore", "ignore", "pipe"] });
-  return new Promise((ok, fail) => {
-    let err = "";
-    const timer = setTimeout(() => fail(new Error(`chromium did not start:\n${err}`)), 30000);
-    proc.stderr.on("data", (d) => {
-      err += d;
-      const m = /DevTools listening on (ws:\/\/[^\s]+)/.exec(err);
-      if (m) { clearTimeout(timer); ok({ proc, profile, browserUrl: m[1] }); }
-    });
-    proc.on("exit", (code) => fail(new Error(`chromium exited (${code}):\n${err}`)));
-  });
-}
-
-class Cdp {
-  constructor(url) {
-    this.ws = new WebSocket(url);
-    this.id = 0;
-    this.pending = new Map();
-    this.listeners = [];
-    this.ws.onmessage = (ev) => {
-      const msg = JSON.parse(ev.data);
-      if (msg.id && this.pending.has(msg.id)) {
-        const { ok, fail } = this.pending.get(msg.id);
-        this.pending.delete(msg.id);
-        if (msg.error) fail(new Error(JSON.stringify(msg.error)));
-        else ok(msg.result);
-      } else if (msg.method) {
-        for (const l of this.listeners) l(msg);
-      }
-    };
-  }
-  open() {
-    return new Promise((ok, fail) => { this.ws.onopen = ok; this.ws.onerror = fail; });
-  }
-  send(method, params = {}, sessionId) {
-    const id = ++this.id;
-    const msg = { id, method, params };
-    if (sessionId) msg.sessionId = sessionId;
-    this.ws.send(JSON.stringify(msg));
-    return new Promise((ok, fail) => this.pending.set(id, { ok, fail }));
-  }
-  once(method, timeoutMs) {
-    return new Promise((ok, fail) => {
-      const timer = setTimeout(() => fail(new Error(`timeout waiting for ${method}`)), timeoutMs);
-      const l = (msg) => {
-        if (msg.method === method) {
-          clearTimeout(timer);
-          this.listeners = this.listeners.filter((x) => x !== l);
-          ok(msg);
-        }
-      };
-      this.listeners.push(l);
-    });
-  }
-}
-
 /// The CLI's results for the jamming scene with `flags`, or its stderr line and exit code.
 function cli(flags) {
   const args = ["stick-state-machine", "--json", "--no-figures", "--duration-s", "2", ...flags];
@@ -120,7 +58,7 @@ async function main() {
   mkdirSync(shotDir, { recursive: true });
   const lab = await startLab();
   const origin = lab.url.replace(/\/$/, "");
-  const { proc, profile, browserUrl } = await launchChromium();
+  const { proc, profile, browserUrl } = await launchChromium(chromiumBin, "lab-test-", "1320,1000");
   const failures = [];
   const fail = (m) => { failures.push(m); console.error(`FAIL ${m}`); };
   const okm = (m) => console.log(`ok ${m}`);
