@@ -331,14 +331,6 @@ pub fn mutations(id: &str) -> Vec<Mutation> {
     info(id).map(ChapterInfo::mutations).unwrap_or_default()
 }
 
-/// The report of a chapter that is not built yet: says so, no claims.
-pub fn not_built(id: &str) -> ChapterReport {
-    let info = info(id).expect("registered chapter");
-    let mut r = info.report();
-    r.status = Some("this chapter is not built yet: no claims are checked".to_string());
-    r
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
