@@ -150,10 +150,12 @@ fn a_huge_content_length_is_refused_before_it_is_read() {
             assert!(t0.elapsed() < Duration::from_secs(1));
         }
     }
-    // beyond u64: malformed
+    // beyond u64: as refused; not a number: malformed
     let req =
         "POST /api/run HTTP/1.1\r\nHost: localhost\r\nContent-Length: 99999999999999999999\r\n\r\n";
-    assert_refused(&lab.raw(req.as_bytes()), 400, "Content-Length", "20 digits");
+    assert_refused(&lab.raw(req.as_bytes()), 413, "limit of 16384", "20 digits");
+    let req = "POST /api/run HTTP/1.1\r\nHost: localhost\r\nContent-Length: -1\r\n\r\n";
+    assert_refused(&lab.raw(req.as_bytes()), 400, "Content-Length", "negative");
     lab.still_answers();
     assert_eq!(lab.post_run().0, 200);
 }
