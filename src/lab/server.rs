@@ -29,7 +29,7 @@ pub const TIMEOUT: Duration = Duration::from_secs(30);
 /// closed. A browser opens about six.
 pub const MAX_CONNECTIONS: usize = 64;
 /// Stack of a connection's thread: it parses, routes and writes (runs have their own).
-const CONNECTION_STACK_BYTES: usize = 256 * 1024;
+const CONNECTION_STACK_BYTES: usize = 1024 * 1024;
 
 /// A bound lab server.
 pub struct Lab {
