@@ -14,6 +14,7 @@ mod falsification;
 mod fuzz;
 mod horizontal_shaking;
 mod lab;
+mod lab_attacks;
 mod locomotion_definition;
 mod notation;
 mod speed_vs_accuracy;

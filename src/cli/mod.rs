@@ -88,7 +88,7 @@ pub enum Command {
     All,
     /// Refresh the generated tables in chapters/*.md (with --check: fail if any is stale).
     Render {
-        /// Do not write; exit 1 and name each stale table if the text is out of date.
+        /// Do not write; exit 4 and name each stale table if the text is out of date.
         #[arg(long)]
         check: bool,
         /// Folder of the course text.

@@ -7,11 +7,12 @@
 //! ([`simulate`]) and `/api/map` ([`map`]); [`api`] turns them into the flags of
 //! `workbook stick-state-machine` and validates them with the CLI's own parser and
 //! ranges, so that the lab and the CLI accept the same values, refuse the others with
-//! the same line, and compute the same numbers (tests/lab.rs). [`server`] bounds every
-//! request and runs the simulations on worker threads. The lab writes no file.
+//! the same line, and compute the same numbers (tests/lab.rs). [`server`] and [`http`]
+//! bound every request (tests/lab_attacks.rs) and run the simulations on worker threads. The lab writes no file.
 
 pub mod api;
 pub mod assets;
+pub mod http;
 pub mod map;
 pub mod server;
 pub mod simulate;
@@ -48,11 +49,8 @@ pub fn run(args: &Args, out: &mut dyn Write) -> Result<i32> {
         ))
     })?;
     let addr = lab.addr();
-    let url = if addr.ip().is_loopback() {
-        format!("http://127.0.0.1:{}/", addr.port())
-    } else {
-        format!("http://{addr}/")
-    };
+    // the address bound, as a URL (`http://[::1]:8023/` for IPv6)
+    let url = format!("http://{addr}/");
     if !args.host.is_loopback() {
         eprintln!(
             "warning: the lab listens on {addr}, reachable from other computers on the network, with no authentication"

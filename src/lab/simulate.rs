@@ -9,6 +9,7 @@ use crate::chapters::stick_state_machine::{self as ssm, main_run, round};
 use crate::physics::stick::run::{RunSummary, Sample};
 use crate::physics::stick::{StickModel, StickParams, TH, XC, ZC};
 use serde_json::{json, Value};
+use std::collections::BTreeMap;
 
 /// Animation frames per drive cycle: enough to see a hop of a fraction of a cycle.
 pub const FRAMES_PER_CYCLE: f64 = 40.0;
@@ -25,13 +26,7 @@ pub fn run(req: &RunRequest) -> Value {
     let started = std::time::Instant::now();
     let p = &req.params;
     let dt = frame_dt_s(p, req.duration_s);
-    let (_physical, mut main, fired) = main_run::run_main(
-        &req.args,
-        p,
-        req.duration_s,
-        &req.opts,
-        main_run::recording(dt),
-    );
+    let (mut main, fired) = reported_run(req, dt);
     let mut report = crate::chapters::info(ssm::ID).expect("registered").report();
     for (key, value) in main_run::params(&req.args, p, req.duration_s) {
         report.param(key, value);
@@ -51,6 +46,24 @@ pub fn run(req: &RunRequest) -> Value {
         "scene": scene_facts(&model),
         "compute_ms": round(started.elapsed().as_secs_f64() * 1e3, 3),
     })
+}
+
+/// The run the CLI reports for the request (`main_run::run_main`'s second run), alone:
+/// the lab has no claims to judge on the physical run, so it neither runs it twice under
+/// `--rules printed` nor keeps a copy of its trace (each trace holds a sample per
+/// integration step: one copy fewer halves a run's peak memory, docs/lab.md).
+fn reported_run(req: &RunRequest, dt: f64) -> (RunSummary, BTreeMap<&'static str, u64>) {
+    let (p, a, rec) = (&req.params, &req.args, main_run::recording(dt));
+    match a.rules {
+        ssm::Rules::Physical => (
+            ssm::run_scene_from(p, a.start, req.duration_s, &req.opts, rec),
+            BTreeMap::new(),
+        ),
+        ssm::Rules::Printed => {
+            let printed = crate::physics::stick::printed::Printed::AS_PRINTED;
+            ssm::run_printed_from(p, printed, a.start, req.duration_s, &req.opts, rec)
+        }
+    }
 }
 
 /// The fixed facts the page draws with: the rod length, the plate amplitude, the
