@@ -5,9 +5,12 @@
 //! CLI's `--events` CSV, so that the page's downloads are the CLI's files.
 
 use super::api::RunRequest;
-use crate::chapters::stick_state_machine::{self as ssm, main_run, round};
-use crate::physics::stick::run::{RunSummary, Sample};
+use crate::chapters::stick_state_machine::{self as ssm, main_run, poincare, round};
+use crate::physics::stick::run::{initial_state, simulate_stick, Recording, RunSummary, Sample};
 use crate::physics::stick::{StickModel, StickParams, TH, XC, ZC};
+use crate::physics::stick_inertia::limit;
+use crate::physics::stick_inertia::run::{run_from_rest, InertiaOutcome, InertiaRun};
+use crate::physics::stick_inertia::{InertiaModel, InertiaParams};
 use serde_json::{json, Value};
 
 /// Animation frames per drive cycle: enough to see a hop of a fraction of a cycle.
@@ -49,6 +52,9 @@ pub fn run(req: &RunRequest) -> Value {
         "events_csv": ssm::events_csv(&main),
         "frames": frames(&model, &main, dt),
         "scene": scene_facts(&model),
+        // added for issue 31: the stroboscopic view and chapter 8's rod
+        "cycle": cycle_view(req),
+        "rod": rod_view(req, dt),
         "compute_ms": round(started.elapsed().as_secs_f64() * 1e3, 3),
     })
 }
@@ -102,4 +108,202 @@ fn thin(trace: &[Sample], dt: f64) -> Vec<&Sample> {
         }
     }
     out
+}
+
+/// Most drive cycles of the stroboscopic view (the section points of a longer run
+/// change by less than the screen's pixel once the orbit has settled).
+pub const STROBE_MAX_CYCLES: usize = 120;
+/// Largest period whose fixed point the lab looks for (chapter 6 section 5 finds
+/// period 1 and 2 on its scenes).
+pub const STROBE_MAX_PERIOD: usize = 2;
+
+/// The stroboscopic (Poincare) view of the request's scene: chapter 6's section at
+/// plate phase 0 ([`poincare`]), the orbit of the static start for the run's drive
+/// cycles, the fixed point of `P^n` (`n` = 1, then 2) found by Newton from the orbit's
+/// last point, its Floquet multipliers by central differences, each orbit point's
+/// distance to it, and the contraction per cycle measured on the orbit (a second
+/// estimate of the leading multiplier's modulus, by simulation alone).
+pub fn cycle_view(req: &RunRequest) -> Value {
+    let model = StickModel::new(req.params);
+    let opts = &req.opts;
+    let cycles = (req.duration_s * req.params.frequency_hz()).floor() as usize;
+    let Some(x0) = poincare::static_start(&model) else {
+        return json!({ "orbit": [], "fixed": null, "why": "no static start: the rules stop at t = 0" });
+    };
+    let mut orbit = vec![x0];
+    let mut ended = None;
+    for _ in 0..cycles.min(STROBE_MAX_CYCLES) {
+        match poincare::strobe(&model, opts, orbit.last().expect("non-empty"), 1) {
+            Ok(x) => orbit.push(x),
+            Err(o) => {
+                ended = Some(o.label());
+                break;
+            }
+        }
+    }
+    let fixed = if ended.is_none() {
+        fixed_point(
+            &model,
+            opts,
+            req.args.rtol,
+            orbit.last().expect("non-empty"),
+        )
+    } else {
+        None
+    };
+    let dist: Vec<Option<f64>> = orbit
+        .iter()
+        .map(|x| {
+            let d = fixed
+                .as_ref()
+                .map_or(f64::INFINITY, |(f, _, _)| poincare::distance(&model, x, f));
+            d.is_finite().then(|| round(d, 6))
+        })
+        .collect();
+    let point = |x: &poincare::Point| json!({ "mode": x.mode.letter().to_string(), "s": x.s.iter().map(|v| round(*v, 9)).collect::<Vec<_>>() });
+    json!({
+        "section": "plate phase 0 (t = k T), from the static start",
+        "orbit": orbit.iter().map(point).collect::<Vec<_>>(),
+        "ended": ended,
+        "distance": dist,
+        "fixed": fixed.as_ref().map(|(x, n, m)| {
+            let lead = poincare::moduli(m).first().copied().unwrap_or(f64::NAN);
+            json!({
+                "period": n,
+                "point": point(x),
+                "multipliers": m.iter().map(|z| [round(z.0, 6), round(z.1, 6)]).collect::<Vec<_>>(),
+                "leading_modulus": round(lead, 6),
+                "stable": lead < 1.0,
+            })
+        }),
+        "observed_ratio": observed_ratio(&dist).map(|r| round(r, 6)),
+    })
+}
+
+/// A fixed point of `P^n`, its period `n` and its Floquet multipliers `(re, im)`.
+type Fixed = (poincare::Point, usize, Vec<(f64, f64)>);
+
+/// The fixed point of `P^n` nearest `x` (n = 1 first) and its multipliers, by Newton
+/// with central differences. The difference step `h = 1e-4` (units of the section's
+/// scales) carries `rtol / h` of noise from each run; Newton stops at `1e3 rtol`.
+fn fixed_point(
+    model: &StickModel,
+    opts: &crate::numerics::hybrid::Options,
+    rtol: f64,
+    x: &poincare::Point,
+) -> Option<Fixed> {
+    let h = 1e-4;
+    let tol = (1e3 * rtol).max(1e-11);
+    (1..=STROBE_MAX_PERIOD).find_map(|n| {
+        let (f, _) = poincare::newton(model, opts, x, n, (h, tol, 8))?;
+        let j = poincare::jacobian(model, opts, &f, n, h, poincare::Difference::Central)?;
+        Some((f, n, poincare::multipliers(&j)))
+    })
+}
+
+/// The orbit's contraction per cycle: `10^slope` of the least-squares line through
+/// `log10 d_k` against `k` (a rotating approach, complex multipliers, makes single
+/// ratios `d_(k+1)/d_k` wander), over the points whose distance to the fixed point
+/// lies between 1e-7 (above the runs' rounding) and 1e-2 (inside the linear
+/// neighbourhood); `None` with fewer than 8 such points.
+pub fn observed_ratio(dist: &[Option<f64>]) -> Option<f64> {
+    let pts: Vec<(f64, f64)> = dist
+        .iter()
+        .enumerate()
+        .filter_map(|(k, d)| {
+            d.filter(|v| (1e-7..1e-2).contains(v))
+                .map(|v| (k as f64, v.log10()))
+        })
+        .collect();
+    if pts.len() < 8 {
+        return None;
+    }
+    let n = pts.len() as f64;
+    let (mk, ml) = (
+        pts.iter().map(|p| p.0).sum::<f64>() / n,
+        pts.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mk) * (p.1 - ml)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mk) * (p.0 - mk)).sum();
+    Some(10f64.powf(sxy / sxx)) // formula: d_k ~ |lambda|^k, slope of log10 d_k = log10 |lambda|
+}
+
+/// Chapter 8's rod (when the request's rod mass is above 0): the rigid rod with its
+/// mass ([`crate::physics::stick_inertia`], plastic impacts as chapter 8's default)
+/// from rest at its static angle, and beside it the massless model of the same stick,
+/// chapter 6's with the whole mass `M = m + m_r` at P (chapter 8's outer solution,
+/// [`limit::massless_params`]), both as frames; `null` for the massless rod.
+pub fn rod_view(req: &RunRequest, dt: f64) -> Value {
+    if req.rod_mass_kg <= 0.0 {
+        return Value::Null;
+    }
+    let ip = InertiaParams {
+        base: req.params,
+        rod_mass_kg: req.rod_mass_kg,
+        restitution: 0.0,
+    };
+    let model = InertiaModel::new(ip);
+    let run = run_from_rest(&model, req.duration_s, &req.opts, dt);
+    let geo = model.geo;
+    let ghost_p = limit::massless_params(&ip);
+    let ghost = StickModel::new(ghost_p);
+    let y0 = initial_state(
+        &ghost,
+        0.0,
+        ghost_p.static_angle().unwrap_or(ghost_p.theta0_rad),
+    );
+    let rec = Recording {
+        sequence_cap: 0,
+        trace_dt_s: dt,
+        check_invariants: false,
+    };
+    let g = simulate_stick(&ghost, 0.0, y0, req.duration_s, &req.opts, rec);
+    let reason = match &run.outcome {
+        InertiaOutcome::Invalid(w) => Some(w.clone()),
+        _ => None,
+    };
+    json!({
+        "rod_mass_kg": req.rod_mass_kg,
+        "tip_mass_kg": req.params.mass_kg,
+        "total_kg": geo.total_kg,
+        "l_g_m": geo.l_g_m,
+        "alpha": round(geo.alpha(), 6),
+        "outcome": run.outcome.label(),
+        "outcome_reason": reason,
+        "mean_velocity_mps": run.mean_velocity_mps.is_finite().then_some(run.mean_velocity_mps),
+        "impacts": run.impact_count,
+        "painleve_events": run.painleve.len(),
+        "frames": rod_frames(&model, &run, dt),
+        "ghost": {
+            "mass_kg": ghost_p.mass_kg,
+            "outcome": g.outcome.label(),
+            "mean_velocity_mps": g.mean_velocity_mps.is_finite().then_some(g.mean_velocity_mps),
+            "frames": frames(&ghost, &g, dt),
+        },
+    })
+}
+
+/// The rod's trace as the same columns as [`frames`] (its samples are on the grid).
+fn rod_frames(model: &InertiaModel, r: &InertiaRun, dt: f64) -> Value {
+    use crate::physics::stick_inertia as si;
+    let picked: Vec<&si::run::Sample> = r
+        .trace
+        .iter()
+        .filter(|x| x.y.iter().all(|v| v.is_finite()))
+        .collect();
+    let col = |f: &dyn Fn(&si::run::Sample) -> f64| -> Vec<f64> {
+        picked.iter().map(|x| round(f(x), 7)).collect()
+    };
+    let force = |x: &si::run::Sample| model.contact_eval(x.mode, x.t_s, &x.y);
+    json!({
+        "dt_s": dt,
+        "t_s": col(&|x| x.t_s),
+        "mode": picked.iter().map(|x| x.mode.letter()).collect::<String>(),
+        "theta_rad": col(&|x| x.y[si::TH]),
+        "x_c_m": col(&|x| x.y[si::XC]),
+        "z_c_m": col(&|x| x.y[si::ZC]),
+        "plate_z_m": col(&|x| model.plate(x.t_s).0),
+        "f_x_n": col(&|x| force(x).map_or(0.0, |e| e.fx)),
+        "f_z_n": col(&|x| force(x).map_or(0.0, |e| e.fz)),
+    })
 }
