@@ -377,3 +377,58 @@ pub fn ranges() -> Value {
     }
     Value::Object(o)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn body(rod: &str) -> Vec<u8> {
+        format!(
+            r#"{{"scene": "jamming", "theta0_rad": 0.3, "mu": 0.4, "gamma": 3, "frequency_hz": 30,
+            "stiffness": 10, "damping": 0.01, "length_m": 0.15, "mass_kg": 1, "duration_s": 2{rod}}}"#
+        )
+        .into_bytes()
+    }
+
+    /// Chapter 8's CLI line for `--rod-mass-kg value` (in-process).
+    fn chapter8_line(value: &str) -> String {
+        let argv: Vec<String> = ["workbook", "stick-with-inertia", "--rod-mass-kg", value]
+            .map(String::from)
+            .to_vec();
+        let (mut out, mut err) = (Vec::new(), Vec::new());
+        let code = crate::cli::run_cli(&argv, &mut out, &mut err);
+        assert_eq!(code, 2, "{value}");
+        String::from_utf8(err)
+            .expect("utf-8")
+            .trim_end()
+            .to_string()
+    }
+
+    #[test]
+    fn the_rods_mass_is_checked_as_chapter_8_checks_it() {
+        assert_eq!(parse_run(&body("")).expect("no rod").rod_mass_kg, 0.0);
+        let r = parse_run(&body(r#", "rod_mass_kg": 0.5"#)).expect("a rod");
+        assert_eq!(r.rod_mass_kg, 0.5);
+        for v in ["11", "-1"] {
+            let e = parse_run(&body(&format!(r#", "rod_mass_kg": {v}"#))).expect_err(v);
+            assert_eq!(e.status, 400);
+            assert_eq!(e.reason, chapter8_line(v), "the lab's line is chapter 8's");
+        }
+        // the lab's own end: no composite to animate below 1e-4 kg
+        let e = parse_run(&body(r#", "rod_mass_kg": 1e-5"#)).expect_err("too light");
+        assert!(
+            e.reason
+                .starts_with("error: invalid value 1e-5 for --rod-mass-kg"),
+            "{}",
+            e.reason
+        );
+        assert!(e.reason.contains("composite"), "{}", e.reason);
+        let e = parse_run(&body(r#", "rod_mass_kg": "abc""#)).expect_err("not a number");
+        assert!(
+            e.reason.contains("--rod-mass-kg") && !e.reason.contains('\n'),
+            "{}",
+            e.reason
+        );
+        assert_eq!(ranges()["rod_mass_kg"]["max"], 10.0);
+    }
+}

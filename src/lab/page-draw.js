@@ -121,7 +121,7 @@ function drawKept(g, X, Y, t, s, E) {
   g.beginPath(); g.moveTo(fx - 70, yp); g.lineTo(fx + 70, yp); g.stroke();
   g.setLineDash([]);
   g.fillStyle = "rgba(80,80,80,0.9)"; g.font = "11px system-ui, sans-serif";
-  g.fillText("kept run, on its plate", fx - 66, yp + 13);
+  g.fillText("kept run, on its plate", fx - 130, yp - 5);
   const len = s * lab.cmp.scene.length_m;
   drawRod(g, fx, footY, c.th, len, "rgba(120,120,120,0.5)", { width: 4, tip: 7 });
   return { foot: [fx, footY], plateY: yp, mode: c.mode };
@@ -137,8 +137,8 @@ function drawGhost(g, run, X, Y, t, s) {
   const fx = X(c.x), fy = Y(c.z);
   drawRod(g, fx, fy, c.th, len, "rgba(40,40,40,0.35)", { width: 3, tip: 9, dashed: true });
   const px = fx + len * Math.sin(c.th), py = fy - len * Math.cos(c.th);
-  g.fillStyle = "rgba(40,40,40,0.7)"; g.font = "11px system-ui, sans-serif";
-  g.fillText("ghost: massless rod", px - 120, py - 12);
+  g.fillStyle = "rgba(40,40,40,0.75)"; g.font = "11px system-ui, sans-serif";
+  g.fillText("ghost: massless model", px + 12, py + 4);
   return { foot: [fx, fy] };
 }
 
@@ -291,6 +291,7 @@ function drawFoot() {
     g.beginPath(); g.moveTo(cx - 10, cy); g.lineTo(cx - 10, base); g.moveTo(cx - 14, cy); g.lineTo(cx - 6, cy); g.moveTo(cx - 14, base); g.lineTo(cx - 6, base); g.stroke();
   }
   footRuler(g, L, H, Y, k, base);
+  g.fillStyle = "rgba(251,251,253,0.85)"; g.fillRect(L + 2, 2, W - L - 4, 31);
   g.fillStyle = "#222"; g.font = "12px system-ui, sans-serif";
   g.fillText(cur.mode === "F" ? `C is ${fmt(gap, 3)} mm above the plate` : `C on the plate (${mode.name})`, L + 6, 14);
   g.fillStyle = "#666"; g.font = "11px system-ui, sans-serif";

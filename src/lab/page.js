@@ -394,10 +394,11 @@ const TASKS = [
         if (!lost(h[k])) continue;
         const from = h.slice(0, k).find((x) => stable(x) && oneChange(x.p, h[k].p));
         if (!from) continue;
-        const what = oneChange(from.p, h[k].p);
+        const key = oneChange(from.p, h[k].p);
+        const what = (PARAMS.find((p) => p.key === key) || { name: key }).name;
         return h[k].fixed.period > 1
-          ? `done: ${what} ${from.p[what]} -> ${h[k].p[what]} leaves only a period-${h[k].fixed.period} gait`
-          : `done: ${what} ${from.p[what]} -> ${h[k].p[what]}: |λ| ${fmt(from.fixed.leading_modulus, 3)} -> ${fmt(h[k].fixed.leading_modulus, 3)} > 1`;
+          ? `done: ${what} ${from.p[key]} → ${h[k].p[key]} leaves only a period-${h[k].fixed.period} gait`
+          : `done: ${what} ${from.p[key]} → ${h[k].p[key]}: |λ| ${fmt(from.fixed.leading_modulus, 3)} → ${fmt(h[k].fixed.leading_modulus, 3)} > 1`;
       }
       return null;
     },

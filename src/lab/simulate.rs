@@ -126,7 +126,8 @@ pub const STROBE_MAX_PERIOD: usize = 2;
 pub fn cycle_view(req: &RunRequest) -> Value {
     let model = StickModel::new(req.params);
     let opts = &req.opts;
-    let cycles = (req.duration_s * req.params.frequency_hz()).floor() as usize;
+    // whole drive cycles f t (f = omega/2 pi carries rounding: 30 Hz is 29.999999999999996)
+    let cycles = (req.duration_s * req.params.frequency_hz() * (1.0 + 1e-12)).floor() as usize;
     let Some(x0) = poincare::static_start(&model) else {
         return json!({ "orbit": [], "fixed": null, "why": "no static start: the rules stop at t = 0" });
     };
@@ -306,4 +307,102 @@ fn rod_frames(model: &InertiaModel, r: &InertiaRun, dt: f64) -> Value {
         "f_x_n": col(&|x| force(x).map_or(0.0, |e| e.fx)),
         "f_z_n": col(&|x| force(x).map_or(0.0, |e| e.fz)),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lab::api::parse_run;
+
+    /// A request for the jamming scene with `over` merged in.
+    fn request(over: serde_json::Value) -> RunRequest {
+        let mut b = json!({
+            "scene": "jamming", "theta0_rad": 0.3, "mu": 0.4, "gamma": 3, "frequency_hz": 30,
+            "stiffness": 10, "damping": 0.01, "length_m": 0.15, "mass_kg": 1, "duration_s": 2,
+        });
+        for (k, v) in over.as_object().expect("an object") {
+            b[k] = v.clone();
+        }
+        parse_run(b.to_string().as_bytes()).expect("a valid request")
+    }
+
+    #[test]
+    fn the_stroboscope_finds_the_published_multipliers_and_the_orbit_shrinks_at_that_rate() {
+        // chapter 6, section 5: |lambda| = 0.8906 (self-locking, stable) and 1.014
+        // (authors', unstable), from the variational flows and saltation matrices; the
+        // lab's come from Newton and central differences of the map, and the orbit's own
+        // contraction (simulation alone) is a third estimate
+        let c = cycle_view(&request(json!({"duration_s": 4})));
+        let f = &c["fixed"];
+        assert_eq!(f["period"], 1, "{c}");
+        let lead = f["leading_modulus"].as_f64().expect("modulus");
+        assert!((lead - 0.8906).abs() < 1e-3, "{lead}");
+        assert_eq!(f["stable"], true);
+        let seen = c["observed_ratio"].as_f64().expect("a contraction");
+        assert!((seen - lead).abs() < 0.02 * lead, "{seen} vs {lead}");
+        assert_eq!(c["orbit"].as_array().expect("orbit").len(), 121);
+        let a = cycle_view(&request(json!({
+            "scene": "authors", "theta0_rad": 0.4280861692, "gamma": 10
+        })));
+        let lead = a["fixed"]["leading_modulus"].as_f64().expect("modulus");
+        assert!((lead - 1.014).abs() < 2e-3, "{lead}");
+        assert_eq!(a["fixed"]["stable"], false);
+    }
+
+    #[test]
+    fn the_contraction_of_a_rotating_geometric_sequence_is_its_ratio() {
+        // d_k = 0.9^k (1 + 0.3 cos k): single ratios wander by 30 %, the fit does not
+        let d: Vec<Option<f64>> = (0..200)
+            .map(|k| Some(0.9f64.powi(k) * (1.0 + 0.3 * (k as f64).cos())))
+            .collect();
+        let r = observed_ratio(&d).expect("enough points");
+        assert!((r - 0.9).abs() < 2e-3, "{r}");
+        assert_eq!(observed_ratio(&[Some(1e-3); 5]), None);
+    }
+
+    #[test]
+    fn the_rod_tends_to_its_massless_ghost_linearly_in_its_mass() {
+        // chapter 8, section 4: v(eps) = v_0 + c_1 eps + O(eps^2), eps ~ m_r: the gap to
+        // the ghost (chapter 6 with all the mass at P) halves with the rod's mass
+        let gap = |m_r: f64| {
+            let r = rod_view(&request(json!({"rod_mass_kg": m_r})), 1.0 / 1200.0);
+            assert_eq!(r["outcome"], "completed", "{m_r}");
+            let v = r["mean_velocity_mps"].as_f64().expect("v");
+            let g = r["ghost"]["mean_velocity_mps"].as_f64().expect("ghost v");
+            (v - g, g)
+        };
+        let (d1, g) = gap(1e-4);
+        let (d2, _) = gap(2e-4);
+        assert!(d1.abs() < 1e-3 * g.abs(), "{d1} of {g}");
+        assert!((d2 / d1 - 2.0).abs() < 0.1, "{d2} / {d1}");
+        let (d, g) = gap(0.5);
+        assert!(
+            d.abs() > 0.1 * g.abs(),
+            "a heavy rod walks differently: {d} of {g}"
+        );
+        assert_eq!(rod_view(&request(json!({})), 1e-3), Value::Null);
+    }
+
+    #[test]
+    fn the_rods_frames_follow_its_run() {
+        let req = request(json!({"rod_mass_kg": 0.5}));
+        let j = run(&req);
+        let f = &j["rod"]["frames"];
+        let t: Vec<f64> = serde_json::from_value(f["t_s"].clone()).expect("times");
+        let x: Vec<f64> = serde_json::from_value(f["x_c_m"].clone()).expect("x_c");
+        // 40 frames a drive cycle over 2 s at 30 Hz, from 0
+        assert!((2399..=2402).contains(&t.len()), "{}", t.len());
+        assert_eq!(t[0], 0.0);
+        let fz: Vec<f64> = serde_json::from_value(f["f_z_n"].clone()).expect("f_z");
+        let modes = f["mode"].as_str().expect("modes");
+        assert_eq!(modes.len(), t.len());
+        // in contact the plate pushes (F_z >= 0), in flight there is no force
+        for (c, fz) in modes.chars().zip(&fz) {
+            assert!(if c == 'F' { *fz == 0.0 } else { *fz >= -1e-6 }, "{c} {fz}");
+        }
+        let n = t.len() - 1;
+        let v = j["rod"]["mean_velocity_mps"].as_f64().expect("v");
+        let v_frames = (x[n] - x[0]) / (t[n] - t[0]);
+        assert!((v_frames - v).abs() < 2e-3 * v.abs(), "{v_frames} vs {v}");
+    }
 }
