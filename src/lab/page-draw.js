@@ -261,7 +261,7 @@ function drawFoot() {
   const run = lab.run, sc = run.scene, f = shown(run).frames;
   const cur = state(f, lab.frame);
   const hop = lab.hopMm || 0; // mm
-  const k = Math.max(4, Math.min(120, (H - 58) / (hop + 0.3))); // px per mm, both directions
+  const k = Math.max(4, Math.min(120, (H - 72) / (hop + 0.3))); // px per mm, both directions
   const L = 44; // the ruler's column
   const base = H - 26; // the plate's surface
   const X = (xmm) => L + (W - L) / 2 + (xmm - cur.x * 1e3) * k;

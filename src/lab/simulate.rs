@@ -2,7 +2,9 @@
 //! [`crate::chapters::stick_state_machine::main_run`]) with its trajectory sampled into
 //! animation frames. The answer carries the CLI's report (`params` and `results`, the
 //! `--json` format without the claims, which judge the document's own scenes) and the
-//! CLI's `--events` CSV, so that the page's downloads are the CLI's files.
+//! CLI's `--events` CSV, so that the page's downloads are the CLI's files. Added for
+//! issue 31: the stroboscopic view of the scene ([`cycle_view`], chapter 6's Poincare
+//! section and multipliers) and chapter 8's rod with its massless ghost ([`rod_view`]).
 
 use super::api::RunRequest;
 use crate::chapters::stick_state_machine::{self as ssm, main_run, poincare, round};
