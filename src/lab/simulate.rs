@@ -131,7 +131,7 @@ pub fn cycle_view(req: &RunRequest) -> Value {
     // whole drive cycles f t (f = omega/2 pi carries rounding: 30 Hz is 29.999999999999996)
     let cycles = (req.duration_s * req.params.frequency_hz() * (1.0 + 1e-12)).floor() as usize;
     let Some(x0) = poincare::static_start(&model) else {
-        return json!({ "orbit": [], "fixed": null, "why": "no static start: the rules stop at t = 0" });
+        return json!({ "orbit": [], "distance": [], "fixed": null, "ended": "invalid", "observed_ratio": null });
     };
     let mut orbit = vec![x0];
     let mut ended = None;
