@@ -397,7 +397,7 @@ function drawStrobe() {
     const kind = fx.stable ? "stable: the gait returns to itself" : "unstable: the gait drifts away";
     st.textContent = `period ${fx.period}, leading multiplier |λ| = ${fmt(lead, 3)} (${kind})` +
       (c.observed_ratio ? `; the samples shrink by ${fmt(c.observed_ratio, 3)} per cycle` : "") +
-      (lab.run.rod ? "; chapter 6's massless stick" : "");
+      (lab.run.rod ? "; for chapter 6's massless stick with the tip mass m alone (the rod's own map is not computed)" : "");
   } else st.textContent = c.ended ? `(the run ${c.ended} before a gait formed)` : "(no fixed point of period 1 or 2 near the last sample)";
   // side by side, or stacked on a narrow canvas
   const wide = W >= 500;
