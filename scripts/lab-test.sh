@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
 # Browser test of `workbook lab` (book/lab-test.mjs): starts the lab on a free loopback
 # port, drives the page in headless Chromium (slider, animation, an invalid value, a click
-# on the speed map, a comparison) and compares the page's numbers and error line with the
-# CLI's. Reports the slider-to-redraw latency. Screenshots land in target/lab-screenshots/.
+# on the speed map, a comparison; issue 31: the book's mode colours, the force on top of
+# the rod, the foot close-up, log sliders, timeline ticks, the three downloads, the
+# stroboscope, chapter 8's rod and ghost, the guided tasks, the 400 px layout) and
+# compares the page's numbers and error line with the CLI's (chapters 6 and 8). Reports
+# the slider-to-redraw latency. Screenshots at 1280 and 400 px wide land in
+# target/lab-screenshots/ (look at them).
 # Uses the dev build (what `cargo test` builds); LAB_PROFILE=release tests the release
 # binary (the latency a reader sees with `cargo run --release -- lab`).
 # Installs the Debian package chromium when it is missing (apt-get, about 20 s).

@@ -8,7 +8,9 @@
 
 use crate::chapters::stick_state_machine::{self as ssm, main_run};
 use crate::cli::{Cli, Command};
+use crate::flags::Flag;
 use crate::numerics::hybrid::Options;
+use crate::physics::domain::Interval;
 use crate::physics::stick::StickParams;
 use clap::FromArgMatches;
 use serde_json::Value;
@@ -52,6 +54,32 @@ pub const FIELDS: [(&str, &str, bool); 16] = [
 /// that the page can drop the answer to a request it has since superseded.
 pub const SEQ_FIELD: &str = "seq";
 
+/// The lab's field for chapter 8's rod: its mass (kg), optional (absent or 0: chapter
+/// 6's massless rod). Not a flag of `workbook stick-state-machine`: the lab checks it
+/// against its own entry [`ROD_MASS_KG`] and runs the rod with the physics layer
+/// ([`crate::physics::stick_inertia`]).
+pub const ROD_MASS_FIELD: &str = "rod_mass_kg";
+
+/// The rod's mass in the lab: chapter 8's flag `--rod-mass-kg` (the same range and
+/// reason, so that the lab's line for a value out of it is the CLI's), with the lab's
+/// own lower end above 0, [`ROD_MASS_MIN_KG`].
+pub const ROD_MASS_KG: Flag = Flag::new(
+    "--rod-mass-kg",
+    "Mass of the rod, uniform along C-P (0: chapter 6's massless rod)",
+    "kg",
+    Interval::closed(0.0, 10.0),
+)
+.why("0 allowed (a uniform stick, or chapter 6's massless rod) up to 10 x the authors' 1 kg");
+
+/// Why the lab runs no rod lighter than [`ROD_MASS_MIN_KG`] but 0: lighter rods lose
+/// `log10(alpha)` digits in their impacts (`alpha = M l_G^2/I_G ~ 3 M/m_r`), and
+/// chapter 8's CLI runs them as a singular-perturbation composite, which has no
+/// trajectory for the lab to animate.
+const WHY_ROD_MIN: &str = "0, or 1e-4 to 10 (kg) in the lab: lighter rods lose digits in their impacts and chapter 8's CLI (workbook stick-with-inertia) runs them as a composite, with no trajectory to animate";
+
+/// The smallest rod mass above 0 the lab runs (kg); see [`ROD_MASS_KG`].
+pub const ROD_MASS_MIN_KG: f64 = 1e-4;
+
 /// A refused request: the HTTP status and one line saying why.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ApiError {
@@ -89,6 +117,8 @@ pub struct RunRequest {
     pub opts: Options,
     /// The page's sequence number, if any.
     pub seq: Option<u64>,
+    /// Mass of chapter 8's rod (kg): 0 for chapter 6's massless rod ([`ROD_MASS_FIELD`]).
+    pub rod_mass_kg: f64,
     /// The argument vector the request became (for messages and tests).
     pub argv: Vec<String>,
 }
@@ -107,6 +137,9 @@ pub fn to_argv(body: &[u8]) -> Result<(Vec<String>, Option<u64>), ApiError> {
     let mut seq = None;
     let mut argv = vec!["workbook".to_string(), ssm::ID.to_string()];
     for (key, value) in &obj {
+        if key == ROD_MASS_FIELD {
+            continue; // the lab's own field, read by `rod_mass`
+        }
         if key == SEQ_FIELD {
             seq = Some(value.as_u64().ok_or_else(|| {
                 ApiError::bad(format!("field `seq`: {value} is not a whole number >= 0"))
@@ -116,7 +149,7 @@ pub fn to_argv(body: &[u8]) -> Result<(Vec<String>, Option<u64>), ApiError> {
         let Some((_, flag, _)) = FIELDS.iter().find(|(k, _, _)| k == key) else {
             let known: Vec<&str> = FIELDS.iter().map(|f| f.0).collect();
             return Err(ApiError::bad(format!(
-                "unknown field `{}`: the fields are {}, seq",
+                "unknown field `{}`: the fields are {}, seq, rod_mass_kg",
                 clip(key),
                 known.join(", ")
             )));
@@ -209,6 +242,7 @@ pub fn parse_run(body: &[u8]) -> Result<RunRequest, ApiError> {
             ssm::ID
         )));
     }
+    let rod_mass_kg = rod_mass(body, &params)?;
     Ok(RunRequest {
         args: args.clone(),
         params,
@@ -216,7 +250,41 @@ pub fn parse_run(body: &[u8]) -> Result<RunRequest, ApiError> {
         opts,
         seq,
         argv,
+        rod_mass_kg,
     })
+}
+
+/// The rod's mass of a request body (kg; 0 when absent), checked against
+/// [`ROD_MASS_KG`] with the CLI's form of line, and the lab's lower end above 0.
+pub fn rod_mass(body: &[u8], p: &StickParams) -> Result<f64, ApiError> {
+    let v: Value =
+        serde_json::from_slice(body).map_err(|e| ApiError::bad(format!("malformed JSON: {e}")))?;
+    let Some(value) = v.get(ROD_MASS_FIELD) else {
+        return Ok(0.0);
+    };
+    let text = field_text(ROD_MASS_FIELD, value)?;
+    let m_r: f64 = text.parse().map_err(|_| {
+        ApiError::bad(format!(
+            "error: invalid value '{}' for '{} <ROD_MASS_KG>': invalid float literal",
+            clip(&text),
+            ROD_MASS_KG.name
+        ))
+    })?;
+    let m_r = ROD_MASS_KG
+        .check(m_r)
+        .map_err(|e| ApiError::bad(e.to_string()))?;
+    if m_r > 0.0 && m_r < ROD_MASS_MIN_KG {
+        return Err(ApiError::bad(
+            crate::error::WorkbookError::bad_input(
+                ROD_MASS_KG.name,
+                crate::error::num(m_r),
+                WHY_ROD_MIN,
+            )
+            .to_string(),
+        ));
+    }
+    let _ = p; // the tip mass is at least 0.1 kg (chapter 6's range): m + m_r > 0 holds
+    Ok(m_r)
 }
 
 /// The 413 answer to a body of `n` bytes.
@@ -260,13 +328,41 @@ pub fn scenes() -> Value {
         "jamming": one(Scene::Jamming, "jamming"),
         "authors": one(Scene::Authors, "authors"),
         "ranges": ranges(),
+        "mode_colours": mode_colours(),
     })
+}
+
+/// The modes' colours of the book's figures and GIFs (chapter 6's `gait::mode_colour`,
+/// the Okabe-Ito palette of [`crate::plot::PALETTE`]), by mode letter and name: the one
+/// palette of the book and the lab.
+pub fn mode_colours() -> Value {
+    use crate::physics::stick::Mode;
+    let mut o = serde_json::Map::new();
+    for m in Mode::ALL {
+        let c = ssm::gait::mode_colour(m);
+        o.insert(
+            m.letter().to_string(),
+            serde_json::json!({
+                "name": m.name(),
+                "hex": format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2),
+            }),
+        );
+    }
+    Value::Object(o)
 }
 
 /// The sliders' ends, per request field: chapter 6's flag table ([`ssm::FLAGS`], the
 /// CLI's ranges with their reasons).
 pub fn ranges() -> Value {
     let mut o = serde_json::Map::new();
+    let r = ROD_MASS_KG.range;
+    o.insert(
+        ROD_MASS_FIELD.to_string(),
+        serde_json::json!({
+            "min": r.lo, "max": r.hi, "min_open": r.lo_open, "max_open": r.hi_open,
+            "unit": ROD_MASS_KG.unit, "range": ROD_MASS_KG.range_text(), "reason": ROD_MASS_KG.reason,
+        }),
+    );
     for (key, flag, _) in FIELDS {
         if let Some(f) = crate::flags::find(ssm::FLAGS, flag) {
             let r = f.range;
@@ -280,4 +376,59 @@ pub fn ranges() -> Value {
         }
     }
     Value::Object(o)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn body(rod: &str) -> Vec<u8> {
+        format!(
+            r#"{{"scene": "jamming", "theta0_rad": 0.3, "mu": 0.4, "gamma": 3, "frequency_hz": 30,
+            "stiffness": 10, "damping": 0.01, "length_m": 0.15, "mass_kg": 1, "duration_s": 2{rod}}}"#
+        )
+        .into_bytes()
+    }
+
+    /// Chapter 8's CLI line for `--rod-mass-kg value` (in-process).
+    fn chapter8_line(value: &str) -> String {
+        let argv: Vec<String> = ["workbook", "stick-with-inertia", "--rod-mass-kg", value]
+            .map(String::from)
+            .to_vec();
+        let (mut out, mut err) = (Vec::new(), Vec::new());
+        let code = crate::cli::run_cli(&argv, &mut out, &mut err);
+        assert_eq!(code, 2, "{value}");
+        String::from_utf8(err)
+            .expect("utf-8")
+            .trim_end()
+            .to_string()
+    }
+
+    #[test]
+    fn the_rods_mass_is_checked_as_chapter_8_checks_it() {
+        assert_eq!(parse_run(&body("")).expect("no rod").rod_mass_kg, 0.0);
+        let r = parse_run(&body(r#", "rod_mass_kg": 0.5"#)).expect("a rod");
+        assert_eq!(r.rod_mass_kg, 0.5);
+        for v in ["11", "-1"] {
+            let e = parse_run(&body(&format!(r#", "rod_mass_kg": {v}"#))).expect_err(v);
+            assert_eq!(e.status, 400);
+            assert_eq!(e.reason, chapter8_line(v), "the lab's line is chapter 8's");
+        }
+        // the lab's own end: no composite to animate below 1e-4 kg
+        let e = parse_run(&body(r#", "rod_mass_kg": 1e-5"#)).expect_err("too light");
+        assert!(
+            e.reason
+                .starts_with("error: invalid value 1e-5 for --rod-mass-kg"),
+            "{}",
+            e.reason
+        );
+        assert!(e.reason.contains("composite"), "{}", e.reason);
+        let e = parse_run(&body(r#", "rod_mass_kg": "abc""#)).expect_err("not a number");
+        assert!(
+            e.reason.contains("--rod-mass-kg") && !e.reason.contains('\n'),
+            "{}",
+            e.reason
+        );
+        assert_eq!(ranges()["rod_mass_kg"]["max"], 10.0);
+    }
 }

@@ -17,7 +17,7 @@ mod cycle_report;
 mod events;
 mod evidence;
 mod figures;
-mod gait;
+pub mod gait;
 mod gait_map;
 mod impulse;
 pub mod limit_cycle;
