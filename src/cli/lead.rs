@@ -39,7 +39,7 @@ fn pct_apart(a: f64, b: f64) -> String {
 /// A fraction as a percentage (`0.2675` as `27 %`, `0.003855` as `0.39 %`).
 fn fmt_pct(x: f64) -> String {
     let p = 100.0 * x;
-    if !(p > 0.0) || p >= 10.0 {
+    if p.is_nan() || p <= 0.0 || p >= 10.0 {
         return format!("{p:.0} %");
     }
     let decimals = (1.0 - p.log10().floor()).max(0.0) as usize; // two significant digits
