@@ -181,6 +181,7 @@ pub fn details(r: &ChapterReport) -> String {
         let _ = writeln!(s, "Figures: {files} in {dir}");
     }
     s.push_str("Every claim with its evidence: add --claims; everything as JSON: add --json.\n");
+    s.push_str("The walking stick live in your browser: `workbook lab`.\n");
     s
 }
 
