@@ -5,6 +5,9 @@
 // (390 px):
 // - a table, image or SVG wider than the content column, or reaching past its right edge
 //   (a table must fit without scrolling: its scrollWidth fits the column too);
+// - a code block broken by a quoted line that lost its "> " (a paragraph showing a code
+//   fence as text, an empty code box), and (desktop width) a display equation wider than
+//   the content column;
 // - smart punctuation inside code (curly quotes, en or em dashes in `code`/`pre`), and a
 //   flag whose `--` was turned into a dash in the text (`–g-mps2`);
 // - a repository path (src/, docs/, tests/, benches/, examples/) in the text that is not a
@@ -139,10 +142,43 @@ const inspect = `(() => {
   const images = [...main.querySelectorAll("img")].map((i) => ({
     src: i.getAttribute("src"), url: i.src, width: i.getBoundingClientRect().width,
     natural: i.naturalWidth }));
+  // A code block broken by a quoted line that lost its "> ": the fence closes early, the
+  // rest shows as a paragraph (with the fence's backticks as text) and an empty box.
+  const brokenCode = [];
+  for (const pre of main.querySelectorAll("pre")) {
+    if (pre.textContent.trim() !== "") continue;
+    let before = pre;
+    while (before && !before.previousElementSibling && before !== main) before = before.parentElement;
+    const prev = before && before.previousElementSibling;
+    brokenCode.push("an empty code box after: " + ((prev && prev.textContent) || "").trim().slice(0, 60));
+  }
+  for (const p of main.querySelectorAll("p, li, blockquote")) {
+    if (p.closest("pre, code")) continue;
+    const own = [...p.childNodes].filter((c) => c.nodeType === 3).map((c) => c.textContent).join("");
+    if (/\u0060\u0060\u0060/.test(own)) brokenCode.push("a code fence shown as text: " + own.trim().slice(0, 60));
+  }
+  // Display equations wider than the column: the extent of KaTeX's boxes (a display's
+  // own box is as wide as the column whatever its content, so measure the pieces).
+  const wideMath = [];
+  for (const d of main.querySelectorAll(".katex-display")) {
+    const box = d.getBoundingClientRect();
+    let lo = Infinity, hi = -Infinity;
+    for (const b of d.querySelectorAll(".katex-html .base")) {
+      const r = b.getBoundingClientRect();
+      if (r.width === 0) continue;
+      lo = Math.min(lo, r.left); hi = Math.max(hi, r.right);
+    }
+    const width = hi - lo;
+    if (width > column.width + 1 || hi > column.right + 1 || width > box.width + 1) {
+      const tex = (d.querySelector("annotation") || {}).textContent || d.textContent;
+      wideMath.push(Math.round(width) + " px in a " + Math.round(Math.min(box.width, column.width)) +
+        " px column: " + tex.replace(/\s+/g, " ").slice(0, 70));
+    }
+  }
   const katexCount = document.querySelectorAll(".katex").length;
   const katexFont = getComputedStyle(document.querySelector(".katex") || document.body).fontFamily;
   return JSON.stringify({ brokenImages, katexErrors, rawMath, links, ids, katexCount, katexFont,
-    tooWide, pageOverflow, smartInCode, dashedFlags, unlinkedPaths, images,
+    tooWide, pageOverflow, smartInCode, dashedFlags, unlinkedPaths, images, brokenCode, wideMath,
     height: document.documentElement.scrollHeight });
 })()`;
 
@@ -186,6 +222,11 @@ async function main() {
     const measured = new Map(); // every KNOWN_SMALL_TEXT figure's size, small or not
     const checkLayout = (page, width, info) => {
       for (const w of info.tooWide) failures.push(`${page} (${width}): wider than the column: ${w}`);
+      for (const c of info.brokenCode) failures.push(`${page} (${width}): broken code block: ${c}`);
+      // Equations must fit the desktop column; on a phone a long display scrolls.
+      if (width === "desktop") {
+        for (const m of info.wideMath) failures.push(`${page}: equation wider than the column: ${m}`);
+      }
       if (info.pageOverflow) failures.push(`${page} (${width}): ${info.pageOverflow}`);
       if (!page.startsWith("code/")) {
         // (A repository file's page shows the file as it is: its own dashes are no artefact.)

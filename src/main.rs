@@ -39,6 +39,9 @@ fn main() {
         inner: io::stdout(),
         failed: None,
     };
+    // Progress bars on stderr when it is a terminal: the top-level run only (the library
+    // and the tests that run the CLI in-process stay quiet).
+    locomotion_workbook::sweep::show_progress(true);
     let code = locomotion_workbook::cli::run_cli(
         std::env::args_os(),
         &mut out,

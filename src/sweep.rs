@@ -1,11 +1,34 @@
 //! Parallel parameter sweeps: rayon for the work, indicatif for a progress bar on a
-//! terminal (hidden when stderr is not a terminal, so tests and `--json` stay clean).
+//! terminal. Bars draw only when the top-level command line turned them on
+//! ([`show_progress`], from `main`) and stderr is a terminal: the library, the lab and
+//! the tests (which run the CLI in-process, often on a terminal) stay quiet.
 //!
 //! Results come back in input order, so every figure and number is the same whatever
 //! the thread count. Sum the returned vector in order; never use a parallel float sum.
 
 use indicatif::{ParallelProgressIterator, ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
+use std::io::IsTerminal;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Whether progress bars may draw (off until the top-level CLI turns them on).
+static PROGRESS: AtomicBool = AtomicBool::new(false);
+
+/// Lets progress bars and spinners draw on stderr when it is a terminal. Called once by
+/// the `workbook` binary's `main`; never by the library or a test harness.
+pub fn show_progress(on: bool) {
+    PROGRESS.store(on, Ordering::Relaxed);
+}
+
+/// Where a bar draws: stderr when [`show_progress`] is on and stderr is a terminal,
+/// nowhere otherwise.
+fn draw_target() -> ProgressDrawTarget {
+    if PROGRESS.load(Ordering::Relaxed) && std::io::stderr().is_terminal() {
+        ProgressDrawTarget::stderr()
+    } else {
+        ProgressDrawTarget::hidden()
+    }
+}
 
 /// Maps `f` over `items` in parallel with a progress bar labelled `label`; the output
 /// is in input order.
@@ -15,7 +38,7 @@ where
     R: Send,
     F: Fn(&T) -> R + Sync + Send,
 {
-    let bar = ProgressBar::with_draw_target(Some(items.len() as u64), ProgressDrawTarget::stderr());
+    let bar = ProgressBar::with_draw_target(Some(items.len() as u64), draw_target());
     if let Ok(style) = ProgressStyle::with_template("{msg:>28} [{bar:30}] {pos}/{len} ({eta})") {
         bar.set_style(style.progress_chars("=> "));
     }
@@ -63,13 +86,17 @@ pub fn check_budget(
 }
 
 /// A spinner with the elapsed time and the estimate, for a run estimated to take more
-/// than [`PROGRESS_AFTER_S`]; hidden when stderr is not a terminal. Finish it with
+/// than [`PROGRESS_AFTER_S`]; hidden unless bars are on ([`show_progress`]). Finish it with
 /// `finish_and_clear`.
 pub fn spinner(label: &str, estimate_s: f64) -> ProgressBar {
     if estimate_s <= PROGRESS_AFTER_S {
         return ProgressBar::hidden();
     }
-    let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
+    let target = draw_target();
+    if target.is_hidden() {
+        return ProgressBar::hidden(); // no ticker thread when nothing is drawn
+    }
+    let bar = ProgressBar::with_draw_target(None, target);
     if let Ok(style) = ProgressStyle::with_template("{spinner} {msg} {elapsed}") {
         bar.set_style(style);
     }
@@ -106,6 +133,14 @@ mod tests {
         let xs: Vec<u64> = (0..1000).collect();
         let ys = par_map(&xs, "squares", |x| x * x);
         assert!(ys.iter().enumerate().all(|(i, &y)| y == (i * i) as u64));
+    }
+
+    #[test]
+    fn bars_stay_quiet_unless_the_top_level_cli_turns_them_on() {
+        // The library (and so every in-process test, on a terminal or not) never draws:
+        // only `main` calls show_progress(true). Nothing here turns it on.
+        assert!(draw_target().is_hidden());
+        assert!(spinner("a long run", 1e3).is_hidden());
     }
 
     #[test]

@@ -4,6 +4,7 @@
 
 use common::{assert_bad_input, run};
 use locomotion_workbook::chapters::CHAPTERS;
+use locomotion_workbook::cli::WIDTH;
 use serde_json::Value;
 
 use crate::common;
@@ -111,12 +112,134 @@ fn each_chapter_prints_one_json_object_in_quick_mode() {
     }
 }
 
+/// The widest line of `text`, in characters, and the line.
+fn widest(text: &str) -> (usize, String) {
+    text.lines()
+        .map(|l| (l.chars().count(), l.to_string()))
+        .max()
+        .unwrap_or_default()
+}
+
 #[test]
-fn human_output_has_a_table_and_a_summary() {
+fn a_chapter_run_leads_with_the_physics_and_the_claim_table_is_one_flag_away() {
     let (code, out, _) = run(&["effective-mass", "--quick", "--no-figures"]);
     assert_eq!(code, 0);
-    assert!(out.starts_with("== effective-mass"));
-    assert!(out.lines().last().unwrap().starts_with("summary: "));
+    let first: Vec<&str> = out.lines().take(12).collect();
+    assert!(first[0].starts_with("2. Effective mass"), "{out}");
+    // the question, then the answer with its numbers (J_l/J_v of both sticks at 45 deg)
+    let answer = first
+        .iter()
+        .position(|l| l.contains("Answer:"))
+        .expect("an answer");
+    assert!(first.iter().position(|l| l.contains("Question:")) < Some(answer));
+    let said = first[answer..].join(" ");
+    assert!(
+        said.contains("0.6 for a uniform rod") && said.contains("1 for a point mass"),
+        "{said}"
+    );
+    assert!(
+        first
+            .iter()
+            .any(|l| l.contains("Verdicts: 16 claims: 13 confirmed")),
+        "{out}"
+    );
+    assert!(
+        first
+            .iter()
+            .any(|l| l.contains("chapters/02-effective-mass.md")),
+        "{out}"
+    );
+    assert!(
+        !out.contains("expected") && !out.contains("summary: "),
+        "no claim table:\n{out}"
+    );
+    assert!(widest(&out).0 <= WIDTH, "{:?}", widest(&out));
+    // --claims: the same lead, then the full table ending in its summary line
+    let (code, full, _) = run(&["effective-mass", "--quick", "--no-figures", "--claims"]);
+    assert_eq!(code, 0);
+    assert!(
+        full.starts_with(&out[..out.find("\n\n").unwrap()]),
+        "{full}"
+    );
+    assert!(
+        full.contains("verdict") && full.contains("tolerance"),
+        "{full}"
+    );
+    assert!(full.lines().last().unwrap().starts_with("summary: "));
+    // and --claims means nothing beside --json (the JSON contract is unchanged)
+    assert_eq!(run(&["effective-mass", "--json", "--claims"]).0, 2);
+}
+
+/// `all` on the terminal: every chapter's question, answer, errata and verdicts in lines
+/// of at most 100 columns; the first screen (40 lines) holds chapter 1 and 2 whole; the
+/// walking stick's answer gives its speed, its step and its gait.
+#[test]
+fn all_teaches_first_in_lines_that_fit_a_terminal() {
+    let (code, out, err) = run(&["all", "--quick", "--no-figures"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(widest(&out).0 <= WIDTH, "{:?}", widest(&out));
+    assert!(out.len() < 12_000, "{} bytes", out.len());
+    let screen: Vec<&str> = out.lines().take(40).collect();
+    for n in ["1. What counts", "2. Effective mass"] {
+        assert!(
+            screen.iter().any(|l| l.starts_with(n)),
+            "{n}:\n{}",
+            screen.join("\n")
+        );
+    }
+    for label in ["Question:", "Answer:", "Errata:", "Verdicts:", "More:"] {
+        let per_chapter = format!("\n   {label}");
+        assert_eq!(
+            out.matches(&per_chapter).count(),
+            CHAPTERS.len(),
+            "{label}:\n{out}"
+        );
+    }
+    // a block's words, line breaks and indents as single spaces
+    let flat = |b: &str| b.split_whitespace().collect::<Vec<_>>().join(" ");
+    let stick = out
+        .split("\n\n")
+        .find(|b| b.starts_with("6. "))
+        .expect("the stick chapter");
+    for word in [
+        "the stick walks at 0.2",
+        "mm per drive cycle",
+        "limit cycle, stable",
+        "statements are wrong",
+    ] {
+        assert!(flat(stick).contains(word), "{word}:\n{stick}");
+    }
+    let inertia = out
+        .split("\n\n")
+        .find(|b| b.starts_with("8. "))
+        .expect("chapter 8");
+    assert!(
+        flat(inertia).contains("the massless model at 0.2"),
+        "{inertia}"
+    );
+    assert!(out.contains("All chapters: "), "{out}");
+    assert!(
+        out.contains("workbook lab") && out.contains("--claims"),
+        "{out}"
+    );
+    assert!(
+        !out.contains("tolerance"),
+        "no claim table without --claims"
+    );
+}
+
+/// Each chapter alone also fits 100 columns (its parameters wrapped, its results clipped).
+#[test]
+fn every_chapter_run_fits_a_terminal() {
+    for c in CHAPTERS.iter() {
+        let (code, out, err) = run(&[c.id, "--quick", "--no-figures"]);
+        assert_eq!(code, 0, "{}: {err}", c.id);
+        assert!(
+            out.starts_with(&format!("{}. {}", c.number, c.title)),
+            "{out}"
+        );
+        assert!(widest(&out).0 <= WIDTH, "{}: {:?}", c.id, widest(&out));
+    }
 }
 
 #[test]

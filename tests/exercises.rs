@@ -319,6 +319,86 @@ fn chapter_6_stick_state_machine() {
     check_number("ex6.4-authors-sliding", sliding);
 }
 
+// ------------------------------------------- chapter 6, section 5: the limit cycle
+
+/// The rimless wheel of exercise LC.1: spokes `2 alpha` apart, slope `psi`, spoke length
+/// `l` (m). Its stride map `u -> u'` (`u` the squared rate at heel strike, rad^2/s^2) by
+/// integrating the stance phase `phi'' = (g/l) sin(phi)` with RK4 from `phi = psi -
+/// alpha` to `psi + alpha` (the last step cut to land on it), then the collision
+/// `omega+ = cos(2 alpha) omega-`: a second method beside the chapter's energy map.
+fn rimless_stride(u: f64, alpha: f64, psi: f64, l: f64) -> f64 {
+    let g = 9.81;
+    let f = |y: [f64; 2]| [y[1], g / l * y[0].sin()];
+    let rk4 = |y: [f64; 2], h: f64| {
+        let add = |a: [f64; 2], b: [f64; 2], c: f64| [a[0] + c * b[0], a[1] + c * b[1]];
+        let k1 = f(y);
+        let k2 = f(add(y, k1, h / 2.0));
+        let k3 = f(add(y, k2, h / 2.0));
+        let k4 = f(add(y, k3, h));
+        [
+            y[0] + h / 6.0 * (k1[0] + 2.0 * k2[0] + 2.0 * k3[0] + k4[0]),
+            y[1] + h / 6.0 * (k1[1] + 2.0 * k2[1] + 2.0 * k3[1] + k4[1]),
+        ]
+    };
+    let end = psi + alpha;
+    let mut y = [psi - alpha, (2.0 * alpha).cos() * u.sqrt()];
+    let h = 1e-4;
+    loop {
+        let next = rk4(y, h);
+        if next[0] < end {
+            y = next;
+            continue;
+        }
+        // the step that crosses: bisect its length until it lands on phi = end
+        let (mut lo, mut hi) = (0.0, h);
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if rk4(y, mid)[0] < end {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        return rk4(y, hi)[1].powi(2);
+    }
+}
+
+#[test]
+fn chapter_6_limit_cycle() {
+    use locomotion_workbook::chapters::stick_state_machine::limit_cycle::{
+        options, H_FINE, NEWTON_TOL,
+    };
+    use locomotion_workbook::chapters::stick_state_machine::poincare::{
+        jacobian, moduli, multipliers, newton, Difference, Point,
+    };
+    use locomotion_workbook::physics::stick::{jamming_scene, Mode, StickModel};
+
+    // LC.1: iterate the integrated stride map to its fixed point, difference it there.
+    let (alpha, psi, l) = (18f64.to_radians(), 0.1, 1.0);
+    let stride = |u: f64| rimless_stride(u, alpha, psi, l);
+    let u_star = (0..200).fold(1.0, |u, _| stride(u));
+    let d = 1e-4;
+    let lambda = (stride(u_star + d) - stride(u_star - d)) / (2.0 * d);
+    check_number("exLC.1-multiplier", lambda);
+    check_number("exLC.1-u-rad2ps2", u_star);
+    check_number("exLC.1-steps", (100f64.ln() / (1.0 / lambda).ln()).ceil());
+
+    // LC.2: from the table's fixed point, Newton, then central differences at 1e-5.
+    let model = StickModel::new(jamming_scene(9.81));
+    let opts = options();
+    let table = Point {
+        mode: Mode::SlideRight,
+        s: vec![0.362760, -0.384174, 0.313461],
+    };
+    let (x, _) = newton(&model, &opts, &table, 1, (H_FINE, NEWTON_TOL, 20)).expect("a fixed point");
+    let j = jacobian(&model, &opts, &x, 1, H_FINE, Difference::Central).expect("a Jacobian");
+    let m = multipliers(&j);
+    let modulus = moduli(&m)[0];
+    check_number("exLC.2-modulus", modulus);
+    check_number("exLC.2-arg-rad", m[0].1.atan2(m[0].0).abs());
+    check_number("exLC.2-periods", 10f64.ln() / (1.0 / modulus).ln());
+}
+
 // ---------------------------------------------------------------- chapter 7
 
 /// Largest fixed step (ms) for which one step of `method` on y' = -y/tau (tau = 1 ms)
@@ -373,6 +453,68 @@ fn chapter_7_speed_vs_accuracy() {
     check_number("ex7.4-ratio", ratio);
 }
 
+// ---------------------------------------------------------------- chapter 8
+
+#[test]
+fn chapter_8_stick_with_inertia() {
+    use locomotion_workbook::chapters::stick_state_machine::limit_cycle::options;
+    use locomotion_workbook::physics::stick::jamming_scene;
+    use locomotion_workbook::physics::stick::run::{initial_state, simulate_stick, Recording};
+    use locomotion_workbook::physics::stick::StickModel;
+    use locomotion_workbook::physics::stick_inertia::painleve::mu_painleve;
+    use locomotion_workbook::physics::stick_inertia::run::run_from_rest;
+    use locomotion_workbook::physics::stick_inertia::{InertiaModel, InertiaParams, MassGeometry};
+
+    let equal = MassGeometry::new(0.15, 1.0, 1.0).alpha();
+    check_number("ex8.1-alpha", equal);
+    // 8.2: the least mu_P by a golden-section search over theta (a second route to the
+    // text's closed form 2 sqrt(1 + alpha)/alpha at tan theta = (1 + alpha)^(-1/2)).
+    let (mut a, mut b) = (0.05, 1.5);
+    let r = (5f64.sqrt() - 1.0) / 2.0;
+    for _ in 0..200 {
+        let (c, d) = (b - r * (b - a), a + r * (b - a));
+        if mu_painleve(c, equal) < mu_painleve(d, equal) {
+            b = d;
+        } else {
+            a = c;
+        }
+    }
+    let theta_min = 0.5 * (a + b);
+    check_number("ex8.2-theta-rad", theta_min);
+    check_number("ex8.2-mu", mu_painleve(theta_min, equal));
+    // 8.3: the sticking impulse P = W^-1 (0, v) from the model's mobility, inverted here.
+    let ratio_at_45 = |rod_kg: f64, tip_kg: f64| {
+        let mut base = jamming_scene(9.81);
+        base.mass_kg = tip_kg;
+        let md = InertiaModel::new(InertiaParams {
+            base,
+            rod_mass_kg: rod_kg,
+            restitution: 0.0,
+        });
+        let w = md.mobility(std::f64::consts::FRAC_PI_4);
+        let det = w[0][0] * w[1][1] - w[0][1] * w[1][0];
+        let (p_x, p_z) = (-w[0][1] / det, w[0][0] / det); // W^-1 (0, 1)
+        p_x / p_z
+    };
+    check_number("ex8.3-uniform", ratio_at_45(1.0, 0.0));
+    check_number("ex8.3-equal", ratio_at_45(1.0, 1.0));
+    // 8.4: the uniform stick and chapter 6's massless one, 10 s from rest each.
+    let mut base = jamming_scene(9.81);
+    base.mass_kg = 0.0;
+    let uniform = InertiaModel::new(InertiaParams {
+        base,
+        rod_mass_kg: 1.0,
+        restitution: 0.0,
+    });
+    let v = run_from_rest(&uniform, 10.0, &options(), 0.0).mean_velocity_mps;
+    let p6 = jamming_scene(9.81);
+    let m6 = StickModel::new(p6);
+    let y6 = initial_state(&m6, 0.0, p6.static_angle().expect("a static angle"));
+    let r6 = simulate_stick(&m6, 0.0, y6, 10.0, &options(), Recording::default());
+    check_number("ex8.4-speed-mps", v);
+    check_number("ex8.4-ratio", v / r6.mean_velocity_mps);
+}
+
 // ---------------------------------------------------------------- the book as a whole
 
 /// The ids checked by the tests above (kept in one list so that a new answer in the
@@ -423,6 +565,19 @@ const CHECKED: &[&str] = &[
     "ex7.3-flight-map",
     "ex7.3-mu-eff-law",
     "ex7.4-ratio",
+    "exLC.1-multiplier",
+    "exLC.1-u-rad2ps2",
+    "exLC.1-steps",
+    "exLC.2-modulus",
+    "exLC.2-arg-rad",
+    "exLC.2-periods",
+    "ex8.1-alpha",
+    "ex8.2-theta-rad",
+    "ex8.2-mu",
+    "ex8.3-uniform",
+    "ex8.3-equal",
+    "ex8.4-speed-mps",
+    "ex8.4-ratio",
 ];
 
 #[test]
@@ -442,8 +597,8 @@ fn every_answer_is_checked_and_every_check_has_an_answer() {
     }
 }
 
-/// The chapters written as lessons (all seven once the course is complete).
-const LESSONS: &[u32] = &[1, 2, 3, 4, 5, 6, 7];
+/// The chapters written as lessons: all eight.
+const LESSONS: &[u32] = &[1, 2, 3, 4, 5, 6, 7, 8];
 
 /// Every chapter is a lesson: a question, three or four goals, the source, 3 to 5
 /// exercises each with a collapsible solution.
@@ -473,13 +628,30 @@ fn every_chapter_is_a_lesson() {
             .filter(|l| l.len() > 4 && l[2..].starts_with(|c: char| c.is_ascii_digit()))
             .count();
         assert!((3..=4).contains(&goals), "{name}: {goals} learning goals");
-        let exercises = text.matches("\n**Exercise ").count();
+        // The chapter's problem set: its `## Exercises` section (a section may add a
+        // subsection of its own exercises, such as chapter 6's on the limit cycle).
+        let set = text
+            .split("\n## Exercises")
+            .nth(1)
+            .and_then(|rest| rest.split("\n## ").next())
+            .unwrap_or_else(|| panic!("{name}: no ## Exercises section"));
+        let exercises = set.matches("\n**Exercise ").count();
         assert!(
             (3..=5).contains(&exercises),
             "{name}: {exercises} exercises"
         );
-        let solutions = text.matches("<summary>Solution</summary>").count();
+        let solutions = set.matches("<summary>Solution</summary>").count();
         assert_eq!(solutions, exercises, "{name}: a solution per exercise");
+        assert!(
+            set.contains(&format!("**Exercise {n}.5** (build)")),
+            "{name}: exercise {n}.5 builds something"
+        );
+        // every exercise of the whole chapter has its folded solution
+        assert_eq!(
+            text.matches("\n**Exercise ").count(),
+            text.matches("<summary>Solution</summary>").count(),
+            "{name}: a solution per exercise"
+        );
         let figures = text.matches("![").count();
         let captions = text.matches("*What to notice.*").count();
         assert_eq!(

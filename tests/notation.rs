@@ -154,3 +154,73 @@ fn generated_course_tables_write_the_notation_pages_symbols() {
     assert!(blocks >= 25, "{blocks} generated blocks");
     assert!(bad.is_empty(), "ASCII symbols:\n{}", bad.join("\n"));
 }
+
+/// The front and back pages cover chapter 8 and chapter 6's limit cycle (issue 31): the
+/// notation page defines the symbols those chapters use, the glossary their words, the
+/// bibliography their sources, and the closing chapter's argument reaches them.
+#[test]
+fn front_and_back_pages_cover_the_limit_cycle_and_the_stick_with_inertia() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("chapters");
+    let read = |f: &str| std::fs::read_to_string(root.join(f)).expect(f);
+    let notation = read("00-notation.md");
+    for symbol in [
+        "$m_r$",
+        "$M = m + m_r$",
+        "$l_G",
+        "$I_G$, $I_C$",
+        "$\\alpha = Ml_G^2/I_G$",
+        "$W = ",
+        "$D_\\sigma",
+        "$\\mu_P(\\theta)",
+        "$\\varepsilon = I_Pk/\\gamma^2$",
+        "$M = DP^n(s^*)$",
+        "$\\lambda_i$",
+    ] {
+        assert!(notation.contains(symbol), "notation page lacks {symbol}");
+    }
+    let glossary = read("glossary.md");
+    for term in [
+        "**Poincaré section**",
+        "**Floquet multiplier**",
+        "**monodromy matrix**",
+        "**saltation matrix**",
+        "**Painlevé inconsistent**",
+        "**Painlevé indeterminate**",
+        "**impact without collision**",
+        "**Delassus matrix**",
+        "**Darboux-Keller**",
+        "| $\\alpha$ |",
+    ] {
+        assert!(glossary.contains(term), "glossary lacks {term}");
+    }
+    let bibliography = read("bibliography.md");
+    for source in [
+        "Stronge", "Glocker", "Génot", "Darboux", "Keller", "Illinois", "139-160",
+    ] {
+        assert!(bibliography.contains(source), "bibliography lacks {source}");
+    }
+    assert!(
+        !bibliography.contains("open question"),
+        "stale pointer to open questions"
+    );
+    let closing = read("closing.md");
+    assert!(
+        closing.contains("nine steps") && closing.contains("\n9. **"),
+        "closing argument"
+    );
+    for settled in ["08-stick-with-inertia.md", "#5-the-gait-as-a-limit-cycle"] {
+        assert!(
+            closing.contains(settled),
+            "closing chapter does not reach {settled}"
+        );
+    }
+    assert!(
+        !closing.contains("Real sticks have mass along their length")
+            && !closing.contains("**The gait as a limit cycle.**"),
+        "the closing chapter still lists settled questions as open"
+    );
+    let preface = read("preface.md");
+    for link in ["08-stick-with-inertia.md", "#5-the-gait-as-a-limit-cycle"] {
+        assert!(preface.contains(link), "preface does not reach {link}");
+    }
+}

@@ -81,7 +81,7 @@ fn all_quick_finishes_on_a_terminal_and_its_progress_bars_advance() {
         bars.iter().any(|&(pos, len)| pos > 0 && pos < len),
         "no progress bar advanced on the terminal: {bars:?}"
     );
-    assert!(screen.contains("by check:"), "no summary:\n{screen}");
+    assert!(screen.contains("All chapters:"), "no totals:\n{screen}");
 }
 
 #[test]
@@ -90,7 +90,7 @@ fn each_chapter_and_render_check_finish_on_a_terminal() {
         let (code, screen) =
             on_terminal(&[c.id, "--quick", "--no-figures"], Duration::from_secs(300));
         assert_eq!(code, Some(0), "{}: hung or failed:\n{screen}", c.id);
-        assert!(screen.contains("summary:"), "{}:\n{screen}", c.id);
+        assert!(screen.contains("Verdicts:"), "{}:\n{screen}", c.id);
     }
     let (code, screen) = on_terminal(&["render", "--check"], Duration::from_secs(900));
     assert_eq!(code, Some(0), "render --check on a terminal:\n{screen}");

@@ -11,15 +11,21 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 mod argv;
+mod lead;
+mod screen;
 pub use argv::clap_error_line;
 use argv::{join_negative_values, non_utf8_value};
+pub use screen::WIDTH;
 
 /// Runnable, verified course material on vibration-driven locomotion: a leaning stick
 /// that walks on a vertically vibrating plate (dynamic jamming).
 ///
 /// Each chapter re-derives one analysis of the source document, checks every claim
-/// against an independent computation, prints a verdict table and writes its figures.
-/// Verdicts: confirmed (the document holds), erratum (the document is wrong; the
+/// against an independent computation and writes its figures. On the terminal it leads
+/// with the physics: the chapter's question, its answer with the numbers, where the
+/// document is wrong and a one-line count of the verdicts (lines of at most 100
+/// columns); `--claims` adds every claim with its evidence, `--json` gives all of it as
+/// JSON. Verdicts: confirmed (the document holds), erratum (the document is wrong; the
 /// correction is stated), approximation (true in a stated limit), failed (a regression
 /// of the workbook itself).
 ///
@@ -52,6 +58,13 @@ pub struct Cli {
     /// Print exactly one JSON object per chapter on stdout (`all`: one JSON array), nothing else.
     #[arg(long, global = true)]
     pub json: bool,
+
+    /// Also print every claim: a table of verdict, kind of evidence, expected, computed
+    /// and tolerance with the statement under each row, then the parameters, all results
+    /// and the figures (`all`: and the table of verdicts by chapter). Its lines may be
+    /// wider than 100 columns.
+    #[arg(long, global = true, conflicts_with = "json")]
+    pub claims: bool,
 
     /// Root folder for figures; each chapter writes SVG and PNG into `DIR/<chapter-id>/`.
     #[arg(long, global = true, value_name = "DIR", default_value = "figures")]
@@ -234,9 +247,10 @@ where
 /// The global flags (clap ids) the user typed.
 fn given_globals(m: &clap::ArgMatches) -> Vec<&'static str> {
     use clap::parser::ValueSource;
-    const IDS: [&str; 6] = [
+    const IDS: [&str; 7] = [
         "quick",
         "json",
+        "claims",
         "figures",
         "no_figures",
         "g_mps2",
@@ -259,7 +273,7 @@ pub const EXPLORE_FIGURES: &str = "out";
 
 /// Flags that change what is printed or saved but not what is computed: a run with only
 /// these still writes the committed figures.
-const OUTPUT_ONLY: [&str; 4] = ["json", "events", "figures", "no_figures"];
+const OUTPUT_ONLY: [&str; 5] = ["json", "claims", "events", "figures", "no_figures"];
 
 /// Whether the command line asks for anything but the default full run: `--quick`, a
 /// physical flag, a scene or method, `--g-mps2` (every flag a user typed except
@@ -285,7 +299,7 @@ fn computes(c: &Command) -> bool {
 /// --allow-long-runs only the chapter with a work budget (stick-state-machine; the
 /// others do a fixed amount of work). --g-mps2 is checked by the chapters.
 fn refuse_unused(cli: &Cli, given: &[&str]) -> error::Result<()> {
-    const RUN_FLAGS: &[&str] = &["quick", "json", "figures", "no_figures", "g_mps2"];
+    const RUN_FLAGS: &[&str] = &["quick", "json", "claims", "figures", "no_figures", "g_mps2"];
     let (what, allowed): (&str, &[&str]) = match &cli.command {
         Command::List => ("list", &["json"]),
         Command::Render { .. } => ("render", &[]),
@@ -367,18 +381,23 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
     if let (true, Some(root)) = (computes(&cli.command), &ctx.figures_root) {
         check_figures(root)?;
     }
-    let report = match &cli.command {
+    let (info, report) = match &cli.command {
         Command::List => return list(cli.json, out),
         Command::All => return run_all(cli, &ctx, out),
         Command::Render { check, dir } => return render::render(dir, *check, out),
         Command::Lab(a) => return crate::lab::run(a, out),
-        Command::Chapter(c) => c.chapter.chapter.run(&c.matches, &ctx)?,
+        Command::Chapter(c) => (c.chapter, c.chapter.chapter.run(&c.matches, &ctx)?),
     };
     let report = checked(&report)?;
     if cli.json {
         writeln!(out, "{}", report.to_json())?;
     } else {
-        write!(out, "{}", report.human())?;
+        write!(out, "{}", screen::lead(report, info))?;
+        if cli.claims {
+            write!(out, "\n{}", report.human())?;
+        } else {
+            write!(out, "{}", screen::details(report))?;
+        }
     }
     Ok(i32::from(report.has_failures()))
 }
@@ -421,6 +440,9 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
         check_all_g(g)?;
     }
     let mut reports: Vec<ChapterReport> = Vec::new();
+    if !cli.json {
+        write!(out, "{}", screen::all_header(CHAPTERS.len()))?;
+    }
     for c in CHAPTERS.iter() {
         let mut c_ctx = ctx.clone();
         if !c.uses_g() {
@@ -429,7 +451,11 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
         let r = c.run_default(&c_ctx)?;
         checked(&r)?;
         if !cli.json {
-            writeln!(out, "{}", r.human())?;
+            writeln!(out, "{}", screen::lead(&r, c))?;
+            if cli.claims {
+                writeln!(out, "{}", r.human())?;
+            }
+            out.flush()?; // a chapter's answer shows as soon as it is known
         }
         reports.push(r);
     }
@@ -437,7 +463,10 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
         let arr: Vec<serde_json::Value> = reports.iter().map(ChapterReport::to_json).collect();
         writeln!(out, "{}", serde_json::Value::Array(arr))?;
     } else {
-        write!(out, "{}", crate::report::summary_table(&reports))?;
+        if cli.claims {
+            writeln!(out, "{}", crate::report::summary_table(&reports))?;
+        }
+        write!(out, "{}", screen::all_footer(&reports))?;
     }
     Ok(i32::from(reports.iter().any(ChapterReport::has_failures)))
 }

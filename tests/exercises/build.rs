@@ -5,8 +5,9 @@
 //!
 //! Independent answers: closed forms derived in the chapters (the rod's impulse ratio,
 //! the arcsine friction law, the dither drift, the flights of whole periods, the
-//! sawtooth drift, RK4's stability function), the workbook's own implementation where
-//! the student writes a second one (the hull test, the pivot reaction), and properties
+//! sawtooth drift, RK4's stability function, the sticking impulse of a rod), the
+//! workbook's own implementation where the student writes a second one (the hull test,
+//! the pivot reaction, the rod's mobility), and properties
 //! no wrong answer has (the landing is a zero of the gap with no zero before it; the
 //! observed order of RK4).
 
@@ -54,6 +55,10 @@ pub trait Exercises {
     fn pivot_reaction(p: &PivotInputs, theta: f64, theta_dot: f64, a_s: f64) -> [f64; 2];
     /// 7.5: one RK4 step of `y' = f(t, y)` from `(t, y)` with step `h`.
     fn rk4_step(f: &dyn Fn(f64, f64) -> f64, t: f64, y: f64, h: f64) -> f64;
+    /// 8.5: the mobility `W` (1/kg) of the foot of a rod of length `length_m` (m), rod
+    /// mass `rod_kg` and tip mass `tip_kg` (kg) leaning `theta_rad`, as
+    /// `[[W_xx, W_xz], [W_zx, W_zz]]`.
+    fn rod_mobility(length_m: f64, rod_kg: f64, tip_kg: f64, theta_rad: f64) -> [[f64; 2]; 2];
 }
 
 fn check_1_5<E: Exercises>() {
@@ -238,6 +243,48 @@ fn check_7_5<E: Exercises>() {
     }
 }
 
+fn check_8_5<E: Exercises>() {
+    use locomotion_workbook::physics::stick_inertia::{InertiaModel, InertiaParams, MassGeometry};
+    let length_m = 0.15;
+    for (rod_kg, tip_kg) in [
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.01, 1.0),
+        (1e-6, 1.0),
+        (0.3, 0.05),
+    ] {
+        let mut base = StickParams::new(length_m, 1.0, 10.0, 0.01, 0.4, 0.3, 9.81, 3.0, 30.0)
+            .expect("a stick inside the model's domain");
+        base.mass_kg = tip_kg;
+        let model = InertiaModel::new(InertiaParams {
+            base,
+            rod_mass_kg: rod_kg,
+            restitution: 0.0,
+        });
+        let alpha = MassGeometry::new(length_m, rod_kg, tip_kg).alpha();
+        for theta in [-1.2, -0.3, 0.1, std::f64::consts::FRAC_PI_4, 1.4] {
+            let want = model.mobility(theta);
+            let got = E::rod_mobility(length_m, rod_kg, tip_kg, theta);
+            let scale = want.iter().flatten().fold(0.0_f64, |a, w| a.max(w.abs()));
+            for (g, w) in got.iter().flatten().zip(want.iter().flatten()) {
+                assert!(
+                    (g - w).abs() <= 1e-12 * scale,
+                    "rod {rod_kg} kg, tip {tip_kg} kg, theta {theta}: W = {got:?}, the model's {want:?}"
+                );
+            }
+            // A sticking landing: P = W^-1 (0, v), so P_x/P_z = -W_xz/W_xx, which section
+            // 2 writes alpha q/(1 + alpha + q^2) with q = tan(theta).
+            let q = theta.tan();
+            let ratio = -got[0][1] / got[0][0];
+            let closed = alpha * q / (1.0 + alpha + q * q); // formula: J_l/J_v = alpha q/(1+alpha+q^2)
+            assert!(
+                (ratio - closed).abs() <= 1e-9 * closed.abs().max(1e-3),
+                "rod {rod_kg} kg, tip {tip_kg} kg, theta {theta}: J_l/J_v = {ratio}, section 2's {closed}"
+            );
+        }
+    }
+}
+
 macro_rules! build_exercise {
     ($check:ident, $reference:ident, $yours:ident) => {
         #[test]
@@ -259,3 +306,4 @@ build_exercise!(check_4_5, reference_4_5, yours_4_5);
 build_exercise!(check_5_5, reference_5_5, yours_5_5);
 build_exercise!(check_6_5, reference_6_5, yours_6_5);
 build_exercise!(check_7_5, reference_7_5, yours_7_5);
+build_exercise!(check_8_5, reference_8_5, yours_8_5);

@@ -152,4 +152,17 @@ impl Exercises for Reference {
         let k4 = f(t + h, y + h * k3);
         y + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
     }
+
+    fn rod_mobility(length_m: f64, rod_kg: f64, tip_kg: f64, theta_rad: f64) -> [[f64; 2]; 2] {
+        let (l, m_r, m) = (length_m, rod_kg, tip_kg);
+        let total = m + m_r; // formula: M = m + m_r
+        let l_g = (m * l + 0.5 * m_r * l) / total; // formula: l_G = (m L + m_r L/2)/M
+        let i_g = m_r * l * l / 12.0 + m_r * (0.5 * l - l_g).powi(2) + m * (l - l_g).powi(2); // formula: I_G by parallel axes
+        let alpha = total * l_g * l_g / i_g; // formula: alpha = M l_G^2 / I_G
+        let (s, c) = theta_rad.sin_cos(); // e_theta = (cos, -sin)
+        [
+            [(1.0 + alpha * c * c) / total, -alpha * s * c / total],
+            [-alpha * s * c / total, (1.0 + alpha * s * s) / total],
+        ] // formula: W = (Id + alpha e_theta e_theta^T)/M
+    }
 }

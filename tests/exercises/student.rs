@@ -50,4 +50,8 @@ impl Exercises for Yours {
     fn rk4_step(_f: &dyn Fn(f64, f64) -> f64, _t: f64, _y: f64, _h: f64) -> f64 {
         todo!("exercise 7.5: one classical Runge-Kutta step for y' = f(t, y)")
     }
+
+    fn rod_mobility(_length_m: f64, _rod_kg: f64, _tip_kg: f64, _theta_rad: f64) -> [[f64; 2]; 2] {
+        todo!("exercise 8.5: W = (Id + alpha e_theta e_theta^T)/M of the rod's foot")
+    }
 }

@@ -87,6 +87,7 @@ pub fn embed(model: &StickModel, x: &Point) -> State {
     model.canonical(x.mode, 0.0, &y)
 }
 
+// ANCHOR: strobe
 /// The map `P^n`: the section point `n` drive periods after `x`, or the outcome that
 /// ended the run first (fell, invalid, ...).
 pub fn strobe(
@@ -120,6 +121,7 @@ pub fn strobe(
         Err(StickOutcome::Invalid("non-finite section point".into()))
     }
 }
+// ANCHOR_END: strobe
 
 /// Largest coordinate difference of two points in units of [`scales`]; infinite when
 /// their modes differ.

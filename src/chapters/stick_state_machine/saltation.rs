@@ -110,6 +110,7 @@ impl Variational<'_> {
         (grad, gt)
     }
 
+    // ANCHOR: jump
     /// The saltation matrix of the switch `(mode, i)` at `(t, y-)` into `(to, y+)`.
     fn jump(
         &self,
@@ -127,6 +128,7 @@ impl Variational<'_> {
         let g_dot = (grad * f_minus)[0] + gt; // formula: dg/dt along the flow before the switch
         dr + (f_plus - dr * f_minus) * grad / g_dot // formula: S = DR + (f+ - DR f-) grad g^T / g'
     }
+    // ANCHOR_END: jump
 }
 
 impl HybridSystem<NV> for Variational<'_> {

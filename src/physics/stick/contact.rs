@@ -94,9 +94,9 @@ impl StickModel {
         let (l, g, mu) = (p.length_m, p.g_mps2, p.mu);
         let w = y[OM];
         let torque = p.stiffness_nm_per_rad * (y[TH] - p.theta0_rad) + p.damping_nms_per_rad * w;
-        // Ordered for a short chain of dependent operations (every stage waits for
-        // it): both reciprocals first, side by side, and everything that does not need
-        // them (the torque over L m, the velocity terms) while they run.
+        // The moment balance about P fixes the normal force (C.9, C.11); the vertical
+        // balance of P then gives theta'' and the horizontal one the foot's slip (C.14).
+        // The denominator s - sigma mu cos vanishes at a jam (tan theta = sigma mu).
         let (inv_den, inv_s) = (1.0 / (s - sigma * mu * c), 1.0 / s);
         let q_lm = torque * self.inv_length * self.inv_mass;
         let (lw2s, lw2c) = (l * w * w * s, l * w * w * c);
