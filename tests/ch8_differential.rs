@@ -198,7 +198,10 @@ fn differential(n: usize, dur: f64) {
         wrong.len()
     );
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
-    assert!(3 * unresolved <= n, "{unresolved} of {n} scenes without a Moreau-Jean answer");
+    assert!(
+        3 * unresolved <= n,
+        "{unresolved} of {n} scenes without a Moreau-Jean answer"
+    );
     assert!(agree > 0);
 }
 

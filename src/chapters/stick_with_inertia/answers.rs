@@ -2,8 +2,8 @@
 //! the toothpick (a uniform stick) on the document's plate.
 
 use super::evidence::{scene_run, Rung};
-use crate::physics::stick_inertia::run::InertiaRun;
 use crate::physics::stick::{authors_scene, jamming_scene};
+use crate::physics::stick_inertia::run::InertiaRun;
 use crate::physics::stick_inertia::InertiaParams;
 use crate::report::fmt_num;
 

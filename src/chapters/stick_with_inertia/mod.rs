@@ -295,7 +295,10 @@ fn full_run_results(r: &mut ChapterReport, run: &InertiaRun, pre: &str) {
     r.result(&format!("{pre}painleve_events"), json!(events));
     r.result(&format!("{pre}impacts"), run.impact_count);
     r.result(&format!("{pre}max_penetration_m"), run.max_penetration_m);
-    r.result(&format!("{pre}penetration_bound_m"), run.penetration_bound_m);
+    r.result(
+        &format!("{pre}penetration_bound_m"),
+        run.penetration_bound_m,
+    );
     r.result(
         &format!("{pre}max_complementarity_ratio"),
         run.max_complementarity_ratio,
@@ -308,7 +311,12 @@ fn full_run_results(r: &mut ChapterReport, run: &InertiaRun, pre: &str) {
     let frac: serde_json::Map<String, serde_json::Value> = crate::physics::stick::Mode::ALL
         .iter()
         .zip(run.mode_time_s)
-        .map(|(m, s)| (m.name().to_string(), json!(s / total.max(f64::MIN_POSITIVE))))
+        .map(|(m, s)| {
+            (
+                m.name().to_string(),
+                json!(s / total.max(f64::MIN_POSITIVE)),
+            )
+        })
         .collect();
     r.result(&format!("{pre}mode_time_fraction"), json!(frac));
     let bridges: Vec<_> = run

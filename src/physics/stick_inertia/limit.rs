@@ -90,7 +90,11 @@ pub struct Composite {
 
 /// The composite's parts at one tolerance: `(v_0(M), delta(eps_r), c_2 eps_r^2, the
 /// reference run)`.
-fn composite_parts(p: &InertiaParams, duration_s: f64, opts: &Options) -> (f64, f64, f64, InertiaRun) {
+fn composite_parts(
+    p: &InertiaParams,
+    duration_s: f64,
+    opts: &Options,
+) -> (f64, f64, f64, InertiaRun) {
     // alpha -> 3 M/m_r for a light rod (l_G -> L, I_G -> m_r L^2/3); taken from the
     // limit, not from alpha itself, which overflows for m_r near the smallest doubles
     let m_ref = reference_rod_kg(p);
@@ -127,7 +131,12 @@ pub fn composite(p: &InertiaParams, duration_s: f64, opts: &Options) -> Composit
     // the second tolerance: 100 times tighter, or, where that is below 1e-14, 100
     // times looser (the difference then over-estimates the error: conservative)
     let mut tight = *opts;
-    if let StepControl::Adaptive { rtol, atol, h_max_s } = opts.control {
+    if let StepControl::Adaptive {
+        rtol,
+        atol,
+        h_max_s,
+    } = opts.control
+    {
         let f = if rtol * 1e-2 >= 1e-14 { 1e-2 } else { 1e2 };
         tight.control = StepControl::Adaptive {
             rtol: rtol * f,

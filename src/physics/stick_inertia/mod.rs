@@ -26,8 +26,8 @@
 //! | [`ZC`], [`VZC`] | z position and velocity of C | m, m/s |
 //! | [`W_PLATE`] .. [`D_IMPACT`] | plate work, friction, damper and impact losses | J |
 
-pub mod compliant;
 pub mod bridge;
+pub mod compliant;
 pub mod contact;
 pub mod flight;
 pub mod impact;

@@ -53,7 +53,8 @@ impl InertiaModel {
     /// The rounding threshold of C's velocities after an impact from `u0` (m/s):
     /// `eta_v = C_OPS u (1 + alpha) V`.
     pub fn velocity_rounding(&self, u0: [f64; 2]) -> f64 {
-        C_OPS * UNIT_ROUNDOFF * self.mobility_condition() * self.velocity_scale(u0) // formula: eta_v = C u kappa_W V
+        C_OPS * UNIT_ROUNDOFF * self.mobility_condition() * self.velocity_scale(u0)
+        // formula: eta_v = C u kappa_W V
     }
 
     /// The rounding threshold of `D` at `theta` (kg m^2):
@@ -63,7 +64,8 @@ impl InertiaModel {
         let (m, l) = (self.geo.total_kg, self.geo.l_g_m);
         C_OPS
             * UNIT_ROUNDOFF
-            * (self.geo.i_g + m * l * l * (s * s + self.p.base.mu * (s * c).abs())) // formula: eta_D
+            * (self.geo.i_g + m * l * l * (s * s + self.p.base.mu * (s * c).abs()))
+        // formula: eta_D
     }
 
     /// The rounding threshold of the contact force at `y` (N):

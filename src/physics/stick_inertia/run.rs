@@ -186,7 +186,8 @@ pub fn simulate_inertia(
         ..*opts
     };
     let mut bridges = Vec::new();
-    let (outcome, t_end_s, y_end, rhs) = run_pieces(model, t0, &y0, t_end, &opts, &mut w, &mut bridges);
+    let (outcome, t_end_s, y_end, rhs) =
+        run_pieces(model, t0, &y0, t_end, &opts, &mut w, &mut bridges);
     let mut y1 = y_end;
     for k in 0..4 {
         y1[W_PLATE + k] = w.acc[k];

@@ -261,9 +261,12 @@ impl InertiaModel {
             return Transition::Stop(InertiaStop::PainleveUnresolved(ev));
         }
         if n.is_none() && self.painleve_rule == super::PainleveRule::PreferSeparation {
-            if let next @ Transition::To { .. } = self.takeoff(t, y) {
-                return next;
-            }
+            // the comparison rule: the zero-impulse solution, as a time-stepper that
+            // prefers separation picks it where its step's contact problem has two
+            return Transition::To {
+                mode: Mode::Flight,
+                state: *y,
+            };
         }
         match case {
             PainleveCase::Indeterminate => self.takeoff(t, y),
