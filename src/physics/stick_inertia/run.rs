@@ -189,9 +189,7 @@ pub fn simulate_inertia(
     let (outcome, t_end_s, y_end, rhs) =
         run_pieces(model, t0, &y0, t_end, &opts, &mut w, &mut bridges);
     let mut y1 = y_end;
-    for k in 0..4 {
-        y1[W_PLATE + k] = w.acc[k];
-    }
+    y1[W_PLATE..=D_IMPACT].copy_from_slice(&w.acc);
     let budget = budget(model, &y0, &y1);
     let log = model.log.borrow().clone();
     let dur = t_end_s - t0;
