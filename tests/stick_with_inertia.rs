@@ -467,3 +467,31 @@ fn cli_massless_limit_is_reachable() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("--damping"), "{err}");
 }
+
+/// The Moreau-Jean bridge (where the rules stop): from a foot sliding on a still plate it
+/// hands back to the rules in a consistent mode, and its foot position at the hand-back
+/// agrees with the event-driven run's at that time within its own error estimate (plus
+/// the event-driven tolerance).
+#[test]
+fn moreau_jean_bridge_hands_back_consistently_and_within_its_estimate() {
+    use locomotion_workbook::numerics::hybrid::Transition;
+    use locomotion_workbook::physics::stick_inertia::bridge::bridge;
+    use locomotion_workbook::physics::stick_inertia::run::simulate_inertia;
+    use locomotion_workbook::physics::stick_inertia::{NSTATE, TH, VXC, XC};
+    let mut base = StickParams::new(0.15, 1.0, 0.0, 0.0, 0.5, 0.3, 9.81, 0.0, 30.0).unwrap();
+    base.mass_kg = 0.0;
+    let md = InertiaModel::new(InertiaParams {
+        base,
+        rod_mass_kg: 0.1,
+        restitution: 0.0,
+    });
+    let mut y = [0.0; NSTATE];
+    y[TH] = 0.3;
+    y[VXC] = 0.1;
+    let (b, next) = bridge(&md, 0.0, &y, 1.0).expect("a hand-back");
+    assert!(matches!(next, Transition::To { .. }), "{next:?}");
+    assert!(b.t1_s > 0.0 && b.t1_s < md.period_s, "{b:?}");
+    let ev = simulate_inertia(&md, 0.0, y, b.t1_s, &opts(), 0.0);
+    let gap = (ev.mean_velocity_mps * b.t1_s - (b.y1[XC] - y[XC])).abs();
+    assert!(gap <= b.error_xc_m + 1e-9, "{gap} > {}", b.error_xc_m);
+}
