@@ -116,9 +116,16 @@ fn cli_quick_json_has_the_results_of_the_contract() {
         "alpha",
         "inertia_ratio",
         "massless_mean_velocity_mps",
+        "max_penetration_m",
+        "penetration_bound_m",
+        "max_complementarity_ratio",
+        "mode_time_fraction",
     ] {
         assert!(!r[key].is_null(), "missing {key}");
     }
+    // a completed run backs its verdict with its contact residuals
+    assert!(r["max_penetration_m"].as_f64().unwrap() <= r["penetration_bound_m"].as_f64().unwrap());
+    assert!(r["max_complementarity_ratio"].as_f64().unwrap() <= 1.0);
     assert_eq!(r["outcome"], "completed");
     assert!(r["painleve_events"].is_array());
     let (v8, v6) = (
