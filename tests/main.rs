@@ -7,6 +7,7 @@
 mod accuracy_sweep;
 mod architecture;
 mod asymmetric_shaking;
+mod ch8_differential;
 mod cli;
 mod common;
 mod effective_mass;

@@ -3,6 +3,7 @@
 
 use super::evidence::{scene_run, Rung};
 use crate::physics::stick::{authors_scene, jamming_scene};
+use crate::physics::stick_inertia::run::InertiaRun;
 use crate::physics::stick_inertia::InertiaParams;
 use crate::report::fmt_num;
 
@@ -105,6 +106,11 @@ pub struct MapCell {
     pub events: usize,
     /// The run ended by a fall.
     pub fell: bool,
+    /// The run ended neither completed nor fallen (invalid, Zeno, unresolved).
+    pub unvouched: bool,
+    /// Share of the run's time in the slide that can be Painleve (the foot slipping away
+    /// from the side the rod leans to: left for theta_0 > 0) (1).
+    pub prone_fraction: f64,
 }
 
 /// Mass distributions of the map: (label, tip mass kg, rod mass kg).
@@ -140,6 +146,8 @@ pub fn painleve_map(n: usize, duration_s: f64) -> Vec<Vec<MapCell>> {
                         mu,
                         events: r.painleve.len(),
                         fell: r.outcome.label() == "fell",
+                        unvouched: !matches!(r.outcome.label(), "fell" | "completed"),
+                        prone_fraction: left_fraction(&r),
                     });
                 }
             }
@@ -148,14 +156,50 @@ pub fn painleve_map(n: usize, duration_s: f64) -> Vec<Vec<MapCell>> {
         .collect()
 }
 
+/// Share of a run's time in the left slide (1).
+fn left_fraction(r: &InertiaRun) -> f64 {
+    let total: f64 = r.mode_time_s.iter().sum();
+    r.mode_time_s[2] / total.max(f64::MIN_POSITIVE) // Mode::ALL order: flight, pivot, left, right
+}
+
+/// The gait's time in each mode on both scenes of chapter 6 (1 kg tip, 10 g rod),
+/// runs of `duration_s`, as a Markdown table.
+pub fn gait_modes_table(duration_s: f64) -> String {
+    let mut s = String::from("| scene | mean speed of C (m/s) | flight | pivot | left slide | right slide | outcome |\n|---|---|---|---|---|---|---|\n");
+    for (scene, base) in [
+        ("self-locking", jamming_scene(9.81)),
+        ("authors", authors_scene(10.0)),
+    ] {
+        let p = InertiaParams {
+            base,
+            rod_mass_kg: 0.01,
+            restitution: 0.0,
+        };
+        let r = scene_run(&p, duration_s, 1e-10, 0.0);
+        let total: f64 = r.mode_time_s.iter().sum::<f64>().max(f64::MIN_POSITIVE);
+        let pct = |i: usize| format!("{:.1} %", 100.0 * r.mode_time_s[i] / total);
+        s.push_str(&format!(
+            "| {scene} | {:+.4} | {} | {} | {} | {} | {} |\n",
+            r.mean_velocity_mps,
+            pct(0),
+            pct(1),
+            pct(2),
+            pct(3),
+            r.outcome.label()
+        ));
+    }
+    s
+}
+
 /// The map's summary as a Markdown table.
 pub fn map_table(map: &[Vec<MapCell>]) -> String {
-    let mut s = String::from("| rod | runs | runs with Painlevé events | events | smallest μ with an event | runs that fell |\n|---|---|---|---|---|---|\n");
+    let mut s = String::from("| rod | runs | runs with Painlevé events | events | smallest μ with an event | time in the left slide (mean) | runs that fell | runs not vouched for |\n|---|---|---|---|---|---|---|---|\n");
     for ((label, ..), cells) in MAP_RODS.iter().zip(map) {
         let with: Vec<_> = cells.iter().filter(|c| c.events > 0).collect();
         let min_mu = with.iter().map(|c| c.mu).fold(f64::INFINITY, f64::min);
+        let prone = cells.iter().map(|c| c.prone_fraction).sum::<f64>() / cells.len() as f64;
         s.push_str(&format!(
-            "| {label} | {} | {} | {} | {} | {} |\n",
+            "| {label} | {} | {} | {} | {} | {:.1} % | {} | {} |\n",
             cells.len(),
             with.len(),
             cells.iter().map(|c| c.events).sum::<usize>(),
@@ -164,7 +208,9 @@ pub fn map_table(map: &[Vec<MapCell>]) -> String {
             } else {
                 "none".into()
             },
-            cells.iter().filter(|c| c.fell).count()
+            100.0 * prone,
+            cells.iter().filter(|c| c.fell).count(),
+            cells.iter().filter(|c| c.unvouched).count()
         ));
     }
     s

@@ -91,8 +91,9 @@ fn compliant_limit(doc: &Statements, ev: &Evidence) -> Claim {
         .collect();
     let shrinking = soft_dev.windows(2).all(|w| w[1] < w[0]);
     let stiffest = *soft_dev.last().unwrap_or(&f64::NAN);
+    let mu_p = crate::physics::stick_inertia::painleve::mu_painleve(0.6, 3.0);
     let statement = format!(
-        "The impact-without-collision rule is the limit of a stiff compliant contact: on a uniform rod sliding at θ = 0.6 rad with μ = 1.6 > μ_P = 1.398, the normal impulse gathered until the slip stops tends to the rule's as the stiffness grows (relative gaps {} at K = 1e5 ... 1e8 N/m, shrinking at each step, by 2 to 2.5 per decade of K).",
+        "The impact-without-collision rule is the limit of a stiff compliant contact: on a uniform rod sliding at θ = 0.6 rad with μ = 1.6 > μ_P = {mu_p:.4}, the normal impulse gathered until the slip stops tends to the rule's as the stiffness grows (relative gaps {} at K = 1e5 ... 1e8 N/m, shrinking at each step, by 2 to 2.5 per decade of K).",
         soft_dev.iter().map(|d| format!("{d:.1e}")).collect::<Vec<_>>().join(", ")
     );
     Claim::draft(
@@ -162,18 +163,27 @@ fn massless_limit(doc: &Statements, ev: &Evidence) -> Claim {
     .approximation_if(order_dev <= ORDER_TOL)
 }
 
-/// `impacts-dissipate`: no simulated impact creates energy.
+/// `impacts-dissipate`: no simulated impact creates energy. A consistency check: with
+/// `e <= 1` the Darboux-Keller process gives back at most the work it absorbed, so the
+/// inequality holds by construction; what the check adds is that the states before and
+/// after (not the rule's own bookkeeping) say the same. One-sided: a gain at most the
+/// bound, any loss allowed.
 fn impacts_dissipate(doc: &Statements, (gain, scale, n): (f64, f64, usize)) -> Claim {
+    let bound = 1e-12 * scale;
     let statement = format!(
-        "No impact creates energy: kinetic energy change minus the plate's impulse work, from the states before and after, at most 1e-12 of the largest loss, over {n} simulated landings with restitution e = {} (slipping, sticking, reversing).",
+        "No impact creates energy (holds by construction of the impact rule for e <= 1; checked from the states): kinetic energy change minus the plate's impulse work, from the states before and after, at most 1e-12 of the largest loss, over {n} simulated landings with restitution e = {} (slipping, sticking, reversing).",
         doc.restitution_max
     );
     Claim::draft(
-        Check::Simulation,
+        Check::Consistency,
         "impacts-dissipate",
         "4 (impact law)",
         &statement,
     )
-    .values(0.0, gain, 1e-12 * scale)
-    .confirmed_if(gain <= 1e-12 * scale && n > 0)
+    .values(
+        "energy gain <= 0 (one-sided)",
+        gain,
+        format!("one-sided: gain <= {bound:.3e} J (1e-12 of the largest loss)"),
+    )
+    .confirmed_if(gain <= bound && n > 0)
 }

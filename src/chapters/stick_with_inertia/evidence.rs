@@ -6,7 +6,9 @@ use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
 use crate::physics::stick::StickParams;
 use crate::physics::stick_inertia::run::{run_from_rest, simulate_inertia, InertiaRun};
-use crate::physics::stick_inertia::{InertiaModel, InertiaParams, NSTATE, TH, VXC, ZC};
+use crate::physics::stick_inertia::{
+    InertiaModel, InertiaParams, PainleveRule, NSTATE, TH, VXC, ZC,
+};
 
 /// Driver options of every run: DOP853 at `rtol`.
 pub fn options(rtol: f64) -> Options {
@@ -325,19 +327,35 @@ pub fn moreau_jean() -> (f64, Vec<(f64, f64)>) {
 /// The scene of cardillo's `examples/Painleve.py` (Glocker 1995, 5.3.4, "impact without
 /// collision"): a uniform rod of length 2 m and 1 kg, mu = 5/3, g = 10, leaning 31 deg
 /// from the horizontal (59 deg from the vertical, top to the left), its lower end sliding
-/// right at 30 m/s on a still floor. Returns the run (first Painleve event, impacts).
-pub fn glocker_scene() -> InertiaRun {
+/// right at 30 m/s on a still floor, under the Painleve `rule` (the model's prefers
+/// contact; the point is singular, see [`glocker_rate_after`]). Returns the run (first
+/// Painleve event, impacts), traced every millisecond.
+pub fn glocker_scene(rule: PainleveRule) -> InertiaRun {
     let th = -(59.0f64).to_radians();
     let mut base = StickParams::new(2.0, 0.0, 0.0, 0.0, 5.0 / 3.0, th, 10.0, 0.0, 30.0)
         .expect("a stick inside the model's domain");
     base.mass_kg = 0.0;
-    let md = InertiaModel::new(InertiaParams {
+    let mut md = InertiaModel::new(InertiaParams {
         base,
         rod_mass_kg: 1.0,
         restitution: 0.0,
     });
+    md.painleve_rule = rule;
     let mut y = [0.0; NSTATE];
     y[TH] = th;
     y[VXC] = 30.0;
-    simulate_inertia(&md, 0.0, y, 1.5, &options(1e-10), 0.0)
+    simulate_inertia(&md, 0.0, y, 1.5, &options(1e-10), 1e-3)
+}
+
+/// The rod's rate just after the Glocker scene's Painleve point (rad/s): the first traced
+/// sample in flight after the first Painleve event. At that point both of the slide's
+/// Painleve coefficients vanish (a singular point of the dynamic jam), and the answer
+/// depends on the rule: preferring contact (an impact without collision) the rod leaves
+/// spinning fast; preferring separation it lifts off at its sliding rate.
+pub fn glocker_rate_after(run: &InertiaRun) -> Option<f64> {
+    let t = run.painleve.first()?.t_s;
+    run.trace
+        .iter()
+        .find(|s| s.t_s > t && s.mode == crate::physics::stick::Mode::Flight)
+        .map(|s| s.y[crate::physics::stick_inertia::OM].abs())
 }

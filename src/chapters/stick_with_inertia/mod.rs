@@ -88,7 +88,7 @@ pub const TIP_MASS_KG: Flag = Flag::new(
 /// `--rod-mass-kg`.
 pub const ROD_MASS_KG: Flag = Flag::new(
     "--rod-mass-kg",
-    "Mass of the rod, uniform along C-P (0 is chapter 6's massless rod; m + m_r >= 1e-3 kg, and --damping above 0 when m_r = 0); default 0.01: 1 % of the tip mass",
+    "Mass of the rod, uniform along C-P (0 is chapter 6's massless rod; m + m_r >= 1e-3 kg, and --damping above 0 when m_r = 0 or when alpha = M l_G^2/I_G >= 1e9, a rod lighter than about 3e-9 (m + m_r)); default 0.01: 1 % of the tip mass",
     "kg",
     Interval::closed(0.0, 10.0),
 )
@@ -195,6 +195,10 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &Statements) -> Result<ChapterR
         if ctx.quick { 0.5 } else { 1.0 },
     );
     r.table("painleve-map", answers::map_table(&map));
+    r.table(
+        "gait-modes",
+        answers::gait_modes_table(if ctx.quick { 2.0 } else { 10.0 }),
+    );
     if let Some(dir) = ctx.figure_dir(ID) {
         r.figures.extend(figures::painleve_boundary(&ev, &dir)?);
         r.figures.extend(figures::validity_map(&ev, &dir)?);
@@ -248,6 +252,8 @@ fn scene_results(r: &mut ChapterReport, p: &InertiaParams, dur: f64, rtol: f64) 
             "singular perturbation (chapter 6's run + first-order correction)",
         );
         r.result("massless_limit_error_bound_mps", c.error_bound_mps);
+        r.result("massless_limit_truncation_mps", c.truncation_mps);
+        r.result("massless_limit_integration_mps", c.integration_mps);
         r.result("reference_rod_mass_kg", c.reference_rod_kg);
         full_run_results(r, &c.reference, "reference_");
         let alpha = p.geometry().alpha();
@@ -288,6 +294,38 @@ fn full_run_results(r: &mut ChapterReport, run: &InertiaRun, pre: &str) {
     r.result(&format!("{pre}painleve_event_count"), run.painleve.len());
     r.result(&format!("{pre}painleve_events"), json!(events));
     r.result(&format!("{pre}impacts"), run.impact_count);
+    r.result(&format!("{pre}max_penetration_m"), run.max_penetration_m);
+    r.result(
+        &format!("{pre}penetration_bound_m"),
+        run.penetration_bound_m,
+    );
+    r.result(
+        &format!("{pre}max_complementarity_ratio"),
+        run.max_complementarity_ratio,
+    );
+    r.result(
+        &format!("{pre}max_normal_residual_mps"),
+        run.max_normal_residual_mps,
+    );
+    let total: f64 = run.mode_time_s.iter().sum();
+    let frac: serde_json::Map<String, serde_json::Value> = crate::physics::stick::Mode::ALL
+        .iter()
+        .zip(run.mode_time_s)
+        .map(|(m, s)| {
+            (
+                m.name().to_string(),
+                json!(s / total.max(f64::MIN_POSITIVE)),
+            )
+        })
+        .collect();
+    r.result(&format!("{pre}mode_time_fraction"), json!(frac));
+    let bridges: Vec<_> = run
+        .bridges
+        .iter()
+        .take(100)
+        .map(|b| json!({"t0_s": b.t0_s, "t1_s": b.t1_s, "step_s": b.h_s, "error_xc_m": b.error_xc_m}))
+        .collect();
+    r.result(&format!("{pre}moreau_jean_bridges"), json!(bridges));
     if !pre.is_empty() {
         // the composite has no events of its own: the outer (massless) model has none
         r.result("painleve_events", json!([]));
@@ -298,13 +336,24 @@ fn full_run_results(r: &mut ChapterReport, run: &InertiaRun, pre: &str) {
 /// The chapter's answers that do not depend on the flags: the Glocker scene and the
 /// toothpick.
 fn answer_results(r: &mut ChapterReport, ctx: &Context) {
-    let gl = evidence::glocker_scene();
+    use crate::physics::stick_inertia::PainleveRule;
+    let gl = evidence::glocker_scene(PainleveRule::PreferContact);
     if let (Some(e), Some(i)) = (gl.painleve.first(), gl.impacts.first()) {
         r.result("glocker_painleve_time_s", e.t_s);
         r.result("glocker_painleve_theta_rad", e.theta_rad);
         r.result("glocker_iwc_impulse_ns", json!([i.j_t_ns, i.j_n_ns]));
     }
     r.result("glocker_outcome", gl.outcome.label());
+    // the singular point: both rules, both answers
+    let sep = evidence::glocker_scene(PainleveRule::PreferSeparation);
+    if let (Some(c), Some(s)) = (
+        evidence::glocker_rate_after(&gl),
+        evidence::glocker_rate_after(&sep),
+    ) {
+        r.result("glocker_rate_prefer_contact_rad_s", c);
+        r.result("glocker_rate_prefer_separation_rad_s", s);
+    }
+    r.result("glocker_outcome_prefer_separation", sep.outcome.label());
     let tooth = answers::toothpicks(if ctx.quick { 2.0 } else { 10.0 });
     if let Some(t) = tooth.iter().find(|t| t.spring && t.scene == "self-locking") {
         r.result("toothpick_mean_velocity_mps", t.speed_mps);

@@ -27,6 +27,7 @@
 use super::run::{run_from_rest, InertiaRun};
 use super::{InertiaModel, InertiaParams};
 use crate::numerics::hybrid::Options;
+use crate::numerics::ode::StepControl;
 use crate::physics::stick::run::{initial_state, simulate_stick, Recording};
 use crate::physics::stick::{StickModel, StickParams};
 
@@ -73,37 +74,88 @@ pub struct Composite {
     pub reference_rod_kg: f64,
     /// `eps / eps_r` (1).
     pub x: f64,
-    /// Bound on `|v(eps) - v_c(eps)|` (m/s): `|c_2| eps_r^2 x (1 - x)`.
+    /// Bound on `|v(eps) - v_c(eps)|` (m/s): the truncation `|c_2| eps_r^2 x (1 - x)`
+    /// plus the integration error.
     pub error_bound_mps: f64,
+    /// The truncation part `|c_2| eps_r^2 x (1 - x)` (m/s).
+    pub truncation_mps: f64,
+    /// The integration part (m/s): `v_c` at `rtol` against `v_c` at `rtol/100`, the
+    /// difference taken as the error of the `rtol` run (the tighter run's own error is
+    /// 100 times smaller at the integrator's order 8 and above, and at worst as large
+    /// for the rounding-limited part, hence the factor 2).
+    pub integration_mps: f64,
     /// The full model's run at the reference rod.
     pub reference: InertiaRun,
 }
 
-/// The composite for `p` (a rod lighter than the reference) over `duration_s`.
-pub fn composite(p: &InertiaParams, duration_s: f64, opts: &Options) -> Composite {
+/// The composite's parts at one tolerance: `(v_0(M), delta(eps_r), c_2 eps_r^2, the
+/// reference run)`.
+fn composite_parts(
+    p: &InertiaParams,
+    duration_s: f64,
+    opts: &Options,
+) -> (f64, f64, f64, InertiaRun) {
     // alpha -> 3 M/m_r for a light rod (l_G -> L, I_G -> m_r L^2/3); taken from the
     // limit, not from alpha itself, which overflows for m_r near the smallest doubles
-    let m_ref = 3.0 * (p.base.mass_kg + p.rod_mass_kg) / ALPHA_REF; // formula: alpha(m_ref) ~ ALPHA_REF
+    let m_ref = reference_rod_kg(p);
     let at = |m_r: f64| InertiaParams {
         rod_mass_kg: m_r,
         ..*p
     };
     let (p1, p2) = (at(m_ref), at(2.0 * m_ref));
-    let x = p.inertia_ratio() / p1.inertia_ratio(); // formula: x = eps/eps_r = m_r/m_ref (I_P = m_r L^2/3)
-                                                    // the outer solution depends on the total mass M = m + m_r too: the correction is
-                                                    // the deviation from chapter 6's model of the same total mass
+    // the outer solution depends on the total mass M = m + m_r too: the correction is
+    // the deviation from chapter 6's model of the same total mass
     let v0 = massless_speed(p, duration_s, opts);
     let r1 = run_from_rest(&InertiaModel::new(p1), duration_s, opts, 0.0);
     let d1 = r1.mean_velocity_mps - massless_speed(&p1, duration_s, opts); // formula: delta(eps_r) = v(eps_r) - v_0(M_r)
     let d2 = run_from_rest(&InertiaModel::new(p2), duration_s, opts, 0.0).mean_velocity_mps
         - massless_speed(&p2, duration_s, opts);
     let c2e2 = 0.5 * (d2 - 2.0 * d1); // formula: c_2 eps_r^2 = (delta(2 eps_r) - 2 delta(eps_r) + delta(0))/2, delta(0) = 0
+    (v0, d1, c2e2, r1)
+}
+
+/// The reference rod (kg): `alpha(m_ref) ~ ALPHA_REF`.
+fn reference_rod_kg(p: &InertiaParams) -> f64 {
+    3.0 * (p.base.mass_kg + p.rod_mass_kg) / ALPHA_REF // formula: alpha(m_ref) ~ ALPHA_REF
+}
+
+/// The composite for `p` (a rod lighter than the reference) over `duration_s`, at the
+/// tolerance of `opts` and, for its integration error, at a tolerance 100 times tighter
+/// (100 times looser when that would go below 1e-14).
+pub fn composite(p: &InertiaParams, duration_s: f64, opts: &Options) -> Composite {
+    let m_ref = reference_rod_kg(p);
+    // eps = I_P k/gamma^2 is proportional to m_r (I_P = m_r L^2/3): the ratio is taken
+    // from the masses, which stays defined without a spring (k = 0 makes eps 0/0)
+    let x = p.rod_mass_kg / m_ref; // formula: x = eps/eps_r = m_r/m_ref
+    let (v0, d1, c2e2, r1) = composite_parts(p, duration_s, opts);
+    // the second tolerance: 100 times tighter, or, where that is below 1e-14, 100
+    // times looser (the difference then over-estimates the error: conservative)
+    let mut tight = *opts;
+    if let StepControl::Adaptive {
+        rtol,
+        atol,
+        h_max_s,
+    } = opts.control
+    {
+        let f = if rtol * 1e-2 >= 1e-14 { 1e-2 } else { 1e2 };
+        tight.control = StepControl::Adaptive {
+            rtol: rtol * f,
+            atol: atol * f,
+            h_max_s,
+        };
+    }
+    let (v0t, d1t, _, _) = composite_parts(p, duration_s, &tight);
+    let vc = v0 + x * d1; // formula: v_c = v_0(M) + (eps/eps_r) delta(eps_r)
+    let truncation = c2e2.abs() * x * (1.0 - x).abs(); // formula: |c_2 eps (eps - eps_r)|
+    let integration = 2.0 * (vc - (v0t + x * d1t)).abs(); // formula: 2 |v_c(rtol) - v_c(rtol/100)|
     Composite {
-        mean_velocity_mps: v0 + x * d1, // formula: v_c = v_0(M) + (eps/eps_r) delta(eps_r)
+        mean_velocity_mps: vc,
         massless_mps: v0,
         reference_rod_kg: m_ref,
         x,
-        error_bound_mps: c2e2.abs() * x * (1.0 - x).abs(), // formula: |c_2 eps (eps - eps_r)|
+        error_bound_mps: truncation + integration,
+        truncation_mps: truncation,
+        integration_mps: integration,
         reference: r1,
     }
 }

@@ -26,6 +26,7 @@
 //! | [`ZC`], [`VZC`] | z position and velocity of C | m, m/s |
 //! | [`W_PLATE`] .. [`D_IMPACT`] | plate work, friction, damper and impact losses | J |
 
+pub mod bridge;
 pub mod compliant;
 pub mod contact;
 pub mod flight;
@@ -33,6 +34,7 @@ pub mod impact;
 pub mod limit;
 pub mod painleve;
 pub mod params;
+pub mod rounding;
 pub mod run;
 pub mod system;
 pub mod timestepping;
@@ -83,6 +85,8 @@ pub enum InertiaStop {
     PainleveUnresolved(PainleveEvent),
     /// The state left the model's validity (the reason).
     Invalid(String),
+    /// The rules found no consistent contact mode (the reason): handed to Moreau-Jean.
+    NoMode(String),
 }
 
 /// One impact at C (a landing or an impact without collision).
@@ -120,6 +124,13 @@ pub struct Log {
     pub impact_count: usize,
     /// Largest energy created by an impact (J): zero up to rounding when none creates any.
     pub max_energy_gain_j: f64,
+    /// Largest normal velocity of C relative to the plate after an impact that left C on
+    /// the plate, or after a plastic one (m/s): the velocity-level complementarity
+    /// residual (zero in exact arithmetic).
+    pub max_normal_residual_mps: f64,
+    /// Largest ratio of an impact's residual to its rounding threshold `eta_v`
+    /// ([`rounding`]) (1): at most 1 when every decision was rounding-consistent.
+    pub max_residual_ratio: f64,
 }
 
 impl Log {
@@ -139,6 +150,17 @@ pub enum ImpactLaw {
     VelocityCoulomb,
 }
 
+/// Which solution the rules take where a slide's Painleve coefficient crosses zero (a
+/// "dynamic jam"; at a singular point, where the free normal acceleration vanishes too,
+/// the contact problem's limits disagree).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PainleveRule {
+    /// Prefer contact: an impact without collision (the model's rule).
+    PreferContact,
+    /// Prefer separation: lift-off where the free motion allows it (for comparison).
+    PreferSeparation,
+}
+
 /// The model: parameters, derived constants and the run's log.
 #[derive(Debug, Clone)]
 pub struct InertiaModel {
@@ -156,6 +178,9 @@ pub struct InertiaModel {
     pub log: RefCell<Log>,
     /// The impact law (Darboux-Keller unless a comparison asks otherwise).
     pub impact_law: ImpactLaw,
+    /// The rule at a crossing of the Painleve boundary (prefer contact unless a
+    /// comparison asks otherwise).
+    pub painleve_rule: PainleveRule,
 }
 
 impl InertiaModel {
@@ -170,6 +195,7 @@ impl InertiaModel {
             min_flight_sample_s: period / 1024.0,
             log: RefCell::new(Log::default()),
             impact_law: ImpactLaw::DarbouxKeller,
+            painleve_rule: PainleveRule::PreferContact,
         }
     }
 

@@ -72,6 +72,20 @@ pub struct InertiaRun {
     pub max_impact_energy_gain_j: f64,
     /// The energy budget.
     pub budget: Budget,
+    /// Largest penetration of C into the plate (m), sampled on every flight segment
+    /// (its ends and 7 interior points) and at every event.
+    pub max_penetration_m: f64,
+    /// The bound the run's own tolerances put on it (m): `rtol (L + delta)`.
+    pub penetration_bound_m: f64,
+    /// Largest complementarity residual relative to its rounding threshold (1): after
+    /// impacts `|u_n+| / eta_v`, inside contact segments the force's excursion out of
+    /// the cone `max(-F_z, |F_x| - mu F_z) / eta_F` ([`super::rounding`]). At most 1 in
+    /// a run whose every decision was rounding-consistent.
+    pub max_complementarity_ratio: f64,
+    /// The largest velocity-level residual itself (m/s).
+    pub max_normal_residual_mps: f64,
+    /// The segments handed to Moreau-Jean ([`super::bridge`]).
+    pub bridges: Vec<super::bridge::Bridge>,
     /// Right-hand-side evaluations.
     pub rhs_evals: u64,
     /// Trace (if asked for).
@@ -85,10 +99,38 @@ struct Watch<'a> {
     next_t: f64,
     trace: Vec<Sample>,
     switches: usize,
+    mode_time_s: [f64; 4],
+    penetration_m: f64,
+    force_ratio: f64,
+}
+
+impl Watch<'_> {
+    /// Penetration (flight) or the force's excursion from the cone (contact) sampled on
+    /// the segment: its ends (flight) and 7 interior points.
+    fn sample_contact(&mut self, mode: Mode, seg: &Segment<'_, NSTATE>) {
+        let md = self.md;
+        for k in 0..=8 {
+            let t = seg.t0 + (seg.t1 - seg.t0) * f64::from(k) / 8.0;
+            if mode == Mode::Flight {
+                let h = md.h_c(t, &seg.eval(t));
+                self.penetration_m = self.penetration_m.max(-h);
+            } else if k > 0 && k < 8 {
+                let y = seg.eval(t);
+                if let Some(e) = md.contact_eval(mode, t, &y) {
+                    let mu = md.p.base.mu;
+                    let out = (-e.fz).max(e.fx.abs() - mu * e.fz).max(0.0);
+                    self.force_ratio = self.force_ratio.max(out / md.force_rounding(&y));
+                }
+            }
+        }
+    }
 }
 
 impl Observer<Mode, NSTATE> for Watch<'_> {
     fn segment(&mut self, mode: Mode, seg: &Segment<'_, NSTATE>) {
+        let i = Mode::ALL.iter().position(|m| *m == mode).unwrap_or(0);
+        self.mode_time_s[i] += seg.t1 - seg.t0;
+        self.sample_contact(mode, seg);
         if self.trace_dt_s > 0.0 {
             while self.next_t <= seg.t1 {
                 let t = self.next_t.max(seg.t0);
@@ -128,7 +170,6 @@ pub fn simulate_inertia(
     trace_dt_s: f64,
 ) -> InertiaRun {
     *model.log.borrow_mut() = Log::default();
-    let start = start_transition(model, t0, &y0);
     let mut w = Watch {
         md: model,
         acc: [0.0; 4],
@@ -136,40 +177,24 @@ pub fn simulate_inertia(
         next_t: t0,
         trace: Vec::new(),
         switches: 0,
+        mode_time_s: [0.0; 4],
+        penetration_m: 0.0,
+        force_ratio: 0.0,
     };
     let opts = Options {
         record_events: false,
         ..*opts
     };
-    let (outcome, t_end_s, y_end, rhs) = match start {
-        Transition::To { mode, state } => {
-            // the start's own reset (an impact without collision) is booked like an event's
-            w.acc = [
-                state[W_PLATE],
-                state[D_FRIC],
-                state[D_DAMP],
-                state[D_IMPACT],
-            ];
-            let mut s = state;
-            s[W_PLATE..=D_IMPACT].fill(0.0);
-            let run = simulate(model, mode, t0, s, t_end, &opts, &mut w);
-            (
-                driver_outcome(run.outcome),
-                run.t_end_s,
-                model.canonical(run.mode_end, run.t_end_s, &run.y_end),
-                run.stats.rhs_evals,
-            )
-        }
-        Transition::Stop(x) => (stop_outcome(x), t0, y0, 0),
-    };
+    let mut bridges = Vec::new();
+    let (outcome, t_end_s, y_end, rhs) =
+        run_pieces(model, t0, &y0, t_end, &opts, &mut w, &mut bridges);
     let mut y1 = y_end;
-    for k in 0..4 {
-        y1[W_PLATE + k] += w.acc[k];
-    }
+    y1[W_PLATE..=D_IMPACT].copy_from_slice(&w.acc);
     let budget = budget(model, &y0, &y1);
     let log = model.log.borrow().clone();
     let dur = t_end_s - t0;
-    InertiaRun {
+    let b = &model.p.base;
+    let mut run = InertiaRun {
         outcome,
         end_time_s: t_end_s,
         mean_velocity_mps: if dur > 0.0 {
@@ -177,15 +202,115 @@ pub fn simulate_inertia(
         } else {
             0.0
         },
-        mode_time_s: [0.0; 4],
+        mode_time_s: w.mode_time_s,
         switches: w.switches,
         painleve: log.painleve,
         impacts: log.impacts,
         impact_count: log.impact_count,
         max_impact_energy_gain_j: log.max_energy_gain_j,
         budget,
+        max_penetration_m: w.penetration_m.max(0.0),
+        penetration_bound_m: run_rtol(&opts) * (b.length_m + b.plate.amplitude_m), // formula: rtol (L + delta)
+        max_complementarity_ratio: log.max_residual_ratio.max(w.force_ratio),
+        max_normal_residual_mps: log.max_normal_residual_mps,
+        bridges,
         rhs_evals: rhs,
         trace: w.trace,
+    };
+    certify_run(&mut run);
+    run
+}
+
+/// The run's relative tolerance (the step for a fixed-step run: none then, `1e-10`).
+fn run_rtol(opts: &Options) -> f64 {
+    match opts.control {
+        crate::numerics::ode::StepControl::Adaptive { rtol, .. } => rtol,
+        crate::numerics::ode::StepControl::Fixed { .. } => 1e-10,
+    }
+}
+
+/// A run that reached its end is `completed` only if its contact held within the bounds
+/// of its own tolerances: penetration at most `rtol (L + delta)`, every complementarity
+/// residual at most its rounding threshold, a finite state.
+fn certify_run(run: &mut InertiaRun) {
+    if run.outcome != InertiaOutcome::Completed {
+        return;
+    }
+    let why = if !run.mean_velocity_mps.is_finite() {
+        Some("the state is not finite".to_string())
+    } else if run.max_penetration_m > run.penetration_bound_m {
+        Some(format!(
+            "C went {:.3e} m into the plate, past the bound rtol (L + delta) = {:.3e} m",
+            run.max_penetration_m, run.penetration_bound_m
+        ))
+    } else if run.max_complementarity_ratio > 1.0 {
+        Some(format!(
+            "a complementarity residual reached {:.3e} of its rounding threshold (at most 1)",
+            run.max_complementarity_ratio
+        ))
+    } else {
+        None
+    };
+    if let Some(w) = why {
+        run.outcome = InertiaOutcome::Invalid(w);
+    }
+}
+
+/// Result of the driver's pieces: (outcome, end time, end state, rhs evaluations).
+type Pieces = (InertiaOutcome, f64, State, u64);
+
+/// The run as pieces of the event-driven driver, joined by Moreau-Jean bridges
+/// ([`super::bridge`]) where the rules stop on a Painleve case they cannot resolve or
+/// find no consistent contact mode. Accumulators are summed into `w.acc`.
+fn run_pieces(
+    model: &InertiaModel,
+    t0: f64,
+    y0: &State,
+    t_end: f64,
+    opts: &Options,
+    w: &mut Watch<'_>,
+    bridges: &mut Vec<super::bridge::Bridge>,
+) -> Pieces {
+    let mut start = start_transition(model, t0, y0);
+    let (mut t, mut rhs, mut y_cur) = (t0, 0u64, *y0);
+    loop {
+        let (mode, state) = match start {
+            Transition::To { mode, state } => (mode, state),
+            Transition::Stop(x) => return (stop_outcome(x), t, y_cur, rhs),
+        };
+        // a piece's own start reset (an impact without collision) is booked like an event's
+        for k in 0..4 {
+            w.acc[k] += state[W_PLATE + k];
+        }
+        let mut s = state;
+        s[W_PLATE..=D_IMPACT].fill(0.0);
+        let run = simulate(model, mode, t, s, t_end, opts, w);
+        rhs += run.stats.rhs_evals;
+        for k in 0..4 {
+            w.acc[k] += run.y_end[W_PLATE + k];
+        }
+        let y_end = model.canonical(run.mode_end, run.t_end_s, &run.y_end);
+        t = run.t_end_s;
+        let bridgeable = matches!(
+            &run.outcome,
+            Outcome::Stopped(InertiaStop::PainleveUnresolved(_))
+                | Outcome::Stopped(InertiaStop::NoMode(_))
+        );
+        if !bridgeable || bridges.len() >= super::bridge::MAX_BRIDGES {
+            return (driver_outcome(run.outcome), t, y_end, rhs);
+        }
+        match super::bridge::bridge(model, t, &y_end, t_end) {
+            Ok((b, next)) => {
+                for k in 0..4 {
+                    w.acc[k] += b.acc[k];
+                }
+                t = b.t1_s;
+                y_cur = b.y1;
+                bridges.push(b);
+                start = next;
+            }
+            Err(why) => return (InertiaOutcome::Invalid(why), t, y_end, rhs),
+        }
     }
 }
 
@@ -213,7 +338,7 @@ fn stop_outcome(x: InertiaStop) -> InertiaOutcome {
     match x {
         InertiaStop::Fell => InertiaOutcome::Fell,
         InertiaStop::PainleveUnresolved(_) => InertiaOutcome::PainleveUnresolved,
-        InertiaStop::Invalid(r) => InertiaOutcome::Invalid(r),
+        InertiaStop::Invalid(r) | InertiaStop::NoMode(r) => InertiaOutcome::Invalid(r),
     }
 }
 

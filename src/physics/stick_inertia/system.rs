@@ -149,7 +149,9 @@ impl InertiaModel {
     pub fn select_contact(&self, t: f64, y: &State, allow_pivot: bool, depth: usize) -> Next {
         let mu = self.p.base.mu;
         let e = self.pivot_eval(t, y);
-        if allow_pivot && e.fz >= 0.0 && e.fx.abs() <= mu * e.fz {
+        let eta_f = self.force_rounding(y);
+        // inside the cone up to the force's rounding (see super::rounding)
+        if allow_pivot && e.fz >= -eta_f && e.fx.abs() <= mu * e.fz + eta_f {
             return Transition::To {
                 mode: Mode::Pivot,
                 state: *y,
@@ -180,7 +182,7 @@ impl InertiaModel {
                 return next;
             }
         }
-        Transition::Stop(InertiaStop::Invalid(format!(
+        Transition::Stop(InertiaStop::NoMode(format!(
             "no consistent contact mode at t = {t:.6} s (theta = {:.4} rad, pivot F = ({:.3e}, {:.3e}) N)",
             y[TH], e.fx, e.fz
         )))
@@ -196,7 +198,8 @@ impl InertiaModel {
             "{} inconsistent",
             mode.name()
         )));
-        if e.d <= 0.0 || e.fz < 0.0 || !e.fz.is_finite() {
+        // D zero to rounding is no slide: its normal force would be rounding divided by it
+        if e.d <= self.coefficient_rounding(y[TH]) || e.fz < 0.0 || !e.fz.is_finite() {
             return no;
         }
         let h = 1e-6 * self.period_s;
@@ -215,13 +218,20 @@ impl InertiaModel {
     /// problem has one solution with `F_z >= 0`; lift-off if that solution is tensile;
     /// the Painleve rules otherwise.
     pub fn enter_slide(&self, t: f64, y: &State, depth: usize) -> Next {
+        // a slip below the rounding of C's velocity is no slip: C is stuck (a 1e-13 m/s
+        // remainder of a sticking impact is not a slide, let alone a Painleve case)
+        if y[VXC].abs() <= self.velocity_rounding([y[VXC], 0.0]) {
+            let mut y = *y;
+            y[VXC] = 0.0;
+            return self.select_contact(t, &y, true, depth);
+        }
         let mode = if y[VXC] < 0.0 {
             Mode::SlideLeft
         } else {
             Mode::SlideRight
         };
         let e = self.slide_eval(mode.sigma(), t, y);
-        if e.d > 0.0 {
+        if e.d > self.coefficient_rounding(y[TH]) {
             if e.fz >= 0.0 {
                 return Transition::To { mode, state: *y };
             }
@@ -250,10 +260,18 @@ impl InertiaModel {
         if depth > 4 {
             return Transition::Stop(InertiaStop::PainleveUnresolved(ev));
         }
+        if n.is_none() && self.painleve_rule == super::PainleveRule::PreferSeparation {
+            // the comparison rule: the zero-impulse solution, as a time-stepper that
+            // prefers separation picks it where its step's contact problem has two
+            return Transition::To {
+                mode: Mode::Flight,
+                state: *y,
+            };
+        }
         match case {
             PainleveCase::Indeterminate => self.takeoff(t, y),
             PainleveCase::Inconsistent => match self.impact(t, y, false) {
-                Some(a) => self.after_impact(t, &a, depth + 1),
+                Some(a) => self.after_impact(t, y, &a, depth + 1),
                 None => Transition::Stop(InertiaStop::PainleveUnresolved(ev)),
             },
         }
@@ -280,29 +298,43 @@ impl InertiaModel {
     /// Landing: the impact, then the mode its outcome selects.
     pub fn landing(&self, t: f64, y: &State) -> Next {
         match self.impact(t, y, true) {
-            Some(a) => self.after_impact(t, &a, 0),
+            Some(a) => self.after_impact(t, y, &a, 0),
             None => Transition::Stop(InertiaStop::Invalid(format!(
                 "the landing impact at t = {t:.6} s has no finite impulse"
             ))),
         }
     }
 
-    fn after_impact(&self, t: f64, a: &State, depth: usize) -> Next {
+    /// The mode after an impact from `y` to `a`: a bounce (flight) only when C leaves
+    /// the plate faster than the rounding of its velocity, `eta_v = C u (1 + alpha) V`
+    /// ([`super::rounding`]); otherwise C is on the plate (its normal velocity, a
+    /// rounding remainder, is set to the plate's and logged as the impact's
+    /// complementarity residual), stuck if its slip is below `eta_v` too.
+    fn after_impact(&self, t: f64, y: &State, a: &State, depth: usize) -> Next {
         let (_, vs, _) = self.plate(t);
+        let u0 = self.relative_velocity(t, y);
+        let eta = self.velocity_rounding(u0);
         let un = a[VZC] - vs;
-        let scale = self
-            .p
-            .base
-            .plate
-            .peak_velocity_mps()
-            .max((self.p.base.g_mps2 * self.p.base.length_m).sqrt());
-        if un > 1e-9 * scale {
+        let plastic = self.p.restitution == 0.0;
+        let bounce = un > eta;
+        {
+            // complementarity after the impact, relative to eta: a plastic impact ends
+            // with u_n = 0; a contact decision discards u_n
+            let mut log = self.log.borrow_mut();
+            let r = if bounce && !plastic { 0.0 } else { un.abs() };
+            log.max_normal_residual_mps = log.max_normal_residual_mps.max(r);
+            log.max_residual_ratio = log.max_residual_ratio.max(r / eta); // formula: |u_n+| / eta_v
+        }
+        if bounce {
             return Transition::To {
                 mode: Mode::Flight,
                 state: *a,
             };
         }
-        let a = self.canonical(Mode::Pivot, t, a);
+        let mut a = self.canonical(Mode::Pivot, t, a);
+        if a[VXC].abs() <= eta {
+            a[VXC] = 0.0;
+        }
         if a[VXC] == 0.0 {
             self.select_contact(t, &a, true, depth)
         } else {
