@@ -71,6 +71,10 @@ pub struct Violations {
     pub slip_mps: f64,
     /// Largest `-h_c` in flight (m).
     pub penetration_m: f64,
+    /// Largest `-h_c` in flight over its rounding budget at that state
+    /// ([`StickModel::penetration_budget_m`]); at most 1 when the event location and the
+    /// flight's arithmetic work as derived.
+    pub penetration_budget_ratio: f64,
     /// Largest `|xdot_c|` in pivot (m/s).
     pub pivot_slip_mps: f64,
     /// Accepted steps checked.
@@ -234,7 +238,12 @@ impl Watch<'_> {
         let v = &mut self.sum.violations;
         v.checked += 1;
         match m.contact_eval(mode, t, y) {
-            None => v.penetration_m = v.penetration_m.max(-m.h_c(t, y)),
+            None => {
+                let pen = -m.h_c(t, y);
+                v.penetration_m = v.penetration_m.max(pen);
+                let ratio = pen / m.penetration_budget_m(t, y);
+                v.penetration_budget_ratio = v.penetration_budget_ratio.max(ratio);
+            }
             Some(e) => {
                 v.normal_n = v.normal_n.max(-e.fz);
                 if mode == Mode::Pivot {

@@ -1,0 +1,159 @@
+//! Claims on what sections 4 and 5 leave out or leave ambiguous, found by reading them
+//! sentence by sentence beside the authors' code (toshankarghosh/toothpicks): the
+//! landing test that a lift-off satisfies at once, the slip condition's sign, the ABORT
+//! at a slip stop, and the slides' self-locking edge.
+
+use super::evidence::{cone_exterior, cone_interior, state_at, Ctx};
+use super::statements::Statements;
+use crate::physics::stick::rules::Next;
+use crate::physics::stick::run::initial_state;
+use crate::physics::stick::{Mode, StickModel, StickParams, OM, VXC};
+use crate::report::{Check, Claim};
+use serde_json::json;
+
+/// The claims of this file.
+pub fn all(d: &Statements, c: &Ctx) -> Vec<Claim> {
+    vec![
+        landing_at_once(d, c),
+        exceeds_friction(d),
+        slip_stop_abort(d, c),
+        self_locking_edge(d, c),
+    ]
+}
+
+/// Alg. 1 to 4 set `z_c <- z_s` at a lift-off and Alg. 2 lands when `z_c - z_s = 0`.
+fn landing_at_once(d: &Statements, c: &Ctx) -> Claim {
+    let (mut n, mut at_once, mut later) = (0usize, 0usize, 0usize);
+    for (run, q) in c.runs() {
+        let m = StickModel::new(*q);
+        for (i, &(t0, from, to)) in run.events.iter().enumerate() {
+            if from == Mode::Flight || to != Some(Mode::Flight) {
+                continue;
+            }
+            let Some(y) = state_at(run, t0, from) else {
+                continue;
+            };
+            let Next::To(_, a) = m.takeoff(t0, &y) else {
+                continue;
+            };
+            let Some(t1) = run.events[i + 1..]
+                .iter()
+                .find(|e| e.1 == Mode::Flight)
+                .map(|e| e.0)
+            else {
+                continue; // the run ended in this flight
+            };
+            // the printed lift-off's z_c <- z_s leaves h_c = 0 exactly (the workbook's
+            // takeoff does the same); the printed landing test is the equality h_c = 0
+            let h0 = m.h_c(t0, &a);
+            n += 1;
+            at_once += usize::from(d.landing_equality && h0 == 0.0);
+            later += usize::from(t1 > t0);
+        }
+    }
+    Claim::draft(Check::LiteralExecution, "a2-landing-at-once", "Alg. 1-4, Alg. 2", &format!("As printed: every lift-off sets z_c <- z_s (Alg. 1, 2, 3, 4), and Algorithm 2 lands when z_c - z_s = 0. Read literally, the landing test holds at the first instant of every flight, which then ends at once. Correct: a landing is a falling zero of h_c = z_c - z_s after the flight has begun; the authors' code says so with an offset (fsm.m: yc = ys + delta_h, delta_h = 1e-9 'to ensure that the event function for flight does not start with a negative value'; Event_Flight.m: hc = y1 - ys + 1e-9, direction -1); the workbook counts a guard that starts at 0 as above the plate. Flights of both scenes (lift-off to landing, {n}; each lasted a positive time: {later}) at whose lift-off state the printed landing test holds."))
+        .values(json!(0), json!(at_once), "exact")
+        .printed_or_corrected(n > 0 && at_once == 0, n > 0 && later == n)
+}
+
+/// Section 4.3: the pivot slips when "F_x exceeds the frictional force".
+fn exceeds_friction(d: &Statements) -> Claim {
+    let slips = |s: &(f64, f64, f64), abs: bool| {
+        let (mu, fx, fz) = *s;
+        if abs {
+            fx.abs() > mu * fz // formula: |F_x| > mu F_z
+        } else {
+            fx > mu * fz // formula: F_x > mu F_z, as printed
+        }
+    };
+    let (out, inn) = (cone_exterior(), cone_interior());
+    let frac = |abs: bool| out.iter().filter(|s| slips(s, abs)).count() as f64 / out.len() as f64;
+    let none_inside = |abs: bool| !inn.iter().any(|s| slips(s, abs));
+    let stated = frac(d.s43_exceeds_abs);
+    Claim::draft(Check::ClosedForm, "s43-exceeds-friction", "4.3", "As printed: \"In the horizontal forces Fx in the hinge mode exceeds the frictional force, the bottom of the stick looses its frictional grip and begins to slide\": F_x > μ F_z, a signed comparison. Correct: |F_x| > μ F_z; a reaction below the cone (F_x < -μ F_z) slips too (to the right; Table 1's Pivot row, |F_x| <= μ F_z, and the authors' Event_Hinge.m, μ F_y - F_x and μ F_y + F_x, have both edges). Closed form over forces outside the cone (F_z = 1 N, F_x = s μ F_z, |s| = 1.05 to 1.5, both signs, μ = 0.1 to 2): fraction at which the stated condition says the pivot slips (must be 1, and 0 inside the cone).")
+        .values(json!(1.0), json!(stated), "exact")
+        .printed_or_corrected(stated == 1.0 && none_inside(d.s43_exceeds_abs), frac(true) == 1.0 && none_inside(true))
+}
+
+/// States at rest on the plate over a grid (theta, theta', plate phase) for both scenes.
+fn rest_states(c: &Ctx) -> Vec<(StickModel, f64, crate::physics::stick::State)> {
+    let mut v = Vec::new();
+    for q in &c.ev.params {
+        let m = StickModel::new(*q);
+        let w_scale = (q.g_mps2 / q.length_m).sqrt();
+        for i in -12..=12 {
+            let th = 0.1 * f64::from(i); // rad, -1.2 .. 1.2
+            if th == 0.0 {
+                continue; // the slides are singular at the vertical (C.14)
+            }
+            for j in -4..=4 {
+                for k in 0..16 {
+                    let t = m.period_s * f64::from(k) / 16.0;
+                    let mut y = initial_state(&m, t, th);
+                    y[OM] = 0.5 * w_scale * f64::from(j);
+                    v.push((m, t, y));
+                }
+            }
+        }
+    }
+    v
+}
+
+/// Alg. 3 and 4 at a slip stop: HINGE if the hinge reaction is inside the cone, else
+/// the other slide if its F_z > 0, else ABORT.
+fn slip_stop_abort(d: &Statements, c: &Ctx) -> Claim {
+    let (mut stops, mut aborts, mut could_go_on, mut to_flight) = (0usize, 0usize, 0usize, 0usize);
+    for (m, t, y) in rest_states(c) {
+        for mode in [Mode::SlideLeft, Mode::SlideRight] {
+            let sigma = mode.sigma();
+            let e = m.slide_eval(sigma, t, &y);
+            // a slip stop of `mode`: its normal force compressive and its slip
+            // decelerating to zero (sigma x_c'' > 0: slide left has x_c' < 0)
+            if !(e.fz >= 0.0 && sigma * e.xc_dd > 0.0 && y[VXC] == 0.0) {
+                continue;
+            }
+            stops += 1;
+            let h = m.pivot_eval(t, &y);
+            let other = m.slide_eval(-sigma, t, &y);
+            if m.p.mu * h.fz >= h.fx.abs() || other.fz > 0.0 {
+                continue; // HINGE or the other slide: Alg. 3, 4 do not abort
+            }
+            aborts += 1;
+            if let Next::To(next, _) = m.select_contact(t, &y) {
+                could_go_on += 1;
+                to_flight += usize::from(next == Mode::Flight);
+            }
+        }
+    }
+    let printed_holds = if d.slip_stop_abort {
+        could_go_on == 0
+    } else {
+        true
+    };
+    Claim::draft(Check::ClosedForm, "a34-slip-stop-abort", "Alg. 3, 4", &format!("As printed (and in the authors' fsm.m, case STUCK): at a slip stop, HINGE if μ F_z >= |F_x|, else the other slide if its F_z > 0, else ABORT. The ABORT is right only where no mode of Table 1 is consistent. Closed form over states at rest on the plate (θ = ±0.1 to ±1.2 rad, θ' = 0 to ±2 sqrt(g/L), 16 plate phases, both scenes) that are slip stops of a slide (its F_z >= 0, the slip decelerating): {stops} slip stops, {aborts} of them reach the ABORT line. Of these, the states at which a mode is consistent (the contact conditions: a slide from rest with F_z >= 0 slipping its own way, or a flight that lifts C), where ABORT stops a run that can go on ({to_flight} of them by a flight)."))
+        .values(json!(0), json!(could_go_on), "exact")
+        .printed_or_corrected(aborts > 0 && printed_holds, aborts > 0)
+}
+
+/// C.9 (C.11) at the slides' self-locking edge `tan(theta) = sigma mu`.
+fn self_locking_edge(d: &Statements, c: &Ctx) -> Claim {
+    // F_z = Q / (L (sin - sigma mu cos)) at |tan theta| = mu (1 - delta) from inside the
+    // slide's range, theta' = 0: a pole grows as 1/delta, a bounded force not at all
+    let mut growth = 0.0f64;
+    for q in &c.ev.params {
+        let p: StickParams = *q;
+        let m = StickModel::new(p);
+        let fz_at = |delta: f64| {
+            let th = (p.mu * (1.0 + delta)).atan(); // slide left runs with tan > mu
+            let mut y = initial_state(&m, 0.0, th);
+            y[OM] = 0.0;
+            m.slide_eval(1.0, 0.0, &y).fz.abs()
+        };
+        growth = growth.max(fz_at(1e-6) / fz_at(1e-3));
+    }
+    // a pole of order one: ratio 1e3 (1/delta) up to O(delta) terms; bounded: ~1
+    let unbounded = growth > 100.0;
+    Claim::draft(Check::ClosedForm, "c9-self-locking-edge", "4.3, 5", &format!("As printed: a slide runs until an inequality of Table 1 is violated, and Algorithms 3 and 4 handle a slip stop, F_z reaching 0 and a fall. C.9's denominator L(sin θ - μ cos θ) (C.11's for the right slide) vanishes at tan θ = σ μ, inside the range θ in (-π/2, π/2) the document allows: there the slide's normal force grows without bound (the rod along the edge of the friction cone cannot slide), and no printed rule applies. Correct: the slide jams; the workbook stops the slip by an impulse along the rod on the cone's edge, then applies the reaction test. |F_z| at tan θ = μ (1 + 1e-6) over |F_z| at μ (1 + 1e-3), θ' = 0, both scenes (a bounded force: about 1; a pole: 1e3): {growth:.0}."))
+        .values(json!("bounded"), json!(growth), "ratio <= 100: bounded")
+        .printed_or_corrected(d.edge_rule_printed || !unbounded, unbounded)
+}
