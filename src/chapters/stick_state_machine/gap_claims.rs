@@ -17,6 +17,7 @@ pub fn all(d: &Statements, c: &Ctx) -> Vec<Claim> {
         landing_at_once(d, c),
         exceeds_friction(d),
         slip_stop_abort(d, c),
+        caption_one_mode(d, c),
         self_locking_edge(d, c),
     ]
 }
@@ -156,4 +157,33 @@ fn self_locking_edge(d: &Statements, c: &Ctx) -> Claim {
     Claim::draft(Check::ClosedForm, "c9-self-locking-edge", "4.3, 5", &format!("As printed: a slide runs until an inequality of Table 1 is violated, and Algorithms 3 and 4 handle a slip stop, F_z reaching 0 and a fall. C.9's denominator L(sin θ - μ cos θ) (C.11's for the right slide) vanishes at tan θ = σ μ, inside the range θ in (-π/2, π/2) the document allows: there the slide's normal force grows without bound (the rod along the edge of the friction cone cannot slide), and no printed rule applies. Correct: the slide jams; the workbook stops the slip by an impulse along the rod on the cone's edge, then applies the reaction test. |F_z| at tan θ = μ (1 + 1e-6) over |F_z| at μ (1 + 1e-3), θ' = 0, both scenes (a bounded force: about 1; a pole: 1e3): {growth:.0}."))
         .values(json!("bounded"), json!(growth), "ratio <= 100: bounded")
         .printed_or_corrected(d.edge_rule_printed || !unbounded, unbounded)
+}
+
+/// Table 1's caption: "The new state is (the) one in which the inequalities are
+/// satisfied for the present values of the state variables".
+fn caption_one_mode(d: &Statements, c: &Ctx) -> Claim {
+    let (mut n, mut no_row, mut several, mut none) = (0usize, 0usize, 0usize, 0usize);
+    for (m, t, y) in rest_states(c) {
+        let h = m.pivot_eval(t, &y);
+        n += 1;
+        // at the present values (h_c = 0, v_x = 0) only the Pivot row can hold: the
+        // slides need v_x != 0 and the flight h_c > 0
+        if h.fz >= 0.0 && h.fx.abs() <= m.p.mu * h.fz {
+            continue;
+        }
+        no_row += 1;
+        // the modes whose inequalities hold a moment later (the slip's and the foot's
+        // accelerations: `try_slide`, `takeoff`)
+        let slides = [Mode::SlideLeft, Mode::SlideRight]
+            .into_iter()
+            .filter(|&s| matches!(m.try_slide(s, t, &y), Next::To(..)))
+            .count();
+        let k = slides + usize::from(matches!(m.takeoff(t, &y), Next::To(..)));
+        several += usize::from(k > 1);
+        none += usize::from(k == 0);
+    }
+    let printed = if d.caption_present_values { no_row == 0 } else { true };
+    Claim::draft(Check::ClosedForm, "t1-caption-one-mode", "Table 1", &format!("As printed (Table 1's caption): \"If an inequality is violated, the state transitions to another state. The new state is (the) one in which the inequalities are satisfied for the present values of the state variables.\" At a pivot exit C is on the plate and at rest (h_c = 0, v_x = 0): of Table 1's rows only the Pivot row can hold for these values (the slides need v_x < 0 or > 0, the flight h_c > 0), and it has just been violated. Closed form over states at rest on the plate (θ = ±0.1 to ±1.2 rad, θ' = 0 to ±2 sqrt(g/L), 16 plate phases, both scenes; {n} states): the states whose pivot reaction leaves the cone or turns tensile, where no row holds at the present values. Correct: the next mode is the one whose inequalities hold a moment later (the slip's and the foot's accelerations), and where several do (at {several} of these states) a priority is needed: the workbook takes the slide the reaction drives, then the flight, then the other slide (none holds at {none})."))
+        .values(json!(0), json!(no_row), "exact")
+        .printed_or_corrected(n > 0 && printed, n > 0 && no_row > 0 && none == 0)
 }

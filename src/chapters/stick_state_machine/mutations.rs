@@ -73,6 +73,7 @@ pub const NO_PRINTED_NUMBER: &[(&str, &str)] = &[
     ("a2-landing-at-once", "an equality with 0, z_c - z_s = 0 (10 % of 0 is 0; flipped: a falling zero after the start)"),
     ("a2-theta-reset-missing", "a missing line, theta <- theta_0 (flipped: the line added)"),
     ("t1-flight-row", "the place of two zeros in a table row (flipped: under F_z and F_x)"),
+    ("t1-caption-one-mode", "a phrase, 'for the present values' (flipped: a moment later)"),
     ("a34-slip-stop-abort", "a mode name, ABORT (flipped: the first consistent mode)"),
     ("c9-self-locking-edge", "a missing rule (flipped: a rule printed)"),
     ("a2-dead-branch", "a test of a value just set to 0 (flipped: the branch removed)"),
@@ -424,6 +425,11 @@ fn slide_algorithm_edits() -> Vec<DocEdit<Statements>> {
             |d| d.slide_hinge_while_slipping = false,
         ),
         m("a3-abort", "F_z <= 0 -> FLIGHT", |d| d.slide_abort = false),
+        m(
+            "t1-caption-one-mode",
+            "the caption judges the inequalities a moment later (accelerations)",
+            |d| d.caption_present_values = false,
+        ),
         m(
             "a34-slip-stop-abort",
             "ABORT at a slip stop -> the first consistent mode",

@@ -134,6 +134,9 @@ pub struct Statements {
     /// Section 4.3: the pivot slips when "F_x exceeds the frictional force", `F_x > mu
     /// F_z` signed (`false`, as printed) or `|F_x| > mu F_z`.
     pub s43_exceeds_abs: bool,
+    /// Table 1's caption: the new state is the one whose inequalities hold "for the
+    /// present values of the state variables" (true, as printed) or a moment later.
+    pub caption_present_values: bool,
     /// Alg. 3, 4: at a slip stop where neither the hinge nor the other slide holds,
     /// ABORT (true, as printed) or the first consistent mode (flight if it lifts C).
     pub slip_stop_abort: bool,
@@ -209,6 +212,7 @@ pub const PRINTED: Statements = Statements {
     a2_resets_theta: false,
     t1_flight_vx_zero: true,
     s43_exceeds_abs: false,
+    caption_present_values: true,
     slip_stop_abort: true,
     edge_rule_printed: false,
     sequence_rtols: [1e-10, 1e-8],
