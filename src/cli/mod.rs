@@ -211,7 +211,7 @@ where
         cli.figures = PathBuf::from(EXPLORE_FIGURES);
     }
     match refuse_unused(&cli, &given)
-        .and_then(|()| dispatch(&cli, out))
+        .and_then(|()| dispatch(&cli, out, err))
         .and_then(|code| out.flush().map(|()| code).map_err(Into::into))
     {
         Ok(code) => {
@@ -362,7 +362,7 @@ fn checked(report: &ChapterReport) -> error::Result<&ChapterReport> {
     }
 }
 
-fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
+fn dispatch(cli: &Cli, out: &mut dyn Write, err: &mut dyn Write) -> error::Result<i32> {
     let ctx = cli.context()?;
     if let (true, Some(root)) = (computes(&cli.command), &ctx.figures_root) {
         check_figures(root)?;
@@ -375,6 +375,9 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
         Command::Chapter(c) => c.chapter.chapter.run(&c.matches, &ctx)?,
     };
     let report = checked(&report)?;
+    for note in &report.notes {
+        let _ = writeln!(err, "note: {note}");
+    }
     if cli.json {
         writeln!(out, "{}", report.to_json())?;
     } else {

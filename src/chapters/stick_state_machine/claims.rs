@@ -10,7 +10,7 @@ use super::evidence::{flight_error, pendulum_error, Ctx, Evidence, PENDULUM_EPS}
 use super::statements::{Statements, PRINTED};
 use super::{collision_claims, gap_claims, lagrange, rule_claims, table1_claims};
 use crate::physics::stick::run::{RunSummary, StickOutcome};
-use crate::physics::stick::{Mode, StickModel, StickParams, OM, TH};
+use crate::physics::stick::{InvalidReason, Mode, StickModel, StickParams, OM, TH};
 use crate::report::{ChapterReport, Check, Claim};
 use serde_json::json;
 
@@ -272,7 +272,12 @@ fn collision_section(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let both = [&ev.authors, &ev.jamming, c.main];
     let sing = both
         .iter()
-        .filter(|s| matches!(&s.outcome, StickOutcome::Invalid(w) if w.contains("C.14")))
+        .filter(|s| {
+            matches!(
+                &s.outcome,
+                StickOutcome::Invalid(InvalidReason::SingularSlide { .. })
+            )
+        })
         .count();
     v.push(Claim::draft(Check::Consistency, "c14-singular-at-vertical", "C.14", "C.14 divides by sin(θ): the slides are undefined with the rod vertical. The workbook stops such a run as invalid (reason given); none of the scenes' runs reaches it.").values(0, sing as u64, "exact").confirmed_if(sing == 0));
     v.extend(collision_claims::c15_claims(d, c));

@@ -182,7 +182,11 @@ fn caption_one_mode(d: &Statements, c: &Ctx) -> Claim {
         several += usize::from(k > 1);
         none += usize::from(k == 0);
     }
-    let printed = if d.caption_present_values { no_row == 0 } else { true };
+    let printed = if d.caption_present_values {
+        no_row == 0
+    } else {
+        true
+    };
     Claim::draft(Check::ClosedForm, "t1-caption-one-mode", "Table 1", &format!("As printed (Table 1's caption): \"If an inequality is violated, the state transitions to another state. The new state is (the) one in which the inequalities are satisfied for the present values of the state variables.\" At a pivot exit C is on the plate and at rest (h_c = 0, v_x = 0): of Table 1's rows only the Pivot row can hold for these values (the slides need v_x < 0 or > 0, the flight h_c > 0), and it has just been violated. Closed form over states at rest on the plate (θ = ±0.1 to ±1.2 rad, θ' = 0 to ±2 sqrt(g/L), 16 plate phases, both scenes; {n} states): the states whose pivot reaction leaves the cone or turns tensile, where no row holds at the present values. Correct: the next mode is the one whose inequalities hold a moment later (the slip's and the foot's accelerations), and where several do (at {several} of these states) a priority is needed: the workbook takes the slide the reaction drives, then the flight, then the other slide (none holds at {none})."))
         .values(json!(0), json!(no_row), "exact")
         .printed_or_corrected(n > 0 && printed, n > 0 && no_row > 0 && none == 0)

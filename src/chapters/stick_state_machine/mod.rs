@@ -414,7 +414,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     let mut main_opts = opts; // the evidence runs keep the chosen method
     if let Some(o) = main_run::dopri5_fallback(&physical, &opts) {
         let why = format!("DOP853 produced a non-finite state ({}); the run was repeated with DOPRI5 at the same tolerance (near the vertical the slides' C.14 divides by sin(θ) and the order-8 stages overflow)", physical.outcome.label());
-        eprintln!("note: {why}");
+        r.note(why.clone());
         r.result("contact_method_fallback", why);
         (physical, main, fired) = main_run::run_main(args, &p, dur, &o, rec);
         main_opts = o;

@@ -1,10 +1,12 @@
 //! One run of the stick through the hybrid driver, and its summary.
 
 use super::energy::Budget;
-use super::{Mode, State, StickModel, StickStop, NSTATE, OM, TH, VXC, VZC, W_PLATE, XC, ZC};
+use super::{
+    InvalidReason, Mode, State, StickModel, StickStop, NSTATE, OM, TH, VXC, VZC, W_PLATE, XC, ZC,
+};
 use crate::numerics::events::CertifyStats;
 use crate::numerics::hybrid::{simulate, HybridSystem, Observer, Options, Outcome, Segment};
-use crate::numerics::ode::Stats;
+use crate::numerics::ode::{OdeError, Stats};
 
 /// The typed outcome of a run.
 #[derive(Debug, Clone, PartialEq)]
@@ -16,7 +18,7 @@ pub enum StickOutcome {
     /// Events accumulated (Zeno).
     Zeno,
     /// The state left the model's validity (the reason).
-    Invalid(String),
+    Invalid(InvalidReason),
     /// A printed rule (Algorithms 1 to 4) chose ABORT (the rule that fired).
     Aborted(String),
 }
@@ -453,7 +455,13 @@ pub fn simulate_system<S: HybridSystem<NSTATE, Mode = Mode, Stop = StickStop>>(
         Outcome::Completed => StickOutcome::Completed,
         Outcome::Stopped(x) => StickOutcome::from_stop(x),
         Outcome::Zeno { .. } => StickOutcome::Zeno,
-        Outcome::Failed(e) => StickOutcome::Invalid(format!("integration failed: {e}")),
+        Outcome::Failed(OdeError::NonFinite { t_s }) => {
+            StickOutcome::Invalid(InvalidReason::NonFinite {
+                t_s,
+                near_vertical: false,
+            })
+        }
+        Outcome::Failed(e) => StickOutcome::Invalid(format!("integration failed: {e}").into()),
     };
     s.end_time_s = run.t_end_s;
     for (m, dt) in &run.mode_time_s {
