@@ -3,11 +3,9 @@
 //! landing test that a lift-off satisfies at once, the slip condition's sign, the ABORT
 //! at a slip stop, and the slides' self-locking edge.
 
-use super::evidence::{cone_exterior, cone_interior, state_at, Ctx};
+use super::evidence::{cone_exterior, cone_interior, Ctx};
 use super::statements::Statements;
-use crate::physics::stick::rules::Next;
-use crate::physics::stick::run::initial_state;
-use crate::physics::stick::{Mode, StickModel, StickParams, OM, VXC};
+use crate::physics::stick::Mode;
 use crate::report::{Check, Claim};
 use serde_json::json;
 
@@ -24,34 +22,18 @@ pub fn all(d: &Statements, c: &Ctx) -> Vec<Claim> {
 
 /// Alg. 1 to 4 set `z_c <- z_s` at a lift-off and Alg. 2 lands when `z_c - z_s = 0`.
 fn landing_at_once(d: &Statements, c: &Ctx) -> Claim {
-    let (mut n, mut at_once, mut later) = (0usize, 0usize, 0usize);
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
-        for (i, &(t0, from, to)) in run.events.iter().enumerate() {
-            if from == Mode::Flight || to != Some(Mode::Flight) {
-                continue;
-            }
-            let Some(y) = state_at(run, t0, from) else {
-                continue;
-            };
-            let Next::To(_, a) = m.takeoff(t0, &y) else {
-                continue;
-            };
-            let Some(t1) = run.events[i + 1..]
-                .iter()
-                .find(|e| e.1 == Mode::Flight)
-                .map(|e| e.0)
-            else {
-                continue; // the run ended in this flight
-            };
-            // the printed lift-off's z_c <- z_s leaves h_c = 0 exactly (the workbook's
-            // takeoff does the same); the printed landing test is the equality h_c = 0
-            let h0 = m.h_c(t0, &a);
-            n += 1;
-            at_once += usize::from(d.landing_equality && h0 == 0.0);
-            later += usize::from(t1 > t0);
-        }
-    }
+    // the printed lift-off's z_c <- z_s leaves h_c = 0 exactly (the workbook's takeoff
+    // does the same); the printed landing test is the equality h_c = 0
+    let lifts = &c.ev.liftoffs;
+    let n = lifts.len();
+    let at_once = lifts
+        .iter()
+        .filter(|(h0, _)| d.landing_equality && *h0 == 0.0)
+        .count();
+    let later = lifts
+        .iter()
+        .filter(|(_, landed_later)| *landed_later)
+        .count();
     Claim::draft(Check::LiteralExecution, "a2-landing-at-once", "Alg. 1-4, Alg. 2", &format!("As printed: every lift-off sets z_c <- z_s (Alg. 1, 2, 3, 4), and Algorithm 2 lands when z_c - z_s = 0. Read literally, the landing test holds at the first instant of every flight, which then ends at once. Correct: a landing is a falling zero of h_c = z_c - z_s after the flight has begun; the authors' code says so with an offset (fsm.m: yc = ys + delta_h, delta_h = 1e-9 'to ensure that the event function for flight does not start with a negative value'; Event_Flight.m: hc = y1 - ys + 1e-9, direction -1); the workbook counts a guard that starts at 0 as above the plate. Flights of both scenes (lift-off to landing, {n}; each lasted a positive time: {later}) at whose lift-off state the printed landing test holds."))
         .values(json!(0), json!(at_once), "exact")
         .printed_or_corrected(n > 0 && at_once == 0, n > 0 && later == n)
@@ -76,51 +58,25 @@ fn exceeds_friction(d: &Statements) -> Claim {
         .printed_or_corrected(stated == 1.0 && none_inside(d.s43_exceeds_abs), frac(true) == 1.0 && none_inside(true))
 }
 
-/// States at rest on the plate over a grid (theta, theta', plate phase) for both scenes.
-fn rest_states(c: &Ctx) -> Vec<(StickModel, f64, crate::physics::stick::State)> {
-    let mut v = Vec::new();
-    for q in &c.ev.params {
-        let m = StickModel::new(*q);
-        let w_scale = (q.g_mps2 / q.length_m).sqrt();
-        for i in -12..=12 {
-            let th = 0.1 * f64::from(i); // rad, -1.2 .. 1.2
-            if th == 0.0 {
-                continue; // the slides are singular at the vertical (C.14)
-            }
-            for j in -4..=4 {
-                for k in 0..16 {
-                    let t = m.period_s * f64::from(k) / 16.0;
-                    let mut y = initial_state(&m, t, th);
-                    y[OM] = 0.5 * w_scale * f64::from(j);
-                    v.push((m, t, y));
-                }
-            }
-        }
-    }
-    v
-}
-
 /// Alg. 3 and 4 at a slip stop: HINGE if the hinge reaction is inside the cone, else
 /// the other slide if its F_z > 0, else ABORT.
 fn slip_stop_abort(d: &Statements, c: &Ctx) -> Claim {
     let (mut stops, mut aborts, mut could_go_on, mut to_flight) = (0usize, 0usize, 0usize, 0usize);
-    for (m, t, y) in rest_states(c) {
-        for mode in [Mode::SlideLeft, Mode::SlideRight] {
-            let sigma = mode.sigma();
-            let e = m.slide_eval(sigma, t, &y);
-            // a slip stop of `mode`: its normal force compressive and its slip
+    for r in &c.ev.rest {
+        for (i, sigma) in [(0usize, 1.0), (1, -1.0)] {
+            let e = r.slides[i];
+            // a slip stop of this slide: its normal force compressive and its slip
             // decelerating to zero (sigma x_c'' > 0: slide left has x_c' < 0)
-            if !(e.fz >= 0.0 && sigma * e.xc_dd > 0.0 && y[VXC] == 0.0) {
+            if !(e.fz >= 0.0 && sigma * e.xc_dd > 0.0) {
                 continue;
             }
             stops += 1;
-            let h = m.pivot_eval(t, &y);
-            let other = m.slide_eval(-sigma, t, &y);
-            if m.p.mu * h.fz >= h.fx.abs() || other.fz > 0.0 {
+            let (h, other) = (r.pivot, r.slides[1 - i]);
+            if r.mu * h.fz >= h.fx.abs() || other.fz > 0.0 {
                 continue; // HINGE or the other slide: Alg. 3, 4 do not abort
             }
             aborts += 1;
-            if let Next::To(next, _) = m.select_contact(t, &y) {
+            if let Some(next) = r.chosen {
                 could_go_on += 1;
                 to_flight += usize::from(next == Mode::Flight);
             }
@@ -138,20 +94,9 @@ fn slip_stop_abort(d: &Statements, c: &Ctx) -> Claim {
 
 /// C.9 (C.11) at the slides' self-locking edge `tan(theta) = sigma mu`.
 fn self_locking_edge(d: &Statements, c: &Ctx) -> Claim {
-    // F_z = Q / (L (sin - sigma mu cos)) at |tan theta| = mu (1 - delta) from inside the
-    // slide's range, theta' = 0: a pole grows as 1/delta, a bounded force not at all
-    let mut growth = 0.0f64;
-    for q in &c.ev.params {
-        let p: StickParams = *q;
-        let m = StickModel::new(p);
-        let fz_at = |delta: f64| {
-            let th = (p.mu * (1.0 + delta)).atan(); // slide left runs with tan > mu
-            let mut y = initial_state(&m, 0.0, th);
-            y[OM] = 0.0;
-            m.slide_eval(1.0, 0.0, &y).fz.abs()
-        };
-        growth = growth.max(fz_at(1e-6) / fz_at(1e-3));
-    }
+    // F_z = Q / (L (sin - sigma mu cos)) at |tan theta| = mu (1 + delta), theta' = 0: a
+    // pole grows as 1/delta, a bounded force not at all (`rest_scan::edge_growth`)
+    let growth = c.ev.edge_growth;
     // a pole of order one: ratio 1e3 (1/delta) up to O(delta) terms; bounded: ~1
     let unbounded = growth > 100.0;
     Claim::draft(Check::ClosedForm, "c9-self-locking-edge", "4.3, 5", &format!("As printed: a slide runs until an inequality of Table 1 is violated, and Algorithms 3 and 4 handle a slip stop, F_z reaching 0 and a fall. C.9's denominator L(sin θ - μ cos θ) (C.11's for the right slide) vanishes at tan θ = σ μ, inside the range θ in (-π/2, π/2) the document allows: there the slide's normal force grows without bound (the rod along the edge of the friction cone cannot slide), and no printed rule applies. Correct: the slide jams; the workbook stops the slip by an impulse along the rod on the cone's edge, then applies the reaction test. |F_z| at tan θ = μ (1 + 1e-6) over |F_z| at μ (1 + 1e-3), θ' = 0, both scenes (a bounded force: about 1; a pole: 1e3): {growth:.0}."))
@@ -162,23 +107,18 @@ fn self_locking_edge(d: &Statements, c: &Ctx) -> Claim {
 /// Table 1's caption: "The new state is (the) one in which the inequalities are
 /// satisfied for the present values of the state variables".
 fn caption_one_mode(d: &Statements, c: &Ctx) -> Claim {
-    let (mut n, mut no_row, mut several, mut none) = (0usize, 0usize, 0usize, 0usize);
-    for (m, t, y) in rest_states(c) {
-        let h = m.pivot_eval(t, &y);
-        n += 1;
+    let (n, mut no_row, mut several, mut none) = (c.ev.rest.len(), 0usize, 0usize, 0usize);
+    for r in &c.ev.rest {
+        let h = r.pivot;
         // at the present values (h_c = 0, v_x = 0) only the Pivot row can hold: the
         // slides need v_x != 0 and the flight h_c > 0
-        if h.fz >= 0.0 && h.fx.abs() <= m.p.mu * h.fz {
+        if h.fz >= 0.0 && h.fx.abs() <= r.mu * h.fz {
             continue;
         }
         no_row += 1;
         // the modes whose inequalities hold a moment later (the slip's and the foot's
         // accelerations: `try_slide`, `takeoff`)
-        let slides = [Mode::SlideLeft, Mode::SlideRight]
-            .into_iter()
-            .filter(|&s| matches!(m.try_slide(s, t, &y), Next::To(..)))
-            .count();
-        let k = slides + usize::from(matches!(m.takeoff(t, &y), Next::To(..)));
+        let k = r.slide_ok.iter().filter(|&&ok| ok).count() + usize::from(r.flight_ok);
         several += usize::from(k > 1);
         none += usize::from(k == 0);
     }

@@ -28,6 +28,7 @@ mod maps;
 mod mutations;
 pub mod poincare;
 mod printed_table;
+mod rest_scan;
 mod rule_claims;
 pub mod saltation;
 mod sensitivity;
