@@ -3,7 +3,6 @@
 //! plate, the heights of the evidence runs' flights at their lift-offs, and the slides'
 //! normal force near the self-locking edge.
 
-use super::evidence::state_at;
 use crate::physics::stick::contact::ContactEval;
 use crate::physics::stick::rules::Next;
 use crate::physics::stick::run::{initial_state, RunSummary};
@@ -69,7 +68,9 @@ pub fn liftoff_heights(runs: &[(&RunSummary, &StickParams)]) -> Vec<(f64, bool)>
             if from == Mode::Flight || to != Some(Mode::Flight) {
                 continue;
             }
-            let Some(y) = state_at(run, t0, from) else {
+            // the state before the lift-off, kept in the trace at the segment's end
+            let before = run.trace.iter().find(|x| x.t_s == t0 && x.mode == from);
+            let Some(y) = before.map(|x| x.y) else {
                 continue;
             };
             let Next::To(_, a) = m.takeoff(t0, &y) else {
