@@ -349,10 +349,11 @@ fn the_stick_methods_claims_fail_when_their_order_is_off_by_one() {
 
 #[test]
 fn the_stability_limits_are_sharp_to_5_percent() {
-    // The check behind the 10 % mutations of `stiff-relaxation-explicit-blowup`: on the
+    // The check behind the derived-limit mutations of `stiff-relaxation-explicit-blowup`
+    // (the limits are the workbook's, the document prints none): on the
     // relaxation with tau = 1 ms, Euler and RK4 blow up 5 % beyond their limits (2 and
     // 2.785, the roots of |R(-z)| = 1 for R = 1 - z and the quartic Taylor polynomial)
-    // and not 5 % inside; so a limit printed 10 % high (2.2, 3.06) puts 0.95 of it
+    // and not 5 % inside; so a limit stated 10 % high (2.2, 3.06) puts 0.95 of it
     // beyond the true limit, where the run blows up.
     use locomotion_workbook::chapters::speed_vs_accuracy::failures::blows_up;
     use locomotion_workbook::numerics::ode::Method;

@@ -224,7 +224,7 @@ where
         cli.figures = PathBuf::from(EXPLORE_FIGURES);
     }
     match refuse_unused(&cli, &given)
-        .and_then(|()| dispatch(&cli, out))
+        .and_then(|()| dispatch(&cli, out, err))
         .and_then(|code| out.flush().map(|()| code).map_err(Into::into))
     {
         Ok(code) => {
@@ -376,7 +376,7 @@ fn checked(report: &ChapterReport) -> error::Result<&ChapterReport> {
     }
 }
 
-fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
+fn dispatch(cli: &Cli, out: &mut dyn Write, err: &mut dyn Write) -> error::Result<i32> {
     let ctx = cli.context()?;
     if let (true, Some(root)) = (computes(&cli.command), &ctx.figures_root) {
         check_figures(root)?;
@@ -389,6 +389,9 @@ fn dispatch(cli: &Cli, out: &mut dyn Write) -> error::Result<i32> {
         Command::Chapter(c) => (c.chapter, c.chapter.chapter.run(&c.matches, &ctx)?),
     };
     let report = checked(&report)?;
+    for note in &report.notes {
+        let _ = writeln!(err, "note: {note}");
+    }
     if cli.json {
         writeln!(out, "{}", report.to_json())?;
     } else {

@@ -43,6 +43,12 @@ pub struct ChapterReport {
     /// Free-text status line for the human table (e.g. "not built yet"); not in JSON.
     #[serde(skip)]
     pub status: Option<String>,
+    /// Notes for the reader about this run (a fallback taken, a start that was not the
+    /// one asked for, a list cut short): the command line prints each on stderr as
+    /// `note: ...`, so in-process callers and tests see them too; not in JSON (the
+    /// results carry the same facts as keys).
+    #[serde(skip)]
+    pub notes: Vec<String>,
 }
 
 impl ChapterReport {
@@ -58,7 +64,13 @@ impl ChapterReport {
             figures: Vec::new(),
             tables: Vec::new(),
             status: None,
+            notes: Vec::new(),
         }
+    }
+
+    /// Records a note for the reader (printed on stderr by the command line).
+    pub fn note(&mut self, text: impl Into<String>) {
+        self.notes.push(text.into());
     }
 
     /// Records a parameter.

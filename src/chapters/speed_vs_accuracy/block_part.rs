@@ -32,7 +32,7 @@ pub(super) fn reference_claims(s: &Setup<'_>, r: &mut ChapterReport) -> Measured
         )
         .value
     };
-    let (d10, d11, d12) = (dp(1e-10), dp(1e-11), dp(1e-12));
+    let (d10, d11, d12, d13) = (dp(1e-10), dp(1e-11), dp(1e-12), dp(1e-13));
     let d_ref = if doc.reference_tol == 1e-12 {
         d12
     } else {
@@ -72,19 +72,32 @@ pub(super) fn reference_claims(s: &Setup<'_>, r: &mut ChapterReport) -> Measured
         / (t_b - t_a); // formula: F = 256 eps t_end 2 v_p N_events / T_window
     let floor = floor_abs / reference.value.abs().max(f64::MIN_POSITIVE);
     r.result("block_drift_rounding_floor_rel", floor);
-    // Two decades of tolerance (1e-10 -> 1e-12) with tolerance-proportional control
-    // promise a 100x smaller error; the 1e-11 middle point is reported, not ordered: at
-    // these tolerances the signed error is a sum of event terms of both signs, and one
-    // decade can land on a cancellation (measured: --bias 0.9, F = 0.36 m g, gives
-    // 9.8e-11, 1.3e-9, 5.4e-11). Differences under the rounding floor F carry no order.
+    // Two decades of tolerance (1e-10 -> 1e-12) buy at least one decade of accuracy,
+    // down to the run's own floor. Budget: with local error control the global error
+    // of a pair of order p = 5 scales as tol^(p/(p+1)): 100^(5/6) = 46 over two decades
+    // (measured 40 on the default scene); the claim asks for 10. The floor has two
+    // parts, both from the runs themselves: F, the rounding of the event times above,
+    // and |d(1e-12) - d(1e-13)|, the change one more decade makes: where DP5 has reached
+    // its floor its error no longer shrinks with the tolerance and this change is of
+    // the floor's size (measured at --frequency-hz 100 --mu 0.01 --bias 0.45: errors
+    // 3.6e-9, 4.5e-9, 9.2e-9, 4.8e-9 relative from 1e-10 to 1e-13, i.e. 6e-13 ..
+    // 1.5e-12 m/s, while F is 1.8e-9), where tolerance-proportional control makes it
+    // about the error itself. The 1e-11 middle point is reported, not ordered: the
+    // signed error is a sum of event terms of both signs, and one decade can land on a
+    // cancellation (--bias 0.9: 9.8e-11, 1.3e-9, 5.4e-11).
+    let floor_run = ((d12 - d13) / reference.value).abs(); // formula: |d(1e-12) - d(1e-13)| / |d|
+    r.result(
+        "block_drift_reference_floor_rel",
+        json!({"rounding": floor, "next_decade": floor_run, "dopri5_1e-13": rel(d13)}),
+    );
     r.claim(Claim::draft(
         Check::Convergence,
         "reference-convergence-study",
         "numerics",
-        "Integrated Dormand-Prince approaches the reference as the tolerance tightens: err(1e-12) <= err(1e-10) + F, with F the rounding floor of the drift (256 ulps of t per event times the relative-velocity jump 2 Γ g / ω, over the window)",
+        "Integrated Dormand-Prince approaches the reference as the tolerance tightens: err(1e-12) <= err(1e-10)/10 + F + |d(1e-12) - d(1e-13)|/|d|: two decades of tolerance buy at least one decade of accuracy (a 5(4) pair under local error control: 100^(5/6) = 46), down to the run's own floor, F the rounding of the event times (256 ulps of t per event times the relative-velocity jump 2 Γ g / ω, over the window) and the change one more decade makes (at the floor it is the floor's size)",
     )
     .exact(true, if doc.tightening_helps {
-            rel(d12) <= rel(d10) + floor
+            rel(d12) <= rel(d10) / 10.0 + floor + floor_run
         } else {
             rel(d12).min(rel(d11)) >= rel(d10) + floor
         }));
@@ -226,7 +239,7 @@ pub(super) fn stiff_claims(s: &Setup<'_>, r: &mut ChapterReport, fails: &mut Vec
     }
     // Each fixed-step method blows up where h/tau exceeds its stability limit on the
     // linear decay (Euler: |1 - z| < 1 -> z < 2; RK4: z < 2.785), and the limits are
-    // sharp: 5 % beyond each it blows up, 5 % inside it does not (a limit printed 10 %
+    // sharp: 5 % beyond each it blows up, 5 % inside it does not (a limit stated 10 %
     // off puts one of the two on the wrong side).
     let stiff_ok = st.fixed.iter().all(|(m, e)| {
         let limit = match m.name() {

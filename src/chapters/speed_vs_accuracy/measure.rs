@@ -164,7 +164,10 @@ pub fn stick_speed(model: &StickModel, cycles: f64, opts: &Options) -> (Measured
     let completed = r.outcome == StickOutcome::Completed && r.mean_velocity_mps.is_finite();
     let reason = match &r.outcome {
         StickOutcome::Completed => None,
-        StickOutcome::Invalid(why) => Some(why.split(" at t =").next().unwrap_or(why).to_string()),
+        StickOutcome::Invalid(why) => {
+            let why = why.to_string();
+            Some(why.split(" at t =").next().unwrap_or(&why).to_string())
+        }
         other => Some(other.label().to_string()),
     };
     let m = Measured {

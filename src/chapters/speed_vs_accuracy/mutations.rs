@@ -2,13 +2,19 @@
 //! the same checks as the printed ones (the chapter re-run, quick, with the edited
 //! statements), plus the missed-event and stick-methods mutations.
 //!
-//! A 10 % mutation (a printed number x 1.1, "10 %" in its description) flips every
-//! claim of a document section whose statement prints a number a 10 % error can move:
-//! `stiff-relaxation-explicit-blowup` (the limits 2 and 2.785, checked 5 % either
-//! side), `zeno-plate-resolved-two-ways` (the drifts' ratio 1), `flight-map-economy`
-//! (the law's coefficient 1/2), `viscous-law-economy` (c = 2 mu m g/(pi V)); and the
-//! two Zeno claims of the numerics (t_inf's factor). The others have none, for a
-//! reason each:
+//! A 10 % mutation edits a number the document prints ("10 %" in its description): of
+//! this chapter's claims only `flight-map-economy` rests on one (section 3.1.2's
+//! `v_ave = (F/2m) t_f`, whose 1/2 becomes the flight-map law's). The others have none,
+//! for a reason each:
+//! - a number the workbook derived, not one the document prints
+//!   (`stiff-relaxation-explicit-blowup`: the methods' stability limits 2 and 2.785 on
+//!   C.3's relaxation, which prints only k/gamma; `zeno-ball-stops-at-accumulation` and
+//!   `zeno-ball-moreau-jean-rest`: the accumulation time t1 (1 + e)/(1 - e) of a ball the
+//!   document never mentions; `zeno-plate-resolved-two-ways`: two of the workbook's
+//!   methods agreeing; `viscous-law-economy`: c = 2 mu m g/(pi V), the workbook's
+//!   derivation of the viscous law section 3.1.1 states without a coefficient): their
+//!   mutations move the derived number (by 10 % or more, said as "derived") to show the
+//!   check is sharp, and are not counted as edits of the document;
 //! - an integer order of convergence (`stick-rk4-located-order` 4,
 //!   `stick-euler-located-order` 1, `stick-methods-moreau-jean-order` 1,
 //!   `soft-contact-order` 1): an order off by 10 % is no order; the neighbouring
@@ -29,6 +35,11 @@
 /// The chapter's document claims without a 10 % mutation, each with its reason (the
 /// list above, as data for `tests/falsification.rs`).
 pub const NO_TEN_PERCENT: &[(&str, &str)] = &[
+    ("stiff-relaxation-explicit-blowup", DERIVED),
+    ("zeno-ball-stops-at-accumulation", DERIVED),
+    ("zeno-ball-moreau-jean-rest", DERIVED),
+    ("zeno-plate-resolved-two-ways", DERIVED),
+    ("viscous-law-economy", DERIVED),
     ("reference-converged", SETTING),
     ("reference-convergence-study", OWN),
     ("euler-located-order", ORDER),
@@ -46,6 +57,8 @@ pub const NO_TEN_PERCENT: &[(&str, &str)] = &[
     ("soft-contact-richardson-gap", RATIO),
 ];
 
+/// Why a number the workbook derived has no 10 % mutation.
+const DERIVED: &str = "the document prints no number here: the number checked (a stability limit, an accumulation time, a ratio of two methods, the viscous coefficient 2 mu m g/(pi V)) is the workbook's own derivation; its mutations move that derived number to show the check is sharp, not an edit of the document";
 /// Why an order of convergence has no 10 % mutation.
 const ORDER: &str = "an integer order of convergence: an order off by 10 % is no order; the neighbouring order (off by one) is the mutation, and the band is derived so that it fails";
 /// Why an estimate's ratio has none.
@@ -88,12 +101,12 @@ const EDITS: [DocEdit<Statements>; 21] = [
     ),
     (
         "stiff-relaxation-explicit-blowup",
-        "Euler stable for h/tau < 2 -> < 2.2 (10 %)",
+        "derived Euler limit h/tau < 2 -> < 2.2",
         |d| d.euler_limit = 2.2,
     ),
     (
         "stiff-relaxation-explicit-blowup",
-        "RK4 stable for h/tau < 2.785 -> < 3.06 (10 %)",
+        "derived RK4 limit h/tau < 2.785 -> < 3.06",
         |d| d.rk4_limit = 1.1 * 2.785,
     ),
     (
@@ -108,17 +121,17 @@ const EDITS: [DocEdit<Statements>; 21] = [
     ),
     (
         "zeno-ball-stops-at-accumulation",
-        "t_inf = t1 (1 + e)/(1 - e) -> 1.1 x (10 %)",
+        "derived t_inf = t1 (1 + e)/(1 - e) -> 1.1 x",
         |d| d.zeno_factor = 1.1,
     ),
     (
         "zeno-ball-moreau-jean-rest",
-        "t_inf = t1 (1 + e)/(1 - e) -> 1.1 x (10 %)",
+        "derived t_inf = t1 (1 + e)/(1 - e) -> 1.1 x",
         |d| d.zeno_factor = 1.1,
     ),
     (
         "zeno-plate-resolved-two-ways",
-        "same drift -> Moreau-Jean 1.1 x the event-driven drift (10 %)",
+        "same drift -> Moreau-Jean 1.1 x the event-driven drift (derived)",
         |d| d.zeno_plate_factor = 1.1,
     ),
     (
@@ -150,12 +163,12 @@ const EDITS: [DocEdit<Statements>; 21] = [
     ),
     (
         "flight-map-economy",
-        "v = b mu g t_f^2/(2 n T) -> 1.1 x (10 %)",
+        "v_ave = (F/2m) t_f (section 3.1.2) -> 1.1 F/(2m) t_f, so v = 1.1 b mu g t_f^2/(2 n T) (10 %)",
         |d| d.flight_map_factor = 1.1,
     ),
     (
         "viscous-law-economy",
-        "c = 2 mu m g/(pi V) -> 1.1 x (10 %)",
+        "derived c = 2 mu m g/(pi V) -> 1.1 x",
         |d| d.viscous_factor = 1.1,
     ),
 ];

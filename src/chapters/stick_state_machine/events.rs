@@ -34,10 +34,10 @@ pub fn write_events(
     if written < total {
         let cut_s = run.switches.last().map_or(0.0, |w| w.t_s);
         r.result("events_cut_at_s", cut_s);
-        eprintln!(
-            "note: --events {} holds the first {written} of {total} switches (cut at t = {cut_s:.6} s; at most {EVENTS_CAP} are kept)",
+        r.note(format!(
+            "--events {} holds the first {written} of {total} switches (cut at t = {cut_s:.6} s; at most {EVENTS_CAP} are kept)",
             path.display()
-        );
+        ));
     }
     Ok(())
 }

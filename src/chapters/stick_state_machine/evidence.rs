@@ -30,6 +30,14 @@ pub struct Evidence {
     pub params: [StickParams; 2],
     /// Duration of the evidence runs (s).
     pub duration_s: f64,
+    /// The contact conditions at states at rest on the plate (both scenes).
+    pub rest: Vec<super::rest_scan::RestState>,
+    /// Per flight of both runs: h_c at its lift-off state (m), and whether it landed
+    /// later.
+    pub liftoffs: Vec<(f64, bool)>,
+    /// The slides' normal force near the self-locking edge: |F_z| at tan = mu (1 +
+    /// 1e-6) over |F_z| at mu (1 + 1e-3).
+    pub edge_growth: f64,
 }
 
 /// Relative (= absolute) tolerance of the traced evidence runs.
@@ -89,6 +97,7 @@ pub fn collect(ctx: &Context, opts: &Options) -> Evidence {
         let [_, _, _, vzp] = model.tip(&y0);
         vzp + pa.length_m * w * th.sin() - model.plate(0.0).1
     };
+    let liftoffs = super::rest_scan::liftoff_heights(&[(&authors, &pa), (&jamming, &pj)]);
     Evidence {
         authors,
         jamming,
@@ -99,6 +108,9 @@ pub fn collect(ctx: &Context, opts: &Options) -> Evidence {
         start_liftoff_hdot_mps,
         params: [pa, pj],
         duration_s: dur,
+        rest: super::rest_scan::rest_states(&[pa, pj]),
+        liftoffs,
+        edge_growth: super::rest_scan::edge_growth(&[pa, pj]),
     }
 }
 

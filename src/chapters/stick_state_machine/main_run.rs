@@ -9,7 +9,7 @@ use crate::numerics::hybrid::Options;
 use crate::numerics::ode::Method;
 use crate::physics::stick::printed::Printed;
 use crate::physics::stick::run::{Recording, RunSummary, StickOutcome};
-use crate::physics::stick::StickParams;
+use crate::physics::stick::{InvalidReason, StickParams};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 
@@ -97,7 +97,10 @@ pub fn run_main(
 /// scene with theta_0 from 1e-9 to 1e-3 rad: DOP853 NaN, DOPRI5 completes; at
 /// theta_0 = 1e-6 DOPRI5 agrees with an independent time-stepping run).
 pub fn dopri5_fallback(first: &RunSummary, opts: &Options) -> Option<Options> {
-    let nan = matches!(&first.outcome, StickOutcome::Invalid(w) if w.contains("non-finite"));
+    let nan = matches!(
+        &first.outcome,
+        StickOutcome::Invalid(InvalidReason::NonFinite { .. })
+    );
     (nan && opts.method == Method::Dop853).then_some(Options {
         method: Method::Dopri5,
         ..*opts
@@ -127,22 +130,22 @@ pub fn results(
         // A NaN escaped the model (seen with the rod leaning less than ~1e-3 rad, where
         // the slide equations divide by sin(theta)): the run ends `invalid`, and its
         // non-finite numbers are left out of the results, never printed.
-        main.outcome = StickOutcome::Invalid(format!(
-            "non-finite state by t = {} s: the integration produced NaN (rod near the vertical)",
-            round(main.end_time_s, 6)
-        ));
+        main.outcome = StickOutcome::Invalid(InvalidReason::NonFinite {
+            t_s: round(main.end_time_s, 6),
+            near_vertical: false,
+        });
     }
-    if let StickOutcome::Invalid(why) = &mut main.outcome {
-        if why.contains("non-finite") && p.theta0_rad.abs() < 1e-3 {
-            // the slides' C.14 divides by sin(theta): near the vertical their theta'' is
-            // of order 1/theta and the order-8 pair's stages overflow where DOPRI5's
-            // smaller steps do not (measured at theta_0 = 1e-6: DOP853 NaN at 0.029 s,
-            // DOPRI5 completes and agrees with a time-stepping run)
-            why.push_str("; the rod leans less than 1e-3 rad, where the slides' C.14 divides by sin(θ): --method dopri5 integrates this scene");
-        }
+    if let StickOutcome::Invalid(InvalidReason::NonFinite { near_vertical, .. }) = &mut main.outcome
+    {
+        // the slides' C.14 divides by sin(theta): near the vertical their theta'' is
+        // of order 1/theta and the order-8 pair's stages overflow where DOPRI5's
+        // smaller steps do not (measured at theta_0 = 1e-6: DOP853 NaN at 0.029 s,
+        // DOPRI5 completes and agrees with a time-stepping run); the message says so
+        *near_vertical = p.theta0_rad.abs() < 1e-3;
     }
     let reason = match &main.outcome {
-        StickOutcome::Invalid(why) | StickOutcome::Aborted(why) => why.clone(),
+        StickOutcome::Invalid(why) => why.to_string(),
+        StickOutcome::Aborted(why) => why.clone(),
         _ => String::new(),
     };
     let mut out = vec![
@@ -227,7 +230,10 @@ mod tests {
         let p = super::super::scene_params(super::super::Scene::Jamming, None);
         let (mut s, opts) = short_run(&p, Method::Dop853);
         assert!(dopri5_fallback(&s, &opts).is_none(), "a completed run");
-        s.outcome = StickOutcome::Invalid("integration failed: non-finite state".into());
+        s.outcome = StickOutcome::Invalid(InvalidReason::NonFinite {
+            t_s: 0.0,
+            near_vertical: false,
+        });
         let o = dopri5_fallback(&s, &opts).expect("repeated");
         assert_eq!(o.method, Method::Dopri5);
         assert_eq!(o.control, opts.control);

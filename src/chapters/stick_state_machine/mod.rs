@@ -19,13 +19,16 @@ mod evidence;
 mod figures;
 pub mod gait;
 mod gait_map;
+mod gap_claims;
 mod impulse;
+mod lagrange;
 pub mod limit_cycle;
 pub mod main_run;
 mod maps;
 mod mutations;
 pub mod poincare;
 mod printed_table;
+mod rest_scan;
 mod rule_claims;
 pub mod saltation;
 mod sensitivity;
@@ -412,7 +415,7 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     let mut main_opts = opts; // the evidence runs keep the chosen method
     if let Some(o) = main_run::dopri5_fallback(&physical, &opts) {
         let why = format!("DOP853 produced a non-finite state ({}); the run was repeated with DOPRI5 at the same tolerance (near the vertical the slides' C.14 divides by sin(θ) and the order-8 stages overflow)", physical.outcome.label());
-        eprintln!("note: {why}");
+        r.note(why.clone());
         r.result("contact_method_fallback", why);
         (physical, main, fired) = main_run::run_main(args, &p, dur, &o, rec);
         main_opts = o;

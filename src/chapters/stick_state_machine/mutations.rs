@@ -66,7 +66,16 @@ pub const NO_PRINTED_NUMBER: &[(&str, &str)] = &[
     ("a1-flight-test", "a sign: F_z > 0 (flipped: F_z < 0)"),
     ("a1-vertical-flight", "an angle of 0 and a mode name: |θ| = 0 -> FLIGHT (10 % of 0 is 0; flipped: the line removed)"),
     ("a1-abort-heights", "a reference level: heights below 0 (flipped: heights from the plate)"),
-    ("a2-shortening-branch", "a sign: the product < 0 (flipped: >= 0, and the other reading of r_CP)"),
+    ("a2-shortening-branch", "a sign: the product < 0 (flipped: >= 0, and the reading of r_CP that fsm.m rules out)"),
+    ("s43-two-dof-mode", "an integer count, 'two degrees of freedom': 10 % of a count is no count (2.2 degrees of freedom means nothing); flipped: one, the pivot's count, which would make the sentence right"),
+    ("s43-exceeds-friction", "a comparison, 'exceeds the frictional force' (flipped: |F_x| exceeds it)"),
+    ("s5-hinge-force-missing", "nothing is printed: no formula for the hinge force (flipped: F = m (a_P + g e_z) printed)"),
+    ("a2-landing-at-once", "an equality with 0, z_c - z_s = 0 (10 % of 0 is 0; flipped: a falling zero after the start)"),
+    ("a2-theta-reset-missing", "a missing line, theta <- theta_0 (flipped: the line added)"),
+    ("t1-flight-row", "the place of two zeros in a table row (flipped: under F_z and F_x)"),
+    ("t1-caption-one-mode", "a phrase, 'for the present values' (flipped: a moment later)"),
+    ("a34-slip-stop-abort", "a mode name, ABORT (flipped: the first consistent mode)"),
+    ("c9-self-locking-edge", "a missing rule (flipped: a rule printed)"),
     ("a2-dead-branch", "a test of a value just set to 0 (flipped: the branch removed)"),
     ("a2-free-landing-order", "the order of two lines (flipped: assignment first)"),
     ("a2-slide-overrides-hinge", "if versus else (flipped: the else branch, and assert read as a return)"),
@@ -110,12 +119,12 @@ pub fn all() -> Vec<Mutation> {
 fn equation_edits() -> Vec<DocEdit<Statements>> {
     vec![
         m(
-            "c3-c5-flight-closed-form",
+            "c3-c5-flight-lagrange",
             "C.3 rate k/gamma -> 1.1 k/gamma (10 %)",
             |d| d.flight_rate = 1.1,
         ),
         m(
-            "c3-c5-flight-closed-form",
+            "c3-c5-flight-lagrange",
             "C.5 gravity g -> 0.9 g (10 %)",
             |d| d.flight_gravity = 0.9,
         ),
@@ -129,10 +138,16 @@ fn equation_edits() -> Vec<DocEdit<Statements>> {
             "C.3's third row stated for flight only",
             |d| d.c3_general = false,
         ),
+        m("c6-pivot-lagrange", "C.6 spring k -> 1.1 k (10 %)", |d| {
+            d.c6_spring = 1.1
+        }),
+        m("c6-pivot-lagrange", "C.6 (g + z_s'') -> (g - z_s'')", |d| {
+            d.c6_plate = -1.0
+        }),
         m(
-            "c6-pivot-small-motion",
-            "C.6 spring k -> 1.1 k (10 %)",
-            |d| d.c6_spring = 1.1,
+            "s5-hinge-force-missing",
+            "the hinge force F = m (a_P + g e_z) printed in section 4.2",
+            |d| d.hinge_force_printed = true,
         ),
         m("c6-c7-c8-balance", "C.6 spring k -> 1.1 k (10 %)", |d| {
             d.c6_spring = 1.1
@@ -183,8 +198,13 @@ fn section43_edits() -> Vec<DocEdit<Statements>> {
     vec![
         m(
             "s43-two-dof-mode",
-            "two degrees of freedom -> 2.2 (10 %)",
-            |d| d.s43_dof = 2.2,
+            "two degrees of freedom -> one (the pivot's count)",
+            |d| d.s43_dof = 1.0,
+        ),
+        m(
+            "s43-exceeds-friction",
+            "F_x exceeds the friction -> |F_x| exceeds it",
+            |d| d.s43_exceeds_abs = true,
         ),
         m("c12-blank", "C.12 printed (the derived equation)", |d| {
             d.c12_printed = true
@@ -220,6 +240,11 @@ fn collision_edits() -> Vec<DocEdit<Statements>> {
             "C.15 at the sticking collisions only",
             |d| d.s44_every_collision = false,
         ),
+        m(
+            "a2-theta-reset-missing",
+            "Algorithm 2 assigns theta <- theta_0 (as section 4.4 says)",
+            |d| d.a2_resets_theta = true,
+        ),
         m("c15-axis", "axis k -> -j", |d| {
             d.c15_axis = [0.0, -1.0, 0.0]
         }),
@@ -242,6 +267,11 @@ fn table1_edits() -> Vec<DocEdit<Statements>> {
         m("t1-slide-left", "Sliding Left v_x < 0 -> v_x > 0", |d| {
             d.t1_left_v = 1.0
         }),
+        m(
+            "t1-flight-row",
+            "Flight row's zeros under F_z and F_x (v_x blank)",
+            |d| d.t1_flight_vx_zero = false,
+        ),
         m(
             "t1-slide-right-sign",
             "Sliding Right v_x < 0 -> v_x > 0",
@@ -314,9 +344,16 @@ fn algorithm_edits() -> Vec<DocEdit<Statements>> {
 fn alg2_edits() -> Vec<DocEdit<Statements>> {
     vec![
         m("a2-tan-test", "tan -> |tan|", |d| d.a2_tan_abs = true),
-        m("a2-shortening-branch", "r_CP read from P to C", |d| {
-            d.rcp_from_c = false
-        }),
+        m(
+            "a2-landing-at-once",
+            "landing at a falling zero of z_c - z_s after the start",
+            |d| d.landing_equality = false,
+        ),
+        m(
+            "a2-shortening-branch",
+            "r_CP read from P to C (the reading fsm.m rules out)",
+            |d| d.rcp_from_c = false,
+        ),
         m(
             "a2-shortening-branch",
             "impulse when the product is < 0",
@@ -327,9 +364,11 @@ fn alg2_edits() -> Vec<DocEdit<Statements>> {
             "theta' = -r_CP x (v_p - v_s)/L^2",
             |d| d.a2_theta_sign = -1.0,
         ),
-        m("a2-theta-dot-sign", "r_CP read from P to C", |d| {
-            d.rcp_from_c = false
-        }),
+        m(
+            "a2-theta-dot-sign",
+            "r_CP read from P to C (the reading fsm.m rules out)",
+            |d| d.rcp_from_c = false,
+        ),
         m("a2-hinge-test", "mu F_z < |F_x| -> mu F_z >= |F_x|", |d| {
             d.a2_hinge_lt = false
         }),
@@ -386,6 +425,21 @@ fn slide_algorithm_edits() -> Vec<DocEdit<Statements>> {
             |d| d.slide_hinge_while_slipping = false,
         ),
         m("a3-abort", "F_z <= 0 -> FLIGHT", |d| d.slide_abort = false),
+        m(
+            "t1-caption-one-mode",
+            "the caption judges the inequalities a moment later (accelerations)",
+            |d| d.caption_present_values = false,
+        ),
+        m(
+            "a34-slip-stop-abort",
+            "ABORT at a slip stop -> the first consistent mode",
+            |d| d.slip_stop_abort = false,
+        ),
+        m(
+            "c9-self-locking-edge",
+            "a rule printed for the slide at tan(theta) = sigma mu",
+            |d| d.edge_rule_printed = true,
+        ),
         m("a4-abort", "F_z <= 0 -> FLIGHT", |d| d.slide_abort = false),
         m("a3-flight-test", "F_x = 0 no longer a lift-off", |d| {
             d.slide_flight_on_fx = false

@@ -172,7 +172,7 @@ impl HybridSystem<NV> for Variational<'_> {
                     state: join(&state, &(sal * phi(y))), // formula: Phi+ = S Phi-
                 }
             }
-            Transition::To { mode: to, .. } => Transition::Stop(StickStop::Invalid(format!(
+            Transition::To { mode: to, .. } => Transition::Stop(StickStop::invalid(format!(
                 "switch {} -> {} (guard {i}) at t = {t:.6} s: not a contact switch the saltation method covers",
                 mode.name(),
                 to.name()
@@ -211,7 +211,7 @@ pub fn monodromy(
             Ok(DMatrix::from_fn(d, d, |r, c| p[(r, c)]))
         }
         Outcome::Completed => Err(format!("the cycle ends in {}", run.mode_end.name())),
-        Outcome::Stopped(StickStop::Invalid(why)) => Err(why),
+        Outcome::Stopped(StickStop::Invalid(why)) => Err(why.to_string()),
         o => Err(format!("{o:?}")),
     }
 }

@@ -34,7 +34,7 @@ pub fn start_note(r: &mut ChapterReport, p: &StickParams, start: Start) {
                 "no static angle: the spring (k = {} N m/rad) cannot hold the weight's moment m g L sin(θ) at any angle near θ₀, so --start static starts at rest at θ₀ = {} rad instead",
                 p.stiffness_nm_per_rad, p.theta0_rad
             );
-            eprintln!("note: {note}");
+            r.note(note.clone());
             r.result("start_note", note);
         }
     }

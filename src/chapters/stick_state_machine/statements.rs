@@ -82,7 +82,8 @@ pub struct Statements {
     pub a2_tan_abs: bool,
     /// Alg. 2: the sticking test's coefficient of `mu`, `tan(theta) <= a2_tan_mu mu` (1).
     pub a2_tan_mu: f64,
-    /// Alg. 2: `r_CP` points from C to P (true) or from P to C.
+    /// Alg. 2: `r_CP` points from C to P (true: the authors' fsm.m, `vec_rcp = L (sin,
+    /// cos)`) or from P to C (the reading fsm.m rules out).
     pub rcp_from_c: bool,
     /// Alg. 2: the impulse is applied when `(v_p - v_s) . r_CP >= 0` (true, "rod not
     /// shortening") or when it is `< 0`.
@@ -117,6 +118,31 @@ pub struct Statements {
     pub slide_abort: bool,
     /// Alg. 3, 4: FLIGHT also when `F_x = 0` (true).
     pub slide_flight_on_fx: bool,
+    /// Algorithms 1 to 4: "Compute Fx and Fz in the HINGE Phase" has a formula in
+    /// section 4.2 (`false`: as printed, C.6 and C.7 give theta'' and a_P, not F).
+    pub hinge_force_printed: bool,
+    /// Alg. 2: landing when `z_c - z_s = 0`, an equality tested at every instant, after
+    /// lift-offs that set `z_c <- z_s` (true, as printed), or a falling crossing after
+    /// the flight's start (false).
+    pub landing_equality: bool,
+    /// Alg. 2 applies section 4.4's `theta = theta_0` after a collision (`false`: as
+    /// printed, no line of Algorithm 2 assigns theta).
+    pub a2_resets_theta: bool,
+    /// Table 1's Flight row (three entries, `> 0 = 0 = 0`, for four columns) read
+    /// left-aligned: `v_x = 0` and `F_z = 0` (true, as typeset) or under F_z and F_x.
+    pub t1_flight_vx_zero: bool,
+    /// Section 4.3: the pivot slips when "F_x exceeds the frictional force", `F_x > mu
+    /// F_z` signed (`false`, as printed) or `|F_x| > mu F_z`.
+    pub s43_exceeds_abs: bool,
+    /// Table 1's caption: the new state is the one whose inequalities hold "for the
+    /// present values of the state variables" (true, as printed) or a moment later.
+    pub caption_present_values: bool,
+    /// Alg. 3, 4: at a slip stop where neither the hinge nor the other slide holds,
+    /// ABORT (true, as printed) or the first consistent mode (flight if it lifts C).
+    pub slip_stop_abort: bool,
+    /// Sections 4.3 and 5 give a rule for a slide reaching the zero of C.9's (C.11's)
+    /// denominator, `tan(theta) = sigma mu` (`false`: none printed).
+    pub edge_rule_printed: bool,
     /// The rtol pair at which the phase sequence is claimed identical (section 5's state
     /// machine is discrete: its history must not depend on the tolerance).
     pub sequence_rtols: [f64; 2],
@@ -181,6 +207,14 @@ pub const PRINTED: Statements = Statements {
     slide_to_other: true,
     slide_abort: true,
     slide_flight_on_fx: true,
+    hinge_force_printed: false,
+    landing_equality: true,
+    a2_resets_theta: false,
+    t1_flight_vx_zero: true,
+    s43_exceeds_abs: false,
+    caption_present_values: true,
+    slip_stop_abort: true,
+    edge_rule_printed: false,
     sequence_rtols: [1e-10, 1e-8],
     sequence_located: true,
 };

@@ -44,6 +44,32 @@ impl StickModel {
         y[ZC] - self.plate(t).0
     }
 
+    /// The rounding budget of `h_c` at a flight state `(t, y)` (m): how far below the
+    /// plate a correctly located landing (or any flight state) may read. Two parts.
+    /// (1) The landing is located to the event tolerance `t_tol = 4 eps max(|t|, 1)`
+    /// (`numerics::events::time_tolerance`) and reported at the bracket's far end, past
+    /// the root by at most `t_tol`, where `h_c` has moved by `|h_c'| t_tol`.
+    /// (2) `h_c` itself is computed with an error `dh`, which also moves the root by
+    /// `dh/|h_c'|`, so it enters twice: the plate's phase `f t + phi` (turns) is rounded
+    /// to `eps (|f t| + |phi| + 1)` turns, which moves `z_s = A sin` by `2 pi A` times
+    /// that, at the lift-off (C set onto the plate) and again now; the closed form's
+    /// and the difference's arithmetic round terms of size `|z_c| + A + L` a few (16)
+    /// times. This grows with `t` and with the number of cycles `f t`: a fixed bound
+    /// cannot hold over long runs.
+    pub fn penetration_budget_m(&self, t: f64, y: &State) -> f64 {
+        let eps = f64::EPSILON;
+        let a = self.p.plate.amplitude_m;
+        let t_tol = 4.0 * eps * t.abs().max(1.0); // formula: numerics::events::time_tolerance
+        let rate = (y[VZC] - self.plate(t).1).abs(); // |h_c'|
+        let phase = 2.0
+            * std::f64::consts::TAU
+            * a
+            * eps
+            * ((self.frequency_hz * t).abs() + self.phase_turns.abs() + 1.0); // formula: 2 x 2 pi A eps (|f t| + |phi| + 1)
+        let arith = 16.0 * eps * (y[ZC].abs() + a + self.p.length_m); // formula: 16 eps (|z_c| + A + L)
+        rate * t_tol + 2.0 * (phase + arith) // formula: |h_c'| t_tol + 2 dh
+    }
+
     /// Longest flight step from `(t, y)` over which `h_c` provably stays positive:
     /// with `|h_c''| <= A = g + delta omega^2 + L (k/gamma)^2 (d^2 + |d|)`,
     /// `h_c(t + s) >= h + v s - A s^2 / 2`, positive for `s < (v + sqrt(v^2 + 2 A h)) / A`.

@@ -146,15 +146,88 @@ impl Mode {
     }
 }
 
+/// Why a run left the model's validity: typed where a caller decides by it (the
+/// fallback to DOPRI5 on a non-finite state, the count of C.14's singularity), its
+/// message printed from it ([`std::fmt::Display`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum InvalidReason {
+    /// The integration produced a non-finite state at `t_s` (s); `near_vertical`: the
+    /// rod leans less than 1e-3 rad, where the slides' C.14 divides by sin(theta) (the
+    /// message then names the remedy).
+    NonFinite {
+        /// Time (s).
+        t_s: f64,
+        /// See the variant.
+        near_vertical: bool,
+    },
+    /// A slide reached (or would start at) theta = 0, where C.14 divides by sin(theta).
+    SingularSlide {
+        /// Time (s).
+        t_s: f64,
+        /// A slide would start there (true) or a sliding rod reached it (false).
+        entering: bool,
+    },
+    /// Any other reason, as its message.
+    Other(String),
+}
+
+impl std::fmt::Display for InvalidReason {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            InvalidReason::NonFinite { t_s, near_vertical } => {
+                write!(f, "integration failed: non-finite state at t = {t_s} s")?;
+                if *near_vertical {
+                    write!(f, "; the rod leans less than 1e-3 rad, where the slides' C.14 divides by sin(θ): --method dopri5 integrates this scene")?;
+                }
+                Ok(())
+            }
+            InvalidReason::SingularSlide {
+                t_s,
+                entering: true,
+            } => write!(
+                f,
+                "slide from theta = 0 at t = {t_s:.6} s: the sliding equations (C.14) are singular"
+            ),
+            InvalidReason::SingularSlide {
+                t_s,
+                entering: false,
+            } => write!(
+                f,
+                "the sliding rod reached theta = 0 at t = {t_s:.6} s: C.14 is singular there"
+            ),
+            InvalidReason::Other(why) => f.write_str(why),
+        }
+    }
+}
+
+impl From<String> for InvalidReason {
+    fn from(why: String) -> Self {
+        InvalidReason::Other(why)
+    }
+}
+
+impl From<&str> for InvalidReason {
+    fn from(why: &str) -> Self {
+        InvalidReason::Other(why.to_string())
+    }
+}
+
 /// Why a run stopped early.
 #[derive(Debug, Clone, PartialEq)]
 pub enum StickStop {
     /// The top P reached the plate (|theta| reached 90 degrees).
     Fell,
     /// The state left the model's validity (the reason).
-    Invalid(String),
+    Invalid(InvalidReason),
     /// A printed rule chose ABORT (which rule, where).
     Aborted(String),
+}
+
+impl StickStop {
+    /// An invalid stop with a reason given as its message.
+    pub fn invalid(why: String) -> Self {
+        StickStop::Invalid(InvalidReason::Other(why))
+    }
 }
 
 /// The stick model: parameters plus derived constants. Implements

@@ -14,7 +14,9 @@
 //!   moment balance would need an infinite normal force; a sticking impulse along the
 //!   rod (on the cone's edge) stops the slip.
 
-use super::{CollisionAngle, Mode, State, StickModel, StickStop, OM, TH, VXC, VZC, ZC};
+use super::{
+    CollisionAngle, InvalidReason, Mode, State, StickModel, StickStop, OM, TH, VXC, VZC, ZC,
+};
 
 /// The next mode and state, or a stop.
 #[derive(Debug, Clone, PartialEq)]
@@ -67,7 +69,7 @@ impl StickModel {
                 return next;
             }
         }
-        Next::Stop(StickStop::Invalid(format!(
+        Next::Stop(StickStop::invalid(format!(
             "no consistent contact mode at t = {t:.6} s (theta = {:.4} rad, pivot F = ({:.3e}, {:.3e}) N)",
             y[TH], e.fx, e.fz
         )))
@@ -77,9 +79,10 @@ impl StickModel {
     /// [`StickModel::select_contact`]); a stop with the reason otherwise.
     pub fn try_slide(&self, mode: Mode, t: f64, y: &State) -> Next {
         if y[TH].sin().abs() < 1e-9 {
-            return Next::Stop(StickStop::Invalid(format!(
-                "slide from theta = 0 at t = {t:.6} s: the sliding equations (C.14) are singular"
-            )));
+            return Next::Stop(StickStop::Invalid(InvalidReason::SingularSlide {
+                t_s: t,
+                entering: true,
+            }));
         }
         let sigma = mode.sigma();
         let e = self.slide_eval(sigma, t, y);
@@ -94,7 +97,7 @@ impl StickModel {
         let e1 = self.slide_eval(sigma, t + h, &y1);
         let ahead = y1[VXC] + h * e1.xc_dd; // slip velocity after 2h
         if e.fz < 0.0 || !e.fz.is_finite() || sigma * ahead > 0.0 {
-            return Next::Stop(StickStop::Invalid(format!(
+            return Next::Stop(StickStop::invalid(format!(
                 "{} inconsistent at t = {t:.6} s",
                 mode.name()
             )));
@@ -104,9 +107,10 @@ impl StickModel {
 
     fn enter_slide(&self, mode: Mode, t: f64, y: State) -> Next {
         if y[TH].sin().abs() < 1e-9 {
-            return Next::Stop(StickStop::Invalid(format!(
-                "slide from theta = 0 at t = {t:.6} s: the sliding equations (C.14) are singular"
-            )));
+            return Next::Stop(StickStop::Invalid(InvalidReason::SingularSlide {
+                t_s: t,
+                entering: true,
+            }));
         }
         let n = self.slide_eval(mode.sigma(), t, &y).fz;
         if n < 0.0 {
@@ -121,7 +125,7 @@ impl StickModel {
     pub fn takeoff(&self, t: f64, y: &State) -> Next {
         let p = &self.p;
         if !self.rate.is_finite() {
-            return Next::Stop(StickStop::Invalid(
+            return Next::Stop(StickStop::invalid(
                 "gamma = 0 with k > 0: the massless rod's angle in flight is undetermined"
                     .to_string(),
             ));
@@ -143,7 +147,7 @@ impl StickModel {
                                                                           // the velocity scale is far above that and far below any real approach.
         let tol_v = 1e-6 * p.plate.peak_velocity_mps().max((p.g_mps2 * l).sqrt());
         if h_d < -tol_v || (h_d <= tol_v && h_dd < 0.0) {
-            return Next::Stop(StickStop::Invalid(format!(
+            return Next::Stop(StickStop::invalid(format!(
                 "lift-off at t = {t:.6} s would drive C into the plate (h_c' = {h_d:.3e} m/s, h_c'' = {h_dd:.3e} m/s^2): no consistent mode"
             )));
         }
@@ -174,7 +178,7 @@ impl StickModel {
             y[TH] = lever; // the document's "after collision theta = theta_0", C kept in place
         }
         match self.impulse_free_landing(t, &y) {
-            None => Next::Stop(StickStop::Invalid(format!(
+            None => Next::Stop(StickStop::invalid(format!(
                 "landing at t = {t:.6} s with the rod vertical outside the friction cone"
             ))),
             Some(a) => {
@@ -194,7 +198,7 @@ impl StickModel {
     pub fn jam(&self, t: f64, y: &State) -> Next {
         let imp = self.sticking_impact(t, y, y[TH]);
         if imp.lambda_ns < 0.0 {
-            return Next::Stop(StickStop::Invalid(format!(
+            return Next::Stop(StickStop::invalid(format!(
                 "jam at t = {t:.6} s would need a tensile impulse (w = {:.3e} m/s)",
                 imp.w_mps
             )));

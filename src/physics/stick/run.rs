@@ -1,10 +1,12 @@
 //! One run of the stick through the hybrid driver, and its summary.
 
 use super::energy::Budget;
-use super::{Mode, State, StickModel, StickStop, NSTATE, OM, TH, VXC, VZC, W_PLATE, XC, ZC};
+use super::{
+    InvalidReason, Mode, State, StickModel, StickStop, NSTATE, OM, TH, VXC, VZC, W_PLATE, XC, ZC,
+};
 use crate::numerics::events::CertifyStats;
 use crate::numerics::hybrid::{simulate, HybridSystem, Observer, Options, Outcome, Segment};
-use crate::numerics::ode::Stats;
+use crate::numerics::ode::{OdeError, Stats};
 
 /// The typed outcome of a run.
 #[derive(Debug, Clone, PartialEq)]
@@ -16,7 +18,7 @@ pub enum StickOutcome {
     /// Events accumulated (Zeno).
     Zeno,
     /// The state left the model's validity (the reason).
-    Invalid(String),
+    Invalid(InvalidReason),
     /// A printed rule (Algorithms 1 to 4) chose ABORT (the rule that fired).
     Aborted(String),
 }
@@ -71,6 +73,10 @@ pub struct Violations {
     pub slip_mps: f64,
     /// Largest `-h_c` in flight (m).
     pub penetration_m: f64,
+    /// Largest `-h_c` in flight over its rounding budget at that state
+    /// ([`StickModel::penetration_budget_m`]); at most 1 when the event location and the
+    /// flight's arithmetic work as derived.
+    pub penetration_budget_ratio: f64,
     /// Largest `|xdot_c|` in pivot (m/s).
     pub pivot_slip_mps: f64,
     /// Accepted steps checked.
@@ -234,7 +240,12 @@ impl Watch<'_> {
         let v = &mut self.sum.violations;
         v.checked += 1;
         match m.contact_eval(mode, t, y) {
-            None => v.penetration_m = v.penetration_m.max(-m.h_c(t, y)),
+            None => {
+                let pen = -m.h_c(t, y);
+                v.penetration_m = v.penetration_m.max(pen);
+                let ratio = pen / m.penetration_budget_m(t, y);
+                v.penetration_budget_ratio = v.penetration_budget_ratio.max(ratio);
+            }
             Some(e) => {
                 v.normal_n = v.normal_n.max(-e.fz);
                 if mode == Mode::Pivot {
@@ -444,7 +455,13 @@ pub fn simulate_system<S: HybridSystem<NSTATE, Mode = Mode, Stop = StickStop>>(
         Outcome::Completed => StickOutcome::Completed,
         Outcome::Stopped(x) => StickOutcome::from_stop(x),
         Outcome::Zeno { .. } => StickOutcome::Zeno,
-        Outcome::Failed(e) => StickOutcome::Invalid(format!("integration failed: {e}")),
+        Outcome::Failed(OdeError::NonFinite { t_s }) => {
+            StickOutcome::Invalid(InvalidReason::NonFinite {
+                t_s,
+                near_vertical: false,
+            })
+        }
+        Outcome::Failed(e) => StickOutcome::Invalid(format!("integration failed: {e}").into()),
     };
     s.end_time_s = run.t_end_s;
     for (m, dt) in &run.mode_time_s {

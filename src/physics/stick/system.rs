@@ -11,8 +11,8 @@
 
 use super::rules::Next;
 use super::{
-    Mode, State, StickModel, StickStop, D_DAMP, D_FRIC, D_IMPACT, FLOW_ARGS, NSTATE, OM, ROD_X,
-    ROD_Z, TH, VXC, W_PLATE, XC,
+    InvalidReason, Mode, State, StickModel, StickStop, D_DAMP, D_FRIC, D_IMPACT, FLOW_ARGS, NSTATE,
+    OM, ROD_X, ROD_Z, TH, VXC, W_PLATE, XC,
 };
 use crate::numerics::events::Direction;
 use crate::numerics::hybrid::{HybridSystem, Transition};
@@ -127,7 +127,7 @@ impl HybridSystem<NSTATE> for StickModel {
         let y = &self.canonical(mode, t, y);
         let next = match (mode, i) {
             (Mode::Flight, 0) => self.landing(t, y),
-            (Mode::Flight, _) => Next::Stop(StickStop::Invalid(format!(
+            (Mode::Flight, _) => Next::Stop(StickStop::invalid(format!(
                 "C went below the plate in flight at t = {t:.6} s (a landing was missed)"
             ))),
             (Mode::Pivot, 3) => Next::Stop(StickStop::Fell),
@@ -136,10 +136,11 @@ impl HybridSystem<NSTATE> for StickModel {
             (_, 1) => self.takeoff(t, y),
             (_, 2) => self.select_contact(t, y),
             (_, 3) => Next::Stop(StickStop::Fell),
-            (_, 4) => Next::Stop(StickStop::Invalid(format!(
-                "the sliding rod reached theta = 0 at t = {t:.6} s: C.14 is singular there"
-            ))),
-            _ => Next::Stop(StickStop::Invalid(format!(
+            (_, 4) => Next::Stop(StickStop::Invalid(InvalidReason::SingularSlide {
+                t_s: t,
+                entering: false,
+            })),
+            _ => Next::Stop(StickStop::invalid(format!(
                 "C slips against the friction force at t = {t:.6} s: no consistent slide"
             ))),
         };

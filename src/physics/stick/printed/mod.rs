@@ -273,7 +273,7 @@ impl PrintedStick {
             }
             Mode::SlideLeft | Mode::SlideRight => {
                 if mode == Mode::SlideLeft && !self.fix(Erratum::SlideLeftTheta) {
-                    return Next::Stop(StickStop::Invalid(format!(
+                    return Next::Stop(StickStop::invalid(format!(
                         "section 4.3, Sliding Left at t = {t:.6} s: \"the variation of the tilt angle is obtained from Eqns. C.10, C.4, thus\" is followed by no equation: theta'' of sliding left is undefined"
                     )));
                 }
@@ -285,7 +285,7 @@ impl PrintedStick {
             return Next::To(mode, y);
         }
         if depth >= 8 {
-            return Next::Stop(StickStop::Invalid(format!(
+            return Next::Stop(StickStop::invalid(format!(
                 "Table 1 caption at t = {t:.6} s: the printed rules re-select 8 times without reaching a phase whose inequalities hold (last: {})",
                 mode.name()
             )));
@@ -302,8 +302,8 @@ impl PrintedStick {
             Mode::SlideLeft => self.alg_slide(Mode::SlideLeft, t, y),
         };
         match res {
-            Err(line) => Next::Stop(StickStop::Invalid(format!("{line} at t = {t:.6} s"))),
-            Ok((None, _)) => Next::Stop(StickStop::Invalid(format!(
+            Err(line) => Next::Stop(StickStop::invalid(format!("{line} at t = {t:.6} s"))),
+            Ok((None, _)) => Next::Stop(StickStop::invalid(format!(
                 "{} at t = {t:.6} s assigns no next phase while an inequality of Table 1 is violated",
                 alg_name(mode)
             ))),
@@ -373,22 +373,22 @@ impl HybridSystem<NSTATE> for PrintedStick {
         self.events.set(self.events.get() + 1);
         let y = &self.m.canonical(mode, t, y);
         let next = if self.events.get() > self.max_events {
-            Next::Stop(StickStop::Invalid(format!(
+            Next::Stop(StickStop::invalid(format!(
                 "event budget of {} events exceeded at t = {t:.6} s",
                 self.max_events
             )))
         } else {
             match (mode, i) {
                 (Mode::Flight, 0) => self.decide(Mode::Flight, t, *y, 0),
-                (Mode::Flight, _) => Next::Stop(StickStop::Invalid(format!(
+                (Mode::Flight, _) => Next::Stop(StickStop::invalid(format!(
                     "C went below the plate in flight at t = {t:.6} s (no printed rule brought it back)"
                 ))),
                 (Mode::Pivot, 3) | (_, 3) => Next::Stop(StickStop::Fell),
                 (Mode::Pivot, _) | (_, 1) | (_, 2) => self.decide(mode, t, *y, 0),
-                (_, 0) => Next::Stop(StickStop::Invalid(format!(
+                (_, 0) => Next::Stop(StickStop::invalid(format!(
                     "C.9/C.11 at t = {t:.6} s: the slide's normal force is unbounded at tan(theta) = sigma mu and no printed rule covers it"
                 ))),
-                _ => Next::Stop(StickStop::Invalid(format!(
+                _ => Next::Stop(StickStop::invalid(format!(
                     "C.14 at t = {t:.6} s divides by sin(theta) = 0"
                 ))),
             }
