@@ -7,6 +7,7 @@
 mod accuracy_sweep;
 mod architecture;
 mod asymmetric_shaking;
+mod chapter_completeness;
 mod cli;
 mod common;
 mod effective_mass;
