@@ -3,8 +3,9 @@
 # port, drives the page in headless Chromium (slider, animation, an invalid value, a click
 # on the speed map, a comparison) and compares the page's numbers and error line with the
 # CLI's. Reports the slider-to-redraw latency. Screenshots land in target/lab-screenshots/.
-# Uses the dev build (what `cargo test` builds); LAB_PROFILE=release tests the release
-# binary (the latency a reader sees with `cargo run --release -- lab`).
+# Uses the release build (what the README's commands build, so `.ci/run` builds no second
+# profile; the latency a reader sees with `cargo run --release -- lab`); LAB_PROFILE=dev
+# tests the dev binary.
 # Installs the Debian package chromium when it is missing (apt-get, about 20 s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,7 +14,7 @@ if ! command -v chromium >/dev/null; then
   apt-get update -qq
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null
 fi
-profile="${LAB_PROFILE:-dev}"
+profile="${LAB_PROFILE:-release}"
 if [ "$profile" = release ]; then
   cargo build --release --locked --bin workbook
   bin=target/release/workbook
