@@ -1,6 +1,6 @@
 //! The command line's grammar: the clap types (global flags, `list`, `all`, `render`,
 //! one subcommand per chapter of the registry, `lab`), the parser [`command`] and the
-//! command line as typed before and after clap ([`argv`]). Nothing here runs anything:
+//! command line as typed before and after clap (`argv.rs`). Nothing here runs anything:
 //! the dispatcher ([`crate::cli`]) and the lab's request parser ([`crate::lab::api`])
 //! both parse with it, so the lab accepts and refuses exactly what the CLI does.
 
