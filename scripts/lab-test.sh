@@ -7,8 +7,9 @@
 # compares the page's numbers and error line with the CLI's (chapters 6 and 8). Reports
 # the slider-to-redraw latency. Screenshots at 1280 and 400 px wide land in
 # target/lab-screenshots/ (look at them).
-# Uses the dev build (what `cargo test` builds); LAB_PROFILE=release tests the release
-# binary (the latency a reader sees with `cargo run --release -- lab`).
+# Uses the release build (what the README's commands build, so `.ci/run` builds no second
+# profile; the latency a reader sees with `cargo run --release -- lab`); LAB_PROFILE=dev
+# tests the dev binary.
 # Installs the Debian package chromium when it is missing (apt-get, about 20 s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,7 +18,7 @@ if ! command -v chromium >/dev/null; then
   apt-get update -qq
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null
 fi
-profile="${LAB_PROFILE:-dev}"
+profile="${LAB_PROFILE:-release}"
 if [ "$profile" = release ]; then
   cargo build --release --locked --bin workbook
   bin=target/release/workbook

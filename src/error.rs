@@ -145,36 +145,6 @@ pub fn positive(flag: &str, value: f64, unit: &str) -> Result<f64> {
     )
 }
 
-/// `value >= 0` and finite.
-pub fn non_negative(flag: &str, value: f64, unit: &str) -> Result<f64> {
-    check(
-        flag,
-        value,
-        |v| v >= 0.0,
-        &format!("a finite number >= 0 ({unit})"),
-    )
-}
-
-/// `lo < value < hi` and finite.
-pub fn open_interval(flag: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result<f64> {
-    check(
-        flag,
-        value,
-        |v| v > lo && v < hi,
-        &format!("{lo} < value < {hi} ({unit})"),
-    )
-}
-
-/// `lo <= value < hi` and finite.
-pub fn half_open(flag: &str, value: f64, lo: f64, hi: f64, unit: &str) -> Result<f64> {
-    check(
-        flag,
-        value,
-        |v| v >= lo && v < hi,
-        &format!("{lo} <= value < {hi} ({unit})"),
-    )
-}
-
 /// `lo <= value <= hi` and finite; the error line gives the range, the unit and why.
 ///
 /// ```
@@ -188,16 +158,6 @@ pub fn range(flag: &str, value: f64, lo: f64, hi: f64, unit: &str, why: &str) ->
         value,
         |v| v >= lo && v <= hi,
         &format!("{} <= value <= {} ({unit}; {why})", num(lo), num(hi)),
-    )
-}
-
-/// `lo <= value < hi` and finite; the error line gives the range, the unit and why.
-pub fn range_below(flag: &str, value: f64, lo: f64, hi: f64, unit: &str, why: &str) -> Result<f64> {
-    check(
-        flag,
-        value,
-        |v| v >= lo && v < hi,
-        &format!("{} <= value < {} ({unit}; {why})", num(lo), num(hi)),
     )
 }
 
@@ -252,14 +212,13 @@ mod tests {
     fn checks_reject_nan_infinities_and_out_of_range() {
         assert!(positive("--length-m", 0.0, "m").is_err());
         assert!(positive("--length-m", f64::INFINITY, "m").is_err());
-        assert!(non_negative("--mu", -0.1, "1").is_err());
-        assert!(open_interval("--angle-deg", 90.0, -90.0, 90.0, "degrees").is_err());
-        assert!(half_open("--bias", 1.0, 0.0, 1.0, "1").is_err());
-        assert_eq!(half_open("--bias", 0.0, 0.0, 1.0, "1"), Ok(0.0));
-        let e = open_interval("--angle-deg", 95.0, -90.0, 90.0, "degrees").unwrap_err();
+        assert!(range("--mu", -0.1, 0.0, 2.0, "1", "dry friction").is_err());
+        assert!(range("--mu", f64::NAN, 0.0, 2.0, "1", "dry friction").is_err());
+        assert_eq!(range("--mu", 2.0, 0.0, 2.0, "1", "dry friction"), Ok(2.0));
+        let e = range("--angle-deg", 95.0, -90.0, 90.0, "degrees", "a leaning rod").unwrap_err();
         assert_eq!(
             e.to_string(),
-            "error: invalid value 95 for --angle-deg: valid range is -90 < value < 90 (degrees)"
+            "error: invalid value 95 for --angle-deg: valid range is -90 <= value <= 90 (degrees; a leaning rod)"
         );
         assert_eq!(e.exit_code(), 2);
     }

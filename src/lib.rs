@@ -18,6 +18,7 @@ pub mod chapters;
 pub mod cli;
 pub mod error;
 pub mod flags;
+pub mod grammar;
 pub mod lab;
 pub mod ladder;
 pub mod numerics;

@@ -20,6 +20,7 @@
 //! approximations (see [`appendix`]).
 
 mod appendix;
+mod lists;
 
 use crate::chapters::{self, Context, CHAPTERS};
 use crate::error::{Result, WorkbookError};
@@ -92,9 +93,11 @@ pub fn table_of(report: &ChapterReport, name: &str) -> Option<String> {
 pub const STALE_EXIT: i32 = 4;
 
 /// Refreshes (or with `check`, verifies) every chapter text in `dir`, the appendix
-/// `dir/errata.md` (its blocks `<chapter-id>:<table>`, see [`appendix`]), and the block
-/// `findings` of the README beside it (`dir/../README.md`, generated from the claims of
-/// every chapter by [`crate::report::findings_markdown`]). Returns the exit code: 0 when
+/// `dir/errata.md` (its blocks `<chapter-id>:<table>`, see [`appendix`]; a registered
+/// chapter without a section gets one), the blocks `findings` (generated from the claims
+/// of every chapter by [`crate::report::findings_markdown`]) and `chapters` (the
+/// registry's table, [`lists`]) of the README beside it (`dir/../README.md`), and the
+/// book's table of contents (`dir/../book/SUMMARY.md`, block `chapters`). Returns the exit code: 0 when
 /// up to date (or refreshed), [`STALE_EXIT`] when `check` found a stale table.
 ///
 /// `dir` is checked before any chapter runs: it must hold course text with generated
@@ -109,7 +112,10 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
     let readme = std::fs::read_to_string(&readme_path)
         .ok()
         .filter(|t| !block_names(t).is_empty());
-    let appendix = appendix::read(dir, check)?;
+    let appendix = appendix::read(dir, check)?.map(|(path, text)| {
+        let extended = appendix::with_missing_sections(&text);
+        (path, text, extended)
+    });
     if texts.is_empty() && appendix.is_none() {
         return Err(WorkbookError::bad_input(
             "--dir",
@@ -124,7 +130,7 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
         let text = texts.iter().find(|(p, _)| *p == chapter_path(dir, info));
         let in_appendix = appendix
             .as_ref()
-            .is_some_and(|(_, t)| appendix::names_chapter(t, info.id));
+            .is_some_and(|(_, _, t)| appendix::names_chapter(t, info.id));
         if text.is_none() && readme.is_none() && !in_appendix {
             continue; // neither its text, the README's findings nor the appendix need it
         }
@@ -138,16 +144,43 @@ pub fn render(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
     }
     if let Some(text) = readme {
         let findings = crate::report::findings_markdown(&reports);
-        let new = fill_blocks(&text, &|n| (n == "findings").then(|| findings.clone()))
-            .map_err(|e| WorkbookError::Io(format!("{}: {e}", readme_path.display())))?;
+        let root = readme_path.parent().unwrap_or_else(|| Path::new(""));
+        let table = lists::readme_table(root);
+        let new = fill_blocks(&text, &|n| match n {
+            "findings" => Some(findings.clone()),
+            lists::BLOCK => Some(table.clone()),
+            _ => None,
+        })
+        .map_err(|e| WorkbookError::Io(format!("{}: {e}", readme_path.display())))?;
         stale += refresh(&readme_path, &text, &new, check, out)?;
     }
-    if let Some((path, text)) = appendix {
-        let new = appendix::fill(&text, &reports)
+    if let Some((path, text, extended)) = appendix {
+        let new = appendix::fill(&extended, &reports)
             .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
         stale += refresh(&path, &text, &new, check, out)?;
     }
+    stale += refresh_summary(dir, check, out)?;
     Ok(if stale > 0 { STALE_EXIT } else { 0 })
+}
+
+/// The book's table of contents beside `dir` (`dir/../book/SUMMARY.md`), when it has
+/// the block `chapters`: the registry's chapters, in course order.
+fn refresh_summary(dir: &Path, check: bool, out: &mut dyn Write) -> Result<i32> {
+    let path = dir
+        .parent()
+        .unwrap_or_else(|| Path::new(""))
+        .join("book")
+        .join("SUMMARY.md");
+    let Some(text) = std::fs::read_to_string(&path)
+        .ok()
+        .filter(|t| block_names(t).iter().any(|n| n == lists::BLOCK))
+    else {
+        return Ok(0);
+    };
+    let lines = lists::summary_lines();
+    let new = fill_blocks(&text, &|n| (n == lists::BLOCK).then(|| lines.clone()))
+        .map_err(|e| WorkbookError::Io(format!("{}: {e}", path.display())))?;
+    refresh(&path, &text, &new, check, out)
 }
 
 /// The course text of chapter `info` in `dir`.

@@ -8,6 +8,7 @@ mod accuracy_sweep;
 mod architecture;
 mod asymmetric_shaking;
 mod ch8_differential;
+mod chapter_completeness;
 mod cli;
 mod common;
 mod effective_mass;

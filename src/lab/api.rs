@@ -7,7 +7,7 @@
 //! saying why; nothing here panics on any input.
 
 use crate::chapters::stick_state_machine::{self as ssm, main_run};
-use crate::cli::{Cli, Command};
+use crate::grammar::{Cli, Command};
 use crate::flags::Flag;
 use crate::numerics::hybrid::Options;
 use crate::physics::domain::Interval;
@@ -206,7 +206,7 @@ fn clip(s: &str) -> String {
 
 /// The one line the CLI prints for a clap error: the same text as `workbook` on stderr.
 pub fn clap_line(e: &clap::Error) -> String {
-    crate::cli::clap_error_line(e)
+    crate::grammar::clap_error_line(e)
 }
 
 /// Parses and validates a request body: the CLI's parser, the chapter's `setup` (its
@@ -216,7 +216,7 @@ pub fn parse_run(body: &[u8]) -> Result<RunRequest, ApiError> {
         return Err(too_large(body.len()));
     }
     let (argv, seq) = to_argv(body)?;
-    let matches = crate::cli::command()
+    let matches = crate::grammar::command()
         .try_get_matches_from(&argv)
         .map_err(|e| ApiError::bad(clap_line(&e)))?;
     let cli = Cli::from_arg_matches(&matches).map_err(|e| ApiError::bad(clap_line(&e)))?;

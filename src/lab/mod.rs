@@ -19,25 +19,8 @@ pub mod simulate;
 
 use crate::error::{Result, WorkbookError};
 use std::io::Write;
-use std::net::IpAddr;
 
-/// Default port of the lab.
-pub const DEFAULT_PORT: u16 = 8023;
-
-/// Flags of `workbook lab`.
-#[derive(clap::Args, Debug, Clone)]
-pub struct Args {
-    /// TCP port to listen on (0: any free port; the address is printed).
-    #[arg(long, default_value_t = DEFAULT_PORT)]
-    pub port: u16,
-    /// IP address to bind. The default, 127.0.0.1, lets only this computer in; any
-    /// other address is announced on stderr, since the lab has no authentication.
-    #[arg(long, default_value = "127.0.0.1")]
-    pub host: IpAddr,
-    /// Open the page in the default web browser.
-    #[arg(long)]
-    pub open: bool,
-}
+pub use crate::grammar::{LabArgs as Args, DEFAULT_PORT};
 
 /// Runs the lab until interrupted (Ctrl-C). Prints the address on `out`; all printing
 /// happens on the calling thread.

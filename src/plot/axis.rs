@@ -45,6 +45,11 @@ impl Ranged for Ticked {
 /// A point in axis units (log10 already applied where the axis is logarithmic).
 pub type Pt = (f64, f64);
 
+/// The chart context type of the style (linear axes in axis units with fixed ticks),
+/// used by `chart` to draw axes and by `series` to draw into them.
+pub(super) type Ctx<'a, DB> =
+    plotters::chart::ChartContext<'a, DB, plotters::coord::cartesian::Cartesian2d<Ticked, Ticked>>;
+
 /// Maps a data value to axis units: `log10(v)` on a log axis (None for v <= 0),
 /// the value itself otherwise; None for NaN and infinities.
 pub fn to_axis(v: f64, log: bool) -> Option<f64> {

@@ -1,6 +1,6 @@
 //! Drawing a [`Chart`] into any plotters area.
 
-use super::axis::{self, Pt, Ticked};
+use super::axis::{self, Ctx, Pt, Ticked};
 use super::layout;
 use super::series::draw_series;
 use super::{color, font, Chart, Kind, Legend, GRID, LABEL_PX, REFERENCE, TICK_PX, TITLE_PX};
@@ -16,9 +16,6 @@ const BAND: [RGBColor; 5] = [
     RGBColor(204, 121, 167),
     RGBColor(240, 228, 66),
 ];
-
-/// The chart context type of the style (linear axes in axis units with fixed ticks).
-pub(super) type Ctx<'a, DB> = ChartContext<'a, DB, Cartesian2d<Ticked, Ticked>>;
 
 /// Builds the house-style chart on `area`: caption `title`, margins, label areas, and
 /// axes over `bx = (x0, x1, y0, y1)` (axis units) with the ticks of [`ticks`] for `logs`

@@ -1,8 +1,7 @@
 //! Data series drawn into a chart: lines clipped to the frame, markers in four shapes,
 //! legend entries.
 
-use super::axis::{self, Pt};
-use super::chart::Ctx;
+use super::axis::{self, Ctx, Pt};
 use super::{Kind, Series};
 use plotters::prelude::*;
 

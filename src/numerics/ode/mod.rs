@@ -19,6 +19,8 @@
 
 mod common;
 mod dop853;
+mod dop853_dense;
+mod dop853_tableau;
 mod dopri5;
 mod euler;
 mod integrator;

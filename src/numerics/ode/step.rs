@@ -3,7 +3,7 @@
 // Index loops run over several arrays of the same length at once (y0, y1, f0, f1, r).
 #![allow(clippy::needless_range_loop)]
 
-use super::{dop853, OdeSystem};
+use super::{dop853_dense, OdeSystem};
 
 /// The interpolant of one step.
 #[derive(Debug, Clone)]
@@ -15,7 +15,7 @@ pub(super) enum Interp<const N: usize> {
     /// Dormand-Prince continuous extension: `r[0..4]` of Hairer's `contd5`.
     Dopri { r: [[f64; N]; 4] },
     /// DOP853's stages; its continuous extension is built on first use.
-    Dop853(dop853::Lazy<N>),
+    Dop853(dop853_dense::Lazy<N>),
 }
 
 /// One accepted step `t0 -> t1` with its dense output.
@@ -85,7 +85,9 @@ impl<const N: usize> Step<N> {
                         self.y0[i] + s * (r[0][i] + s1 * (r[1][i] + s * (r[2][i] + s1 * r[3][i])));
                 }
             }
-            Interp::Dop853(lazy) => return lazy.eval(sys, self, s, args),
+            Interp::Dop853(lazy) => {
+                return lazy.eval(sys, (self.t0, self.t1, &self.y0, &self.y1), s, args)
+            }
         }
         out
     }

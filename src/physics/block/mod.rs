@@ -139,13 +139,6 @@ pub enum BlockMode {
     Flight,
 }
 
-impl BlockMode {
-    /// True for every mode but [`BlockMode::Flight`].
-    pub fn in_contact(self) -> bool {
-        self != BlockMode::Flight
-    }
-}
-
 /// The block never stops a run by itself; the type exists for the driver's contract.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum BlockStop {}

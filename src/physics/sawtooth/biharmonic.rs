@@ -42,13 +42,6 @@ pub fn stick_forever_gamma(eps: f64) -> f64 {
     1.0 / peak_acceleration(eps) // formula: V omega max|f'| <= mu g
 }
 
-/// Drift in units of `V` in the limit `Gamma -> infinity`: the median of `f`, which is
-/// `eps` for `|eps| < 1/2` (`f - eps = sin(theta) (1 - 2 eps sin(theta))` has the sign of
-/// `sin(theta)`). `None` outside that range.
-pub fn slip_limit_drift(eps: f64) -> Option<f64> {
-    (eps.abs() < 0.5).then_some(eps) // formula: v_d -> eps V
-}
-
 /// The always-slipping periodic orbit of a Coulomb block on the bi-harmonic drive.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SlipOrbit {
@@ -146,9 +139,7 @@ mod tests {
                 (above as f64 / n as f64 - 0.5).abs() <= 2.0 / n as f64,
                 "eps {eps}"
             );
-            assert_eq!(slip_limit_drift(eps), Some(eps));
         }
-        assert_eq!(slip_limit_drift(0.6), None);
     }
 
     #[test]

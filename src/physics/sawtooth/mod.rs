@@ -131,11 +131,6 @@ pub fn lock_time_s(s: &Sawtooth, k_mps2: f64, v0_mps: f64) -> f64 {
     n * s.period_s() + (a - vn) / k_mps2 // formula: t* = n T + (a - v_n)/k
 }
 
-/// Whole always-slipping periods before the lock (see [`lock_time_s`]).
-pub fn periods_before_lock(s: &Sawtooth, k_mps2: f64, v0_mps: f64) -> f64 {
-    (lock_time_s(s, k_mps2, v0_mps) / s.period_s()).floor()
-}
-
 /// The smallest `mu` for which a block starting at rest locks within `n_max` periods
 /// (g in m/s^2): from `a - k T_s <= n_max k (T_s - T_f)`.
 pub fn mu_min_for_lock(s: &Sawtooth, g_mps2: f64, n_max: f64) -> f64 {

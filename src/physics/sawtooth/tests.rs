@@ -81,12 +81,13 @@ fn lock_time_from_rest_by_hand() {
     let v1 = k * 0.02;
     assert!((slipping_impulse_per_mass(&s, k) - v1).abs() < 1e-15);
     assert!((lock_time_s(&s, k, 0.0) - (0.04 + (0.1 - v1) / k)).abs() < 1e-15);
-    assert_eq!(periods_before_lock(&s, k, 0.0), 1.0);
-    // a block already close to a locks in the first slow stroke
+    assert_eq!((lock_time_s(&s, k, 0.0) / s.period_s()).floor(), 1.0); // whole periods before the lock
+                                                                       // a block already close to a locks in the first slow stroke
     assert!((lock_time_s(&s, k, 0.09) - 0.01 / k).abs() < 1e-15);
     // the lower bound on mu gives exactly n_max periods
     let mu = mu_min_for_lock(&s, 9.81, 1000.0);
-    assert!((periods_before_lock(&s, mu * 9.81 * (1.0 + 1e-9), 0.0) - 1000.0).abs() <= 1.0);
+    let periods = (lock_time_s(&s, mu * 9.81 * (1.0 + 1e-9), 0.0) / s.period_s()).floor();
+    assert!((periods - 1000.0).abs() <= 1.0);
 }
 
 #[test]

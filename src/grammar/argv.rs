@@ -26,7 +26,7 @@ pub fn clap_error_line(e: &clap::Error) -> String {
 
 /// The error line for an argument that is not UTF-8, naming its flag (`--x VALUE` or
 /// `--x=VALUE`); clap's own message names none.
-pub(super) fn non_utf8_value(args: &[OsString]) -> Option<String> {
+pub(crate) fn non_utf8_value(args: &[OsString]) -> Option<String> {
     let i = args.iter().skip(1).position(|a| a.to_str().is_none())? + 1;
     let bytes = args[i].as_encoded_bytes();
     let flag = if bytes.starts_with(b"--") {
@@ -48,7 +48,7 @@ pub(super) fn non_utf8_value(args: &[OsString]) -> Option<String> {
 /// (`--theta0-rad -.3` into `--theta0-rad=-.3`): clap takes a leading `-` for a flag
 /// unless the text looks like a plain decimal, and refuses `-.5` or `-3e-1`. Only a
 /// token that parses as a number is joined, so no flag can be swallowed.
-pub(super) fn join_negative_values(cmd: &clap::Command, args: Vec<OsString>) -> Vec<OsString> {
+pub(crate) fn join_negative_values(cmd: &clap::Command, args: Vec<OsString>) -> Vec<OsString> {
     fn value_flags(cmd: &clap::Command, names: &mut Vec<String>) {
         for a in cmd.get_arguments() {
             if let (Some(long), true) = (a.get_long(), a.get_action().takes_values()) {
