@@ -7,8 +7,8 @@
 //! saying why; nothing here panics on any input.
 
 use crate::chapters::stick_state_machine::{self as ssm, main_run};
-use crate::grammar::{Cli, Command};
 use crate::flags::Flag;
+use crate::grammar::{Cli, Command};
 use crate::numerics::hybrid::Options;
 use crate::physics::domain::Interval;
 use crate::physics::stick::StickParams;

@@ -1,7 +1,7 @@
 //! The build exercises (exercise N.5 of each chapter): the student implements a function
 //! in `student.rs`, the checks below compare it with an independent answer. The same
 //! checks run on the reference solutions (`solutions.rs`) in every `cargo test`; on the
-//! student's code they run with `cargo test --test exercises -- --ignored yours`.
+//! student's code they run with `cargo test --release --test exercises -- --ignored yours`.
 //!
 //! Independent answers: closed forms derived in the chapters (the rod's impulse ratio,
 //! the arcsine friction law, the dither drift, the flights of whole periods, the
@@ -292,7 +292,7 @@ macro_rules! build_exercise {
             $check::<Reference>();
         }
         #[test]
-        #[ignore = "your implementation in tests/exercises/student.rs: cargo test --test exercises -- --ignored yours"]
+        #[ignore = "your implementation in tests/exercises/student.rs: cargo test --release --test exercises -- --ignored yours"]
         fn $yours() {
             $check::<Yours>();
         }

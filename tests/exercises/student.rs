@@ -3,8 +3,8 @@
 //! Fill in one function at a time, then run its check:
 //!
 //! ```sh
-//! cargo test --test exercises -- --ignored yours_1_5      # one exercise
-//! cargo test --test exercises -- --ignored yours          # all of yours
+//! cargo test --release --test exercises -- --ignored yours_1_5      # one exercise
+//! cargo test --release --test exercises -- --ignored yours          # all of yours
 //! ```
 //!
 //! Each check compares your function with an independent answer (a closed form, or the
