@@ -60,7 +60,7 @@ pub fn linear_average_force(doc: &Statements, ev: &Evidence) -> Claim {
         Check::Consistency,
         "linear-average-force",
         "3.2.1",
-        "0 = F_ave = -c (v_obj_ave - v_sup_ave): over any window the mean friction force is -c times the mean relative velocity, so <v> = <v_p> - (v(t1) - v(t0))/(c (t1 - t0)); checked over the first two periods from rest (still in the transient). Consistency check: the identity is the integral of the model's own linear-friction equation m v' = -c (v - v_p); no document could fail it here (issue 21), so it is not counted as confirmation.",
+        "0 = F_ave = -c (v_obj_ave - v_sup_ave): over any window the mean friction force is -c times the mean relative velocity, so <v> = <v_p> - (v(t1) - v(t0))/(c (t1 - t0)); checked over the first two periods from rest (still in the transient). Consistency check: the identity is the integral of the model's own linear-friction equation m v' = -c (v - v_p); no document could fail it here, so it is not counted as confirmation.",
     )
     .close(identity / doc.linear_force_factor, early.mean_velocity_mps, ev.tol.lin_mps)
 }

@@ -34,7 +34,7 @@ pub fn flight_needs_gamma(_doc: &Statements, ev: &Evidence) -> Claim {
         Check::Consistency,
         "flight-needs-gamma-above-1",
         "3.1.2",
-        "Flight needs a peak plate acceleration δ_z ω² > g: no take-off in 50 periods at Γ = 0.999, take-off at Γ = 1.001 (of the printed threshold). Consistency check: the block model's take-off guard is the plate acceleration reaching -g, the stated inequality itself; no document could fail it here (issue 21), so it is not counted as confirmation.",
+        "Flight needs a peak plate acceleration δ_z ω² > g: no take-off in 50 periods at Γ = 0.999, take-off at Γ = 1.001 (of the printed threshold). Consistency check: the block model's take-off guard is the plate acceleration reaching -g, the stated inequality itself; no document could fail it here, so it is not counted as confirmation.",
     )
     .exact("false, true", format!("{below}, {above}").as_str())
 }
@@ -47,7 +47,7 @@ pub fn takeoff(doc: &Statements, ev: &Evidence) -> Claim {
         Check::Consistency,
         "takeoff-phase",
         "3.1.2 (derived)",
-        "The block leaves the plate when the plate's acceleration reaches -g: sin(ω t) = 1/Γ (first take-off from rest; located event; 1e-9 rad: event located to ~1e-13 rad). Consistency check: the located take-off is the zero of the model's guard g + z_s'' = 0, i.e. sin(ω t) = 1/Γ by construction; no document could fail it here (issue 21), so it is not counted as confirmation.",
+        "The block leaves the plate when the plate's acceleration reaches -g: sin(ω t) = 1/Γ (first take-off from rest; located event; 1e-9 rad: event located to ~1e-13 rad). Consistency check: the located take-off is the zero of the model's guard g + z_s'' = 0, i.e. sin(ω t) = 1/Γ by construction; no document could fail it here, so it is not counted as confirmation.",
     )
     .close(
         (doc.takeoff_factor / ev.scene.gamma).asin(),
@@ -83,7 +83,7 @@ pub fn viscous_constant(doc: &Statements, ev: &Evidence) -> Claim {
     let cs = &ev.fast.cs;
     // The document's law v_ave = F v_z/(m g) gives c = g/v_z ~ omega^(-1) at fixed
     // delta_z. The law itself is off by +14.4 % at Gamma = 2 and by up to 15 % in
-    // windows of Gamma in [10, 40] (issue 21), which bends the slope there (1/omega^1.1
+    // windows of Gamma in [10, 40], which bends the slope there (1/omega^1.1
     // passed a test over 1 to 8 x); from Gamma = 128 on it is within 1 %. So the
     // exponent is fitted between 8 and 32 x the frequency (Gamma = 128 and 2048):
     // p = -ln(c_32/c_8)/ln 4, tolerance ln(1.01^2)/ln 4 = 0.0144 (1 % at either end);
@@ -117,7 +117,7 @@ pub fn sliding_contact(doc: &Statements, ev: &Evidence) -> Claim {
         Check::Consistency,
         "sliding-contact-full-friction",
         "3.1.2",
-        "If the block slides during contact, the average horizontal force is μ times the average vertical force m g (flights and impacts included): vertical vibration does not reduce sliding friction. Mean friction / (μ x mean normal force) of a block kept sliding over 60 periods (1e-9: round-off of closed-form phases and located events): Consistency check: the model's sliding friction is μ N at every instant, so its averages are in ratio μ by construction; no document could fail it here (issue 21), so it is not counted as confirmation.",
+        "If the block slides during contact, the average horizontal force is μ times the average vertical force m g (flights and impacts included): vertical vibration does not reduce sliding friction. Mean friction / (μ x mean normal force) of a block kept sliding over 60 periods (1e-9: round-off of closed-form phases and located events): Consistency check: the model's sliding friction is μ N at every instant, so its averages are in ratio μ by construction; no document could fail it here, so it is not counted as confirmation.",
     )
     .values(doc.sliding_factor, ratio, 1e-9)
     .confirmed_if(always_slides && (ratio - doc.sliding_factor).abs() <= 1e-9)
@@ -322,7 +322,7 @@ pub fn chladni_threshold(doc: &Statements, ev: &Evidence) -> Claim {
         "chladni-drift-threshold",
         "3.1.2",
         &format!(
-            "A block pushed by a bias b μ m g on a vertically vibrating plate drifts once Γ > 1 - b, not only once it flies (Γ > 1): the normal force m g (1 - Γ sin(ω t)) falls to m g (1 - Γ), and friction can no longer hold the bias there. b = {BIAS}: the threshold located by bisection on the block model's mean velocity (tolerance: the last bracket's half-width). Consistency check: the block model's stick test with the normal force m g (1 - Γ sin(ω t)) is the stated argument, so its threshold is 1 - b by construction; no document could fail it here (issue 21), so it is not counted as confirmation."
+            "A block pushed by a bias b μ m g on a vertically vibrating plate drifts once Γ > 1 - b, not only once it flies (Γ > 1): the normal force m g (1 - Γ sin(ω t)) falls to m g (1 - Γ), and friction can no longer hold the bias there. b = {BIAS}: the threshold located by bisection on the block model's mean velocity (tolerance: the last bracket's half-width). Consistency check: the block model's stick test with the normal force m g (1 - Γ sin(ω t)) is the stated argument, so its threshold is 1 - b by construction; no document could fail it here, so it is not counted as confirmation."
         ),
     )
     .close(closed, ev.chladni.threshold.0, ev.chladni.threshold_accuracy)

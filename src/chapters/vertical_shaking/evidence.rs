@@ -202,7 +202,7 @@ fn fast_limits(scene: &Scene, quick: bool) -> FastLimits {
         cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
     }
     // the viscous constant further out, where the law's windows (up to +-15 % of
-    // error, issue 21) weigh less against the change in c: to 64 x the frequency
+    // error) weigh less against the change in c: to 64 x the frequency
     for k in [16.0, 32.0] {
         let s = at(k);
         // a flight lasts ~ 2 v_z/g = Gamma/pi periods: the window holds 40 of them
