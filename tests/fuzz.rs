@@ -477,7 +477,7 @@ fn fuzzed_inputs_keep_the_contract() {
 #[test]
 #[ignore = "minutes long: scripts/fuzz-long.sh"]
 fn long_fuzz_has_no_exit_1() {
-    let seed: u64 = env_or("WORKBOOK_FUZZ_SEED", 0x1_0c0_2026);
+    let seed: u64 = env_or("WORKBOOK_FUZZ_SEED", 0x10c0_2026);
     let n: usize = env_or("WORKBOOK_FUZZ_CASES", 400);
     let budget = Duration::from_secs(env_or("WORKBOOK_FUZZ_SECONDS", 240));
     let bin: String = env_or(

@@ -2,10 +2,10 @@
 //! ([`Statements`]) and the chapter's runs ([`Evidence`]).
 
 use super::chladni::{BIAS, GAMMA0};
-use super::evidence::{Evidence, RangeStat};
+use super::evidence::{Evidence, RangeStat, FAST_FACTORS};
 use super::statements::Statements;
 use crate::report::{Check, Claim};
-use std::f64::consts::PI;
+use std::f64::consts::{PI, TAU};
 
 /// Every claim of the chapter, in the report's order.
 pub fn all(doc: &Statements, ev: &Evidence) -> Vec<Claim> {
@@ -78,33 +78,51 @@ pub fn contact_fraction(doc: &Statements, ev: &Evidence) -> Claim {
     .confirmed_if(decreasing && (last - doc.contact_limit).abs() <= tol_f)
 }
 
-/// The effective viscous constant c = F/v_ave -> 0 as 1/omega at fixed delta_z.
+/// The effective viscous constant c = F/v_ave -> 0 as 1/omega at fixed delta_z, judged
+/// over the whole range run (Gamma = 2 to 2048).
 pub fn viscous_constant(doc: &Statements, ev: &Evidence) -> Claim {
     let cs = &ev.fast.cs;
-    // The document's law v_ave = F v_z/(m g) gives c = g/v_z ~ omega^(-1) at fixed
-    // delta_z. The law itself is off by +14.4 % at Gamma = 2 and by up to 15 % in
-    // windows of Gamma in [10, 40], which bends the slope there (1/omega^1.1
-    // passed a test over 1 to 8 x); from Gamma = 128 on it is within 1 %. So the
-    // exponent is fitted between 8 and 32 x the frequency (Gamma = 128 and 2048):
-    // p = -ln(c_32/c_8)/ln 4, tolerance ln(1.01^2)/ln 4 = 0.0144 (1 % at either end);
-    // a law off by 10 % in the exponent is 0.1 away.
-    let ratio = cs[5] / cs[3];
-    let p_fit = -ratio.ln() / 4f64.ln(); // formula: p = -ln(c_32/c_8)/ln 4
-    let expected = doc.c_exponent;
-    let tol_c = (1.01f64 * 1.01).ln() / 4f64.ln();
+    // The document's law v_ave = F v_z/(m g) gives c = g/v_z, v_z = delta_z omega: c
+    // ~ omega^(-1) at fixed delta_z. Its ratio to the simulated c, r = c v_z/g (1 for
+    // the law), at 1, 2, 4, 8, 16, 32 x the frequency (Gamma = 2 k^2).
+    let omega1 = TAU * ev.scene.frequency_hz;
+    let r: Vec<f64> = cs
+        .iter()
+        .zip(FAST_FACTORS)
+        .map(|(&c, k)| {
+            let (omega, gamma) = (k * omega1, 2.0 * k * k);
+            c * gamma / omega // formula: r = c v_z/g = c (Gamma g/omega)/g
+        })
+        .collect();
+    // The exponent over the whole range, p = ln(c_1/c_32)/ln 32, is 1 + ln(r_1/r_32)/ln 32:
+    // within ln(r_max/r_min)/ln 32 of 1 however r wanders between the ends (the spread
+    // of the law's error over the range is the tolerance, not a window picked for it).
+    let n = cs.len() - 1;
+    let span = FAST_FACTORS[n] / FAST_FACTORS[0];
+    let p_fit = (cs[0] / cs[n]).ln() / span.ln(); // formula: p = ln(c_1/c_32)/ln 32
+    let (r_min, r_max) = r
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+    let tol = (r_max / r_min).ln() / span.ln(); // formula: ln(r_max/r_min)/ln 32
+    let errors: Vec<String> = r
+        .iter()
+        .zip(FAST_FACTORS)
+        .map(|(x, k)| format!("{:+.1} % at Γ = {}", 100.0 * (x - 1.0), 2.0 * k * k))
+        .collect();
+    let decreasing = cs.windows(2).all(|w| w[1] < w[0]);
     Claim::draft(
         Check::Simulation,
         "viscous-constant-to-zero",
         "3.1.2",
         &format!(
-            "The effective viscous constant c = F/v_ave goes to zero as ω grows at fixed δ_z, as 1/ω by the document's law (c = g/v_z): c (1/s) from Γ = 2 at 1, 2, 4, 8, 16, 32 x the frequency (Γ up to 2048, windows of 40 flights) = {}; the exponent p of c ~ ω^-p fitted between 8 and 32 x (Γ = 128 to 2048, where the law is within 1 %; below, its +14.4 % at Γ = 2 and windows of up to 15 % for Γ in [10, 40] bend the slope) against 1, tolerance ln(1.01²)/ln 4 = 0.0144.",
-            cs.iter().map(|c| format!("{c:.4}")).collect::<Vec<_>>().join(", ")
+            "As printed: the effective viscous constant c = F/v_ave goes to zero as ω -> ∞ (at fixed δ_z), as 1/ω by the document's law c = m g/v_z. c does fall: from Γ = 2 at 1, 2, 4, 8, 16, 32 x the frequency (Γ up to 2048, windows of 40 flights at least) c = {} 1/s. As 1/ω it is an approximation: the law's error c v_z/g - 1 over the whole range is {} (not within 1 % anywhere: the take-off speed is below δ_z ω at the touch-and-go landings of fast shaking, and the flights are not of whole periods). The exponent of c ~ ω^-p over the whole range, p = ln(c_1/c_32)/ln 32 = {p_fit:.4}, against 1 with tolerance ln(r_max/r_min)/ln 32 = {tol:.4} (the spread of the law's error between the ends of the range).",
+            cs.iter().map(|c| format!("{c:.4}")).collect::<Vec<_>>().join(", "),
+            errors.join(", ")
         ),
     )
-    .values(expected, p_fit, tol_c)
-    .confirmed_if(
-        cs.windows(2).all(|w| w[1] < w[0]) == (doc.c_exponent > 0.0)
-            && (p_fit - expected).abs() <= tol_c,
+    .values(doc.c_exponent, p_fit, tol)
+    .approximation_if(
+        decreasing == (doc.c_exponent > 0.0) && (p_fit - doc.c_exponent).abs() <= tol,
     )
 }
 
@@ -351,25 +369,47 @@ pub fn chladni_patterns(_doc: &Statements, ev: &Evidence) -> Claim {
 
 /// "With an applied sideways load that is less than mu times the average normal force,
 /// there is motion during the flight phase that is extinguished at the next collision":
-/// with Coulomb friction at the impact it holds only below b* (closed form of
-/// [`super::landing`]), located on the exact model by bisection on the bias.
+/// with Coulomb friction at the impact it holds only below b*(Gamma) (closed form of
+/// [`super::landing`]), given over Gamma in (1, Gamma_1) and located on the exact model
+/// by bisection on the bias at the checked Gamma.
 pub fn landing_sticks(doc: &Statements, ev: &Evidence) -> Claim {
-    let ((located, half), closed) = ev.landing;
-    let closed = doc.landing_closed_form_factor * closed;
-    // The located b* is known to its last bracket; the closed form to round-off (60
-    // halvings; the flight by 200 bisections): the bracket plus 1e-9.
-    let tol = half + 1e-9;
-    let printed_holds = located >= doc.landing_stick_bound;
-    let corrected_holds = (located - closed).abs() <= tol;
+    // Tolerance per checked Gamma: the located b*'s last bracket, plus the closed form's
+    // bracket (2^-60) and its rounding (1000 ulps: the flight's bisection, the margin's sums).
+    let slack = (2f64).powi(-60) + 1e3 * f64::EPSILON;
+    let mut corrected_holds = !ev.landing.is_empty();
+    let mut printed_holds = true;
+    let mut last = (0.0, 0.0, 0.0);
+    let mut checked = Vec::new();
+    for p in &ev.landing {
+        let closed = doc.landing_closed_form_factor * p.closed;
+        let b_star = p.located.map_or(closed, |(l, _)| l);
+        printed_holds &= b_star >= doc.landing_stick_bound;
+        if let Some((located, half)) = p.located {
+            let tol = half + slack;
+            corrected_holds &= (located - closed).abs() <= tol;
+            checked.push(format!(
+                "Γ = {}: {located:.4} ± {half:.1e} (closed form {closed:.4})",
+                p.gamma
+            ));
+            last = (closed, located, tol);
+        }
+    }
+    let law: Vec<String> = ev
+        .landing
+        .iter()
+        .map(|p| format!("{:.3} at Γ = {}", p.closed, p.gamma))
+        .collect();
     let draft = Claim::draft(
         Check::SecondMethod,
         "landing-extinguishes-flight-motion",
         "3.1.2",
         &format!(
-            "As printed: for a sideways load F < μ m g the motion gained in flight is extinguished at the next collision (the law's 'instantaneous sticking collisions'). With Coulomb friction at the impact (e = 0, tangential impulse at most μ times the normal one) it holds only while the sideways speed at landing, gained by slip before take-off and by the bias in flight, is at most μ |v_n|: for F < b* μ m g, b* = {closed:.4} at Γ = 2 (closed form: slip from sin(ω t_s) = (1 - b)/Γ to the take-off, ballistic flight, landing speed v_n; μ cancels). Located on the exact model by bisection on b (first landing after a take-off from rest sticks or not): {located:.4} ± {half:.1e}. Above b*, the landing slides and the law's sticking-collision picture fails although F < μ m g: an unstated assumption (small F), not an error of the law's range."
+            "As printed: for a sideways load F < μ m g the motion gained in flight is extinguished at the next collision (the law's 'instantaneous sticking collisions'). With Coulomb friction at the impact (e = 0, tangential impulse at most μ times the normal one) it holds only while the sideways speed at landing, gained by slip before take-off and by the bias in flight, is at most μ |v_n|: for F < b*(Γ) μ m g (closed form: slip from sin(ω t_s) = (1 - b)/Γ to the take-off, ballistic flight, landing speed v_n; μ cancels). The law over Γ (the block rests between flights up to Γ₁ = 3.297): b* = {}; b* -> 0 as Γ -> 1 (the flight shrinks to nothing while the slip before take-off does not), so near the flight threshold almost any sideways load slides through the landings. Located on the exact model by bisection on b (first landing after a take-off from rest sticks or not): {}. Above b*, the landing slides and the law's sticking-collision picture fails although F < μ m g: an unstated assumption (F small against b*(Γ) μ m g), not an error of the law's range.",
+            law.join(", "),
+            checked.join("; ")
         ),
     )
-    .values(closed, located, tol);
+    .values(last.0, last.1, last.2);
     if printed_holds {
         draft.confirmed_if(corrected_holds)
     } else {

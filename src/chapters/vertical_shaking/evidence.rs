@@ -48,16 +48,44 @@ pub struct Evidence {
     pub doublings: Vec<(u32, f64, f64, String, String)>,
     /// The Chladni demonstration.
     pub chladni: Chladni,
-    /// The largest bias (fraction of mu m g) whose landing after a flight from rest
-    /// sticks, at Gamma = 2: located on the exact model `(b*, half bracket)`, and the
-    /// closed form of [`super::landing`].
-    pub landing: ((f64, f64), f64),
+    /// The law b*(Gamma): the largest bias (fraction of mu m g) whose landing after a
+    /// flight from rest sticks, over Gamma in (1, Gamma_1): per Gamma, the closed form of
+    /// [`super::landing`] and, at the checked values, the bisection on the exact model
+    /// `(b*, half-width of its last bracket)`.
+    pub landing: Vec<LandingPoint>,
     /// The law's decomposition: per Gamma, the drifts of the exact model, sticking
     /// impacts, no contact slip, and the four steps to the law (m/s).
     pub decomposition: Vec<[f64; 8]>,
     /// The work-precision ladder.
     pub work: Vec<WorkPoint>,
 }
+
+/// One point of the law b*(Gamma).
+#[derive(Debug, Clone, Copy)]
+pub struct LandingPoint {
+    /// Gamma.
+    pub gamma: f64,
+    /// The closed form's b*.
+    pub closed: f64,
+    /// The exact model's b* and the half-width of its bracket, where checked.
+    pub located: Option<(f64, f64)>,
+}
+
+/// The Gamma of the law b*(Gamma) (all below Gamma_1 = 3.297, where the block rests
+/// between flights) and, marked true, the ones also located on the exact model.
+pub const LANDING_GAMMAS: [(f64, bool); 8] = [
+    (1.05, false),
+    (1.2, true),
+    (1.5, false),
+    (2.0, true),
+    (2.5, false),
+    (3.0, true),
+    (3.2, false),
+    (3.29, false),
+];
+
+/// The frequency factors of [`FastLimits::cs`] (Gamma = 2 k^2 at fixed delta_z).
+pub const FAST_FACTORS: [f64; 6] = [1.0, 2.0, 4.0, 8.0, 16.0, 32.0];
 
 /// Contact fraction and viscous constant as omega grows at fixed delta_z.
 #[derive(Debug, Clone)]
@@ -156,18 +184,30 @@ pub fn gather(scene: &Scene, quick: bool) -> Evidence {
         law_range: law_range(scene, quick),
         doublings: doublings(scene, quick),
         chladni: demonstrate(scene, quick, transient, observe),
-        landing: {
-            let at2 = scene.at_gamma(2.0);
-            let iters = if quick { 12 } else { 20 };
-            (
-                super::landing::located_bound(&at2, iters),
-                super::landing::closed_form_bound(&at2),
-            )
-        },
+        landing: landing_law(scene, quick),
         decomposition: decomposition(scene, transient, observe),
         work: work_precision(scene, quick),
         stats,
     }
+}
+
+/// The law b*(Gamma) at [`LANDING_GAMMAS`]: the closed form everywhere, the exact
+/// model's bisection (12 halvings quick, 20 full) where marked (quick: at Gamma = 2
+/// only).
+fn landing_law(scene: &Scene, quick: bool) -> Vec<LandingPoint> {
+    let iters = if quick { 12 } else { 20 };
+    LANDING_GAMMAS
+        .iter()
+        .map(|&(gamma, check)| {
+            let at = scene.at_gamma(gamma);
+            let check = check && (!quick || gamma == 2.0);
+            LandingPoint {
+                gamma,
+                closed: super::landing::closed_form_bound(&at),
+                located: check.then(|| super::landing::located_bound(&at, iters)),
+            }
+        })
+        .collect()
 }
 
 /// Does the block take off within 50 periods at `gamma`?

@@ -9,7 +9,7 @@ use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment, Tra
 /// (the default, 4 ulps of each event's own time) otherwise.
 pub fn time_tolerance_of_run(t0_s: f64, t_end_s: f64) -> Option<f64> {
     let t_max = t0_s.abs().max(t_end_s.abs());
-    (t_max < 1.0 && t_max > 0.0).then(|| 4.0 * f64::EPSILON * t_max) // formula: 4 eps max|t|
+    (t_max < 1.0 && t_max > 0.0).then_some(4.0 * f64::EPSILON * t_max) // formula: 4 eps max|t|
 }
 use crate::numerics::ode::Stats;
 use crate::physics::plate::PlateMotion;
