@@ -6,7 +6,8 @@
 #
 #   scripts/fuzz-long.sh [SECONDS] [CASES_PER_CHAPTER] [SEED]
 #
-# Defaults: 240 s, 400 cases per chapter, the test's fixed seed. Run it before a change
+# Defaults: 240 s, 400 cases per chapter, the test's fixed seed, one worker per core
+# (WORKBOOK_FUZZ_JOBS to change). Run it before a change
 # to a model, a tolerance or a flag range; the per-chapter fuzz in `cargo test` is its
 # short version.
 set -eu

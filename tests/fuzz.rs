@@ -410,14 +410,14 @@ struct Tally {
     failures: Vec<String>,
 }
 
-/// Runs `cases` on `bin` with two workers (the machine's cores), each case under
-/// `limit`; no case starts after `budget`.
-fn run_all(bin: &str, cases: &[Case], limit: Duration, budget: Duration) -> Tally {
+/// Runs `cases` on `bin` with `jobs` workers, each case under `limit`; no case starts
+/// after `budget`.
+fn run_all(bin: &str, cases: &[Case], jobs: usize, limit: Duration, budget: Duration) -> Tally {
     let start = Instant::now();
     let next = AtomicUsize::new(0);
     let tally = Mutex::new(Tally::default());
     std::thread::scope(|s| {
-        for _ in 0..2 {
+        for _ in 0..jobs.max(1) {
             s.spawn(|| loop {
                 let i = next.fetch_add(1, Ordering::SeqCst);
                 let Some(case) = cases.get(i) else { break };
@@ -454,7 +454,7 @@ fn fuzzed_inputs_keep_the_contract() {
     eprintln!("fuzz: seed {seed} ({n} cases per chapter; WORKBOOK_FUZZ_SEED to change)");
     let cases = cases(seed, n, false);
     let bin = env!("CARGO_BIN_EXE_workbook");
-    let t = run_all(bin, &cases, Duration::from_secs(90), Duration::MAX);
+    let t = run_all(bin, &cases, 2, Duration::from_secs(90), Duration::MAX);
     eprintln!(
         "fuzz: {} accepted, {} refused, slowest case {} ms",
         t.accepted, t.refused, t.slowest_ms
@@ -471,7 +471,8 @@ fn fuzzed_inputs_keep_the_contract() {
 /// The long fuzz (`scripts/fuzz-long.sh` runs it on the release binary): accepted
 /// values only (inside the documented ranges and at their ends), every chapter from
 /// its own seed, interleaved, until `WORKBOOK_FUZZ_CASES` per chapter (default 400)
-/// or the budget `WORKBOOK_FUZZ_SECONDS` (default 240) runs out. Binary:
+/// or the budget `WORKBOOK_FUZZ_SECONDS` (default 240) runs out, on
+/// `WORKBOOK_FUZZ_JOBS` workers (default the machine's cores). Binary:
 /// `WORKBOOK_FUZZ_BIN` (default the test profile's). Prints the count of exit-1 runs
 /// per chapter; any exit 1 or other breach of the contract fails it.
 #[test]
@@ -484,13 +485,17 @@ fn long_fuzz_has_no_exit_1() {
         "WORKBOOK_FUZZ_BIN",
         env!("CARGO_BIN_EXE_workbook").to_string(),
     );
+    let jobs: usize = env_or(
+        "WORKBOOK_FUZZ_JOBS",
+        std::thread::available_parallelism().map_or(2, |n| n.get()),
+    );
     let cases = cases(seed, n, true);
     eprintln!(
         "long fuzz: seed {seed}, {} cases ({n} per chapter), budget {} s, binary {bin}",
         cases.len(),
         budget.as_secs()
     );
-    let t = run_all(&bin, &cases, Duration::from_secs(120), budget);
+    let t = run_all(&bin, &cases, jobs, Duration::from_secs(120), budget);
     for (chapter, (accepted, exit_1)) in &t.per_chapter {
         eprintln!("long fuzz: {chapter}: {accepted} accepted, {exit_1} exit 1");
     }

@@ -84,6 +84,11 @@ pub const LANDING_GAMMAS: [(f64, bool); 8] = [
     (3.29, false),
 ];
 
+/// The largest frequency factor of [`FastLimits::law_sweep`] (Gamma = 32768): a range
+/// wide enough (ln 128 = 4.85) that the law's oscillating error (up to ~25 %) moves the
+/// fitted exponent by less than a 10 % error of it would.
+pub const LAW_SWEEP_K_MAX: f64 = 128.0;
+
 /// The frequency factors of [`FastLimits::cs`] (Gamma = 2 k^2 at fixed delta_z).
 pub const FAST_FACTORS: [f64; 6] = [1.0, 2.0, 4.0, 8.0, 16.0, 32.0];
 
@@ -94,6 +99,11 @@ pub struct FastLimits {
     pub fractions: Vec<f64>,
     /// c = F/(m v_ave) (1/s) at 1, 2, 4, 8, 16, 32 x the frequency.
     pub cs: Vec<f64>,
+    /// The law's ratio r = c v_z/g (1 for the document's law) over the whole range:
+    /// `(k, Gamma, c, r)` at frequency factors k log-spaced from 1 to
+    /// [`LAW_SWEEP_K_MAX`] (Gamma = 2 k^2; 10 quick, 25 full), windows of 10 flights at
+    /// least.
+    pub law_sweep: Vec<(f64, f64, f64, f64)>,
 }
 
 /// Runs at Gamma_n (1 - eps): t_f g/v_z and (v_ave/v_z)/mu_eff.
@@ -255,7 +265,24 @@ fn fast_limits(scene: &Scene, quick: bool) -> FastLimits {
         );
         cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
     }
-    FastLimits { fractions, cs }
+    let ks = crate::sweep::logspace(1.0, LAW_SWEEP_K_MAX, if quick { 10 } else { 25 });
+    let law_sweep = crate::sweep::par_map(&ks, "viscous constant over Gamma", |&k| {
+        let s = at(k);
+        let flight_periods = (s.gamma / PI).ceil() as usize;
+        let stk = run(
+            &s,
+            Model::Exact,
+            transient.max(5 * flight_periods),
+            (4 * observe).max(10 * flight_periods),
+        );
+        let c = s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps; // formula: c = F/(m v_ave)
+        (k, s.gamma, c, c * s.vz_mps() / s.g_mps2) // formula: r = c v_z/g
+    });
+    FastLimits {
+        fractions,
+        cs,
+        law_sweep,
+    }
 }
 
 /// A block kept sliding over 60 periods: mean friction / (mu x mean normal force), and
