@@ -73,15 +73,16 @@ pub fn causes(reports: &[ChapterReport]) -> String {
         let claims: Vec<String> = c
             .claims
             .iter()
-            .filter(|&&(ch, id)| {
-                reports.iter().any(|r| {
-                    r.chapter == ch
-                        && r.claims
+            .flat_map(|&id| {
+                reports
+                    .iter()
+                    .filter(move |r| {
+                        r.claims
                             .iter()
                             .any(|x| x.id == id && x.verdict == Verdict::Erratum)
-                })
+                    })
+                    .map(move |r| format!("`{}/{id}`", r.chapter))
             })
-            .map(|(ch, id)| format!("`{ch}/{id}`"))
             .collect();
         let _ = writeln!(body, "- **{}**: {} ({}).", c.key, c.what, claims.join(", "));
     }
@@ -192,7 +193,7 @@ mod tests {
             };
             if let Some((id, tail)) = rest.split_once("** (erratum;") {
                 let _ = tail;
-                if !crate::report::causes::is_listed(chapter, id) {
+                if !crate::report::causes::is_listed(id) {
                     missing.push(format!("{chapter}/{id}"));
                 }
             }
