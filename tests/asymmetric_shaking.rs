@@ -317,10 +317,8 @@ fn cli_quick_json_has_the_results_and_no_failed_claim() {
             .map(|c| c["verdict"].as_str().unwrap().to_string())
     };
     assert_eq!(verdict("stroke-inequalities").as_deref(), Some("erratum"));
-    assert_eq!(
-        verdict("locomotion-needs-slip").as_deref(),
-        Some("approximation")
-    );
+    // 'generically' is wrong on an open set of parameters: an erratum (issue 29)
+    assert_eq!(verdict("locomotion-needs-slip").as_deref(), Some("erratum"));
     assert_eq!(verdict("linear-no-drift").as_deref(), Some("confirmed"));
 }
 

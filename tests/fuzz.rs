@@ -12,8 +12,12 @@
 //! - stdout carries no NaN, inf or JSON null;
 //! - a value just outside a flag's documented range (the flag alone) is refused (exit 2).
 //!
-//! Seeded: the seed is printed; `WORKBOOK_FUZZ_SEED=<u64>` draws another set and
-//! `WORKBOOK_FUZZ_CASES=<n>` changes the number of cases (default 160).
+//! Seeded per chapter: each chapter draws from the printed seed mixed with its own id
+//! (adding a chapter shifts no other chapter's draws); `WORKBOOK_FUZZ_SEED=<u64>` draws
+//! another set and `WORKBOOK_FUZZ_CASES=<n>` changes the number of cases per chapter
+//! (default 20; vertical-shaking, 20 times slower, 40 % of it). `long_fuzz_has_no_exit_1`
+//! (ignored; `scripts/fuzz-long.sh`) runs thousands of accepted inputs on the release
+//! binary and counts the exit-1 runs.
 
 use std::io::Read;
 use std::process::{Command, Stdio};
@@ -149,17 +153,11 @@ fn enum_flags(chapter: &str) -> Vec<(String, Vec<String>)> {
         .collect()
 }
 
-/// One to four numeric flags (each drawn inside, at an end, just outside or special),
-/// sometimes an enumerated flag and, for the stick, an rtol decade from 1e-2 to 1e-14;
-/// values written `--flag=value` or `--flag value` (negative numbers included).
-fn make_case(rng: &mut Rng, table: &[(&'static str, Vec<Flag>)]) -> Case {
-    let mut i = (rng.next() % table.len() as u64) as usize;
-    if table[i].0 == "vertical-shaking" && rng.unit() < 0.6 {
-        // an accepted quick run of this chapter takes ~5 s (debug build), 20 times
-        // the others: drawn less often to keep the test near 30 s on 2 cores
-        i = (rng.next() % table.len() as u64) as usize;
-    }
-    let (chapter, flags) = &table[i];
+/// One to four numeric flags of `chapter` (each drawn inside, at an end, just outside
+/// or special; only inside or at an end when `valid_only`), sometimes an enumerated
+/// flag and, for the stick, an rtol decade from 1e-2 to 1e-14; values written
+/// `--flag=value` or `--flag value` (negative numbers included).
+fn make_case(rng: &mut Rng, chapter: &str, flags: &[Flag], valid_only: bool) -> Case {
     let n = if rng.unit() < 0.4 {
         1
     } else {
@@ -189,14 +187,19 @@ fn make_case(rng: &mut Rng, table: &[(&'static str, Vec<Flag>)]) -> Case {
             continue;
         }
         used.push(f.name);
-        let kind = rng.pick(&[
-            Kind::Inside,
-            Kind::Inside,
-            Kind::JustInside,
-            Kind::JustOutside,
-            Kind::Special,
-        ]);
-        let value = if chapter == &"locomotion-definition" {
+        let kinds: &[Kind] = if valid_only {
+            &[Kind::Inside, Kind::Inside, Kind::JustInside]
+        } else {
+            &[
+                Kind::Inside,
+                Kind::Inside,
+                Kind::JustInside,
+                Kind::JustOutside,
+                Kind::Special,
+            ]
+        };
+        let kind = rng.pick(kinds);
+        let value = if chapter == "locomotion-definition" {
             pair_value(&f, kind, rng)
         } else if f.name == "--rtol" && kind == Kind::Inside {
             format!("1e-{}", 2 + rng.next() % 13) // every decade 1e-2 .. 1e-14
@@ -220,10 +223,53 @@ fn make_case(rng: &mut Rng, table: &[(&'static str, Vec<Flag>)]) -> Case {
     Case { args, must_refuse }
 }
 
+/// The seed of one chapter's draws: the base seed mixed with an FNV-1a hash of the
+/// chapter's id (then a splitmix64 round), so that adding, removing or reordering a
+/// chapter shifts no other chapter's draws.
+fn chapter_seed(base: u64, id: &str) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in id.bytes() {
+        h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+    }
+    let mut z = (base ^ h).wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    (z ^ (z >> 31)).max(1)
+}
+
+/// `per_chapter` cases of every chapter, each chapter drawn from its own seed
+/// ([`chapter_seed`]), interleaved chapter by chapter (so a time budget cuts every
+/// chapter alike). An accepted quick run of vertical-shaking costs ~20 times the
+/// others': it gets 40 % of the cases.
+fn cases(base: u64, per_chapter: usize, valid_only: bool) -> Vec<Case> {
+    let per_chapter_cases: Vec<Vec<Case>> = table()
+        .iter()
+        .filter(|(_, flags)| !flags.is_empty()) // a chapter without value flags has none to draw
+        .map(|(chapter, flags)| {
+            let mut rng = Rng(chapter_seed(base, chapter));
+            let n = if *chapter == "vertical-shaking" {
+                (per_chapter * 2).div_ceil(5)
+            } else {
+                per_chapter
+            };
+            (0..n)
+                .map(|_| make_case(&mut rng, chapter, flags, valid_only))
+                .collect()
+        })
+        .collect();
+    let longest = per_chapter_cases.iter().map(Vec::len).max().unwrap_or(0);
+    (0..longest)
+        .flat_map(|i| {
+            per_chapter_cases
+                .iter()
+                .filter_map(move |c| c.get(i).cloned())
+        })
+        .collect()
+}
+
 /// Runs one case under `ulimit -v` (2 GB) and a time limit; returns (code, stdout,
 /// stderr, seconds). A killed run returns code -1.
-fn run_case(case: &Case, limit: Duration) -> (i32, String, String, f64) {
-    let bin = env!("CARGO_BIN_EXE_workbook");
+fn run_case(bin: &str, case: &Case, limit: Duration) -> (i32, String, String, f64) {
     let start = Instant::now();
     let mut child = Command::new("sh")
         .arg("-c")
@@ -344,57 +390,151 @@ fn every_flag_of_every_chapter_is_in_the_fuzz_table() {
     }
 }
 
-#[test]
-fn fuzzed_inputs_keep_the_contract() {
-    let seed: u64 = std::env::var("WORKBOOK_FUZZ_SEED")
+/// A number from the environment variable `name`, or `default`.
+fn env_or<T: std::str::FromStr>(name: &str, default: T) -> T {
+    std::env::var(name)
         .ok()
         .and_then(|s| s.parse().ok())
-        .unwrap_or(0x5eed_2026_1123);
-    let n: usize = std::env::var("WORKBOOK_FUZZ_CASES")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(160);
-    eprintln!("fuzz: seed {seed} ({n} cases; WORKBOOK_FUZZ_SEED to change)");
-    // a chapter without value flags has none to draw
-    let table: Vec<_> = table().into_iter().filter(|(_, f)| !f.is_empty()).collect();
-    let mut rng = Rng(seed.max(1));
-    let cases: Vec<Case> = (0..n).map(|_| make_case(&mut rng, &table)).collect();
+        .unwrap_or(default)
+}
+
+/// What a batch of cases did: accepted, refused, exit 1, slowest (ms), per chapter
+/// `(accepted, exit 1)`, not run (the time budget ran out), and the violations.
+#[derive(Default)]
+struct Tally {
+    accepted: usize,
+    refused: usize,
+    exit_1: usize,
+    slowest_ms: usize,
+    not_run: usize,
+    per_chapter: std::collections::BTreeMap<String, (usize, usize)>,
+    failures: Vec<String>,
+}
+
+/// Runs `cases` on `bin` with `jobs` workers, each case under `limit`; no case starts
+/// after `budget`.
+fn run_all(bin: &str, cases: &[Case], jobs: usize, limit: Duration, budget: Duration) -> Tally {
+    let start = Instant::now();
     let next = AtomicUsize::new(0);
-    let failures = Mutex::new(Vec::new());
-    let counts = Mutex::new([0usize; 3]); // accepted, refused, slowest (ms)
-    let limit = Duration::from_secs(90);
+    let tally = Mutex::new(Tally::default());
     std::thread::scope(|s| {
-        for _ in 0..2 {
+        for _ in 0..jobs.max(1) {
             s.spawn(|| loop {
                 let i = next.fetch_add(1, Ordering::SeqCst);
                 let Some(case) = cases.get(i) else { break };
-                let (code, out, err, secs) = run_case(case, limit);
-                {
-                    let mut c = counts.lock().unwrap();
-                    c[usize::from(code != 0)] += 1;
-                    c[2] = c[2].max((secs * 1e3) as usize);
+                if start.elapsed() > budget {
+                    tally.lock().unwrap().not_run += 1;
+                    continue;
                 }
-                if let Some(why) = violation(case, code, &out, &err) {
-                    failures
-                        .lock()
-                        .unwrap()
+                let (code, out, err, secs) = run_case(bin, case, limit);
+                let why = violation(case, code, &out, &err);
+                let mut t = tally.lock().unwrap();
+                let chapter = t.per_chapter.entry(case.args[0].clone()).or_default();
+                chapter.0 += usize::from(code == 0 || code == 1);
+                chapter.1 += usize::from(code == 1);
+                t.accepted += usize::from(code == 0 || code == 1);
+                t.refused += usize::from(code == 2);
+                t.exit_1 += usize::from(code == 1);
+                t.slowest_ms = t.slowest_ms.max((secs * 1e3) as usize);
+                if let Some(why) = why {
+                    t.failures
                         .push(format!("workbook {}: {why}", case.args.join(" ")));
                 }
             });
         }
     });
-    let c = counts.into_inner().unwrap();
+    tally.into_inner().unwrap()
+}
+
+/// The contract on every chapter's own draws (`WORKBOOK_FUZZ_SEED`, default fixed;
+/// `WORKBOOK_FUZZ_CASES` per chapter, default 20).
+#[test]
+fn fuzzed_inputs_keep_the_contract() {
+    let seed: u64 = env_or("WORKBOOK_FUZZ_SEED", 0x5eed_2026_1123);
+    let n: usize = env_or("WORKBOOK_FUZZ_CASES", 20);
+    eprintln!("fuzz: seed {seed} ({n} cases per chapter; WORKBOOK_FUZZ_SEED to change)");
+    let cases = cases(seed, n, false);
+    let bin = env!("CARGO_BIN_EXE_workbook");
+    let t = run_all(bin, &cases, 2, Duration::from_secs(90), Duration::MAX);
     eprintln!(
         "fuzz: {} accepted, {} refused, slowest case {} ms",
-        c[0], c[1], c[2]
+        t.accepted, t.refused, t.slowest_ms
     );
-    let failures = failures.into_inner().unwrap();
     assert!(
-        failures.is_empty(),
-        "seed {seed}: {} of {n} cases broke the contract:\n{}",
-        failures.len(),
-        failures.join("\n")
+        t.failures.is_empty(),
+        "seed {seed}: {} of {} cases broke the contract:\n{}",
+        t.failures.len(),
+        cases.len(),
+        t.failures.join("\n")
     );
+}
+
+/// The long fuzz (`scripts/fuzz-long.sh` runs it on the release binary): accepted
+/// values only (inside the documented ranges and at their ends), every chapter from
+/// its own seed, interleaved, until `WORKBOOK_FUZZ_CASES` per chapter (default 400)
+/// or the budget `WORKBOOK_FUZZ_SECONDS` (default 240) runs out, on
+/// `WORKBOOK_FUZZ_JOBS` workers (default the machine's cores). Binary:
+/// `WORKBOOK_FUZZ_BIN` (default the test profile's). Prints the count of exit-1 runs
+/// per chapter; any exit 1 or other breach of the contract fails it.
+#[test]
+#[ignore = "minutes long: scripts/fuzz-long.sh"]
+fn long_fuzz_has_no_exit_1() {
+    let seed: u64 = env_or("WORKBOOK_FUZZ_SEED", 0x10c0_2026);
+    let n: usize = env_or("WORKBOOK_FUZZ_CASES", 400);
+    let budget = Duration::from_secs(env_or("WORKBOOK_FUZZ_SECONDS", 240));
+    let bin: String = env_or(
+        "WORKBOOK_FUZZ_BIN",
+        env!("CARGO_BIN_EXE_workbook").to_string(),
+    );
+    let jobs: usize = env_or(
+        "WORKBOOK_FUZZ_JOBS",
+        std::thread::available_parallelism().map_or(2, |n| n.get()),
+    );
+    let cases = cases(seed, n, true);
+    eprintln!(
+        "long fuzz: seed {seed}, {} cases ({n} per chapter), budget {} s, binary {bin}",
+        cases.len(),
+        budget.as_secs()
+    );
+    let t = run_all(&bin, &cases, jobs, Duration::from_secs(120), budget);
+    for (chapter, (accepted, exit_1)) in &t.per_chapter {
+        eprintln!("long fuzz: {chapter}: {accepted} accepted, {exit_1} exit 1");
+    }
+    eprintln!(
+        "long fuzz: {} accepted, {} refused, {} exit 1, {} not run (budget), slowest case {} ms",
+        t.accepted, t.refused, t.exit_1, t.not_run, t.slowest_ms
+    );
+    assert!(
+        t.failures.is_empty(),
+        "seed {seed}: {} cases broke the contract ({} exit 1):\n{}",
+        t.failures.len(),
+        t.exit_1,
+        t.failures.join("\n")
+    );
+}
+
+/// Each chapter's draws depend on its id and the seed only.
+#[test]
+fn each_chapter_draws_from_its_own_seed() {
+    let a = chapter_seed(7, "horizontal-shaking");
+    assert_eq!(a, chapter_seed(7, "horizontal-shaking"));
+    assert_ne!(a, chapter_seed(7, "vertical-shaking"));
+    assert_ne!(a, chapter_seed(8, "horizontal-shaking"));
+    let first = |cs: &[Case], id: &str| {
+        cs.iter()
+            .find(|c| c.args[0] == id)
+            .map(|c| c.args.clone())
+            .expect("a case of the chapter")
+    };
+    let all = cases(7, 3, false);
+    let mut rng = Rng(chapter_seed(7, "horizontal-shaking"));
+    let flags = table()
+        .into_iter()
+        .find(|(c, _)| *c == "horizontal-shaking")
+        .expect("chapter")
+        .1;
+    let alone = make_case(&mut rng, "horizontal-shaking", &flags, false);
+    assert_eq!(first(&all, "horizontal-shaking"), alone.args);
 }
 
 #[test]

@@ -95,12 +95,52 @@ pub fn names_chapter(text: &str, id: &str) -> bool {
 pub fn fill(text: &str, reports: &[ChapterReport]) -> std::result::Result<String, String> {
     super::fill_blocks(text, &|name| {
         let (id, table) = name.split_once(':')?;
+        if (id, table) == ("all", "causes") {
+            return Some(causes(reports));
+        }
         let report = reports.iter().find(|r| r.chapter == id)?;
         match table {
             "summary" => Some(summary(report)),
             other => table_of(report, other),
         }
     })
+}
+
+/// The distinct errors of the document (block `all:causes`): one line per cause with
+/// the erratum claims that report it, then the count.
+pub fn causes(reports: &[ChapterReport]) -> String {
+    let mut body = String::new();
+    let keys = crate::report::causes::causes_of(reports);
+    for c in crate::report::causes::CAUSES
+        .iter()
+        .filter(|c| keys.contains(c.key))
+    {
+        let claims: Vec<String> = c
+            .claims
+            .iter()
+            .flat_map(|&id| {
+                reports
+                    .iter()
+                    .filter(move |r| {
+                        r.claims
+                            .iter()
+                            .any(|x| x.id == id && x.verdict == Verdict::Erratum)
+                    })
+                    .map(move |r| format!("`{}/{id}`", r.chapter))
+            })
+            .collect();
+        let _ = writeln!(body, "- **{}**: {} ({}).", c.key, c.what, claims.join(", "));
+    }
+    for k in keys.iter().filter(|k| k.contains('/')) {
+        let _ = writeln!(body, "- `{k}` (a cause of its own).");
+    }
+    let claims: usize = reports.iter().map(|r| r.count(Verdict::Erratum)).sum();
+    let _ = writeln!(
+        body,
+        "\n{} distinct errors of the document, reported by {claims} erratum claims.",
+        keys.len()
+    );
+    body
 }
 
 /// The chapter's verdict counts, then its errata and approximations, one line each.
@@ -174,6 +214,35 @@ mod tests {
         );
         let no_marker = without.replace(NEW_SECTIONS, "");
         assert_eq!(with_missing_sections(&no_marker), no_marker);
+    }
+
+    /// Every erratum of the appendix (its generated summaries) is listed under a cause
+    /// in `report::causes`, so that distinct errata count causes.
+    #[test]
+    fn every_erratum_has_a_cause() {
+        let text = repository_file(&format!("chapters/{FILE}"));
+        let mut chapter = "";
+        let mut missing = Vec::new();
+        for line in text.lines() {
+            if let Some(rest) = line.strip_prefix("<!-- BEGIN generated:") {
+                if let Some((id, _)) = rest.split_once(':') {
+                    chapter = CHAPTERS
+                        .iter()
+                        .find(|c| c.id == id)
+                        .map_or(chapter, |c| c.id);
+                }
+            }
+            let Some(rest) = line.strip_prefix("- **") else {
+                continue;
+            };
+            if let Some((id, tail)) = rest.split_once("** (erratum;") {
+                let _ = tail;
+                if !crate::report::causes::is_listed(id) {
+                    missing.push(format!("{chapter}/{id}"));
+                }
+            }
+        }
+        assert!(missing.is_empty(), "errata without a cause: {missing:?}");
     }
 
     #[test]

@@ -8,6 +8,7 @@
 //! `{"chapter", "title", "section", "params", "claims", "results", "figures"}`, and a
 //! claim is `{"id", "section", "statement", "expected", "computed", "tolerance", "verdict"}`.
 
+pub mod causes;
 mod claim;
 mod format;
 mod summary;
@@ -117,19 +118,11 @@ impl ChapterReport {
         self.count(Verdict::Failed) > 0
     }
 
-    /// Distinct errata: the errata, each claim that shares its finding with another
-    /// erratum of the chapter ([`Claim::same_as`]) counted once.
+    /// Distinct errata: the distinct causes of the chapter's errata
+    /// ([`causes::cause_key`]: claims that report the same error of the document count
+    /// once).
     pub fn distinct_errata(&self) -> usize {
-        let erratum = |id: &str| {
-            self.claims
-                .iter()
-                .any(|c| c.id == id && c.verdict == Verdict::Erratum)
-        };
-        self.claims
-            .iter()
-            .filter(|c| c.verdict == Verdict::Erratum)
-            .filter(|c| !c.same_as.as_deref().is_some_and(erratum))
-            .count()
+        causes::causes_of(std::slice::from_ref(self)).len()
     }
 
     /// Number of claims whose evidence is of kind `kind`.

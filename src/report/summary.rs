@@ -41,10 +41,10 @@ pub fn summary_table(reports: &[ChapterReport]) -> String {
         row(&mut s, &r.chapter, n, note);
     }
     row(&mut s, "all", total, "");
-    let distinct: usize = reports.iter().map(|r| r.distinct_errata()).sum();
+    let distinct = super::causes::causes_of(reports).len();
     let _ = writeln!(
         s,
-        "distinct errata: {distinct} (claims sharing their numbers with another erratum count once)"
+        "distinct errata: {distinct} (by cause: claims that report the same error of the document count once)"
     );
     let _ = writeln!(s, "by check: {}", kinds_of(reports));
     s
@@ -67,12 +67,12 @@ pub fn kinds_of(reports: &[ChapterReport]) -> String {
 pub fn findings_markdown(reports: &[ChapterReport]) -> String {
     let sum = |f: &dyn Fn(&ChapterReport) -> usize| -> usize { reports.iter().map(f).sum() };
     let mut s = format!(
-        "`workbook all` checks {} claims: {} confirmed (+{} consistency checks, not counted as confirmation), {} errata ({} distinct: claims that share their numbers with another, two algorithms printing the same line, count once), {} approximations, {} failed. By kind of evidence: {}.\n",
+        "`workbook all` checks {} claims: {} confirmed (+{} consistency checks, not counted as confirmation), {} errata ({} distinct causes: claims that report the same error of the document, such as two algorithms printing the same line, count once), {} approximations, {} failed. By kind of evidence: {}.\n",
         sum(&|r| r.claims.len()),
         sum(&|r| r.confirmed()),
         sum(&|r| r.consistency_checks()),
         sum(&|r| r.count(Verdict::Erratum)),
-        sum(&|r| r.distinct_errata()),
+        super::causes::causes_of(reports).len(),
         sum(&|r| r.count(Verdict::Approximation)),
         sum(&|r| r.count(Verdict::Failed)),
         kinds_of(reports)
@@ -90,9 +90,11 @@ pub fn findings_markdown(reports: &[ChapterReport]) -> String {
         let _ = writeln!(s, "\n**{title}:**\n");
         for r in reports {
             for c in r.claims.iter().filter(|c| c.verdict == verdict) {
-                let same = match &c.same_as {
-                    Some(id) => format!(" (the same finding as `{id}`, counted once)"),
-                    None => String::new(),
+                let key = super::causes::cause_key(&r.chapter, &c.id, c.same_as.as_deref());
+                let same = if verdict == Verdict::Erratum && !key.contains('/') {
+                    format!(" (cause `{key}`)")
+                } else {
+                    String::new()
                 };
                 let _ = writeln!(
                     s,

@@ -60,7 +60,7 @@ pub fn linear_average_force(doc: &Statements, ev: &Evidence) -> Claim {
         Check::Consistency,
         "linear-average-force",
         "3.2.1",
-        "0 = F_ave = -c (v_obj_ave - v_sup_ave): over any window the mean friction force is -c times the mean relative velocity, so <v> = <v_p> - (v(t1) - v(t0))/(c (t1 - t0)); checked over the first two periods from rest (still in the transient). Consistency check: the identity is the integral of the model's own linear-friction equation m v' = -c (v - v_p); no document could fail it here (issue 21), so it is not counted as confirmation.",
+        "0 = F_ave = -c (v_obj_ave - v_sup_ave): over any window the mean friction force is -c times the mean relative velocity, so <v> = <v_p> - (v(t1) - v(t0))/(c (t1 - t0)); checked over the first two periods from rest (still in the transient). Consistency check: the identity is the integral of the model's own linear-friction equation m v' = -c (v - v_p); no document could fail it here, so it is not counted as confirmation.",
     )
     .close(identity / doc.linear_force_factor, early.mean_velocity_mps, ev.tol.lin_mps)
 }
@@ -256,26 +256,37 @@ pub fn reaches_slow_speed(doc: &Statements, ev: &Evidence) -> Claim {
     )
 }
 
-/// Locomotion needs slip: drift just below the threshold, none just above.
+/// "Horizontal motion (locomotion) is generally (generically) induced" by asymmetric
+/// shaking with Coulomb friction (3.2.1, and 3.2.2's "asymmetries in the shaking lead
+/// to locomotion"): an erratum. The block drifts only while it slips; where friction
+/// can carry it through both strokes (mu g t_fast >= v_slow + v_fast, an open set of
+/// parameters) there is no drift at all.
 pub fn locomotion_needs_slip(doc: &Statements, ev: &Evidence) -> Claim {
     let s = ev.slip_sides;
     let (tol_v, thr) = (ev.tol.v_mps, doc.slip_threshold);
+    // The corrected condition (derived threshold k (v_slow + v_fast)): the drift equals
+    // the closed form just below the threshold and vanishes just above it.
+    let corrected = is_close(s.below_mps, s.closed_below_mps, tol_v)
+        && (s.below_mps.abs() > tol_v) == (0.95 * s.threshold < thr)
+        && (s.above_mps.abs() <= tol_v) == (1.05 * s.threshold >= thr);
+    // As printed: a drift on both sides (generically, whatever the friction).
+    let printed = if doc.generic_drift {
+        s.below_mps.abs() > tol_v && s.above_mps.abs() > tol_v
+    } else {
+        corrected
+    };
     Claim::draft(
         Check::Simulation,
         "locomotion-needs-slip",
-        "3.2.2",
-        "'Asymmetries in the shaking lead to locomotion' (and 'generically' in 3.2.1) holds only while μ g t_fast < v_slow + v_fast. Beyond it the block sticks in both strokes and the two slips cancel: no drift. Check at μ g t_fast = 0.95 and 1.05 (v_slow + v_fast), same speeds: the drift equals the closed form just below the threshold and vanishes just above it (a threshold 10 % off either way puts one point on its wrong side).",
+        "3.2.1, 3.2.2",
+        "As printed: with Coulomb friction, asymmetrical horizontal shaking 'generally (generically)' induces locomotion (3.2.1; 3.2.2: 'asymmetries in the shaking lead to locomotion'). Correct: only while the block slips, μ g t_fast < v_slow + v_fast (the fast stroke's speed change exceeds what friction supplies in its duration). Beyond it the block follows the plate through both strokes and there is no drift at all, on an open set of parameters (every μ g t_fast >= v_slow + v_fast): not a measure-zero exception, so 'generically' is wrong. Check at μ g t_fast = 0.95 and 1.05 (v_slow + v_fast), same speeds: the drift equals the closed form just below the threshold and vanishes just above it.",
     )
     .values(
         format!("{} and 0", fmt_num(s.closed_below_mps)),
         format!("{} and {}", fmt_num(s.below_mps), fmt_num(s.above_mps)),
         tol_v,
     )
-    .approximation_if(
-        is_close(s.below_mps, s.closed_below_mps, tol_v)
-            && (s.below_mps.abs() > tol_v) == (0.95 * s.threshold < thr)
-            && (s.above_mps.abs() <= tol_v) == (1.05 * s.threshold >= thr),
-    )
+    .printed_or_corrected(printed, corrected)
 }
 
 /// The bi-harmonic always-slipping drift against the simulation.

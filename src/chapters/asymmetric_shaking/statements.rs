@@ -32,6 +32,10 @@ pub struct Statements {
     pub impulse_factor: f64,
     /// 3.2.2: the block accelerates until its speed reaches k v_l (printed k = 1).
     pub reach_factor: f64,
+    /// 3.2.1-3.2.2 as printed: asymmetric shaking with Coulomb friction induces a drift
+    /// "generically" (`true`); `false` prints the corrected condition (a drift only
+    /// while the block slips, mu g t_fast < v_slow + v_fast).
+    pub generic_drift: bool,
     /// Drift only while mu g t_fast < k (v_slow + v_fast) (derived k = 1).
     pub slip_threshold: f64,
     /// The workbook's v_d = eps V (1 - k pi^2/(2 Gamma^2)) (derived k = 1).
@@ -54,6 +58,7 @@ pub const PRINTED: Statements = Statements {
     along_slow_stroke: true,
     impulse_factor: 1.0,
     reach_factor: 1.0,
+    generic_drift: true,
     slip_threshold: 1.0,
     biharmonic_factor: 1.0,
     stick_gamma_factor: 1.0,

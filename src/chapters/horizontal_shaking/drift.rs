@@ -73,6 +73,28 @@ pub struct Steady {
     pub drift_mps: f64,
     /// Periods simulated to find it.
     pub periods: usize,
+    /// Bound on the numerical error of `drift_mps` (m/s): see [`numerical_error_mps`].
+    pub err_mps: f64,
+}
+
+/// The numerical error budget of a periodic drift found by shooting (m/s): the fixed
+/// point is bracketed to `bracket` (m/s); each of the `switches` located switches of the
+/// period sits up to one event tolerance `t_tol` (s) past the true one, moving the
+/// velocity by at most `a_max t_tol`, and the closed forms round to 16 ulps of V per
+/// segment: a map residual of at most `noise = switches (a_max t_tol + 16 eps V)`. The
+/// map `v0 -> v(T) - v0` has slope `slope` (its secant over the first bracket, 1/s x T),
+/// so the fixed point can sit `noise/slope` off, and the period's mean velocity carries
+/// that plus the residual itself.
+pub fn numerical_error_mps(
+    bracket: f64,
+    switches: f64,
+    a_max: f64,
+    t_tol: f64,
+    vamp: f64,
+    slope: f64,
+) -> f64 {
+    let noise = switches.max(1.0) * (a_max * t_tol + 16.0 * f64::EPSILON * vamp); // formula: n (a_max t_tol + 16 eps V)
+    bracket + noise / slope.abs().max(f64::MIN_POSITIVE) + noise // formula: bracket + noise/|slope| + noise
 }
 
 /// The fixed point of the one-period map `v0 -> v(T)` (Illinois on `[-V, V]`, to
@@ -107,6 +129,7 @@ pub fn steady_drift(scene: &Scene) -> Steady {
         }
         d *= 2.0;
     }
+    let slope = (fb - fa) / (b - a); // formula: secant of the map over the bracket
     let v0 = if fb.abs() <= 1e-13 * vamp {
         b
     } else if fa.abs() <= 1e-13 * vamp {
@@ -121,10 +144,20 @@ pub fn steady_drift(scene: &Scene) -> Steady {
     periods += 1;
     let x = &r.period_x_m;
     let drift = (x[x.len() - 1].1 - x[0].1) / plate.period_s(); // formula: <v> = (x(T) - x(0))/T
+    let c = r.total_counts;
+    let switches =
+        (c.stick_to_slip + c.slip_to_stick + c.reversals + c.takeoffs + c.landings) as f64;
+    let a_max = scene.amplitude_m * (TAU * scene.frequency_hz).powi(2)
+        + scene.mu * scene.g_mps2 * (1.0 + scene.bias.abs()); // formula: delta omega^2 + mu g (1 + b)
+    let t_tol = crate::physics::block::time_tolerance_of_run(0.0, plate.period_s())
+        .unwrap_or_else(|| crate::numerics::events::time_tolerance(plate.period_s()));
+    // Residuals below 1e-13 V accepted at an end count as the bracket too.
+    let err = numerical_error_mps(1e-13 * vamp, switches, a_max, t_tol, vamp, slope);
     Steady {
         v0_mps: v0,
         drift_mps: drift,
         periods,
+        err_mps: err,
     }
 }
 

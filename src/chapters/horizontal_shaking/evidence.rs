@@ -25,6 +25,8 @@ pub struct Evidence {
     pub err_scene: Scene,
     /// (Gamma_x, relative error of the averaged law, exact drift m/s), Gamma_x 1 to 1000.
     pub sweep: Vec<(f64, f64, f64)>,
+    /// The numerical error bound of each exact drift of `sweep` (m/s).
+    pub sweep_err_mps: Vec<f64>,
     /// The Gamma_x of 1 % error and its bisection bracket.
     pub g1: (f64, f64),
     /// The sticking instants of exact runs.
@@ -37,8 +39,9 @@ pub struct Evidence {
     pub booktop: Booktop,
     /// The block's velocity swing over one steady period at Gamma_x = 10 and 100.
     pub fluctuation: [Fluctuation; 2],
-    /// The bias that keeps a drift of 0.1 V at fixed V, 30 x the frequency.
-    pub fixed_v_bias: f64,
+    /// The bias that keeps a drift of 0.1 V at fixed V, 30 x the frequency, and the
+    /// bound on its numerical error.
+    pub fixed_v_bias: (f64, f64),
 }
 
 /// The block's velocity over one period of its exact periodic state.
@@ -52,6 +55,9 @@ pub struct Fluctuation {
     pub swing_over_v: f64,
     /// Sticking segments seen in the period.
     pub sticks: usize,
+    /// Bound on the numerical error of `swing_over_v`: twice the periodic state's
+    /// velocity error over V.
+    pub err: f64,
 }
 
 /// Largest `|a_xp| / (mu g)` over the sticking instants (no bias) of exact runs at
@@ -60,6 +66,10 @@ pub struct Fluctuation {
 pub struct Sticking {
     /// Largest |a_support|/(mu g) while stuck.
     pub worst: f64,
+    /// How far past the cone's edge a located stick-to-slip may end (relative): the
+    /// plate's jerk over the event tolerance, Gamma_x omega t_tol, plus 8 ulps of
+    /// Gamma_x (the rounding of the acceleration).
+    pub edge_tol: f64,
     /// Sticking segments seen.
     pub segments: usize,
 }
@@ -114,17 +124,25 @@ pub fn gather(scene: &Scene, quick: bool) -> Evidence {
         ..*scene
     };
     let gammas = logspace(1.0, 1000.0, if quick { 9 } else { 25 });
-    let sweep: Vec<(f64, f64, f64)> = par_map(&gammas, "averaged-law error", |&gx| {
+    let runs: Vec<(f64, f64, f64, f64)> = par_map(&gammas, "averaged-law error", |&gx| {
         let s = err_scene.at_gamma_x(gx);
-        let ex = steady_drift(&s).drift_mps;
-        (gx, relative_error(&s, ex), ex)
+        let ex = steady_drift(&s);
+        (
+            gx,
+            relative_error(&s, ex.drift_mps),
+            ex.drift_mps,
+            ex.err_mps,
+        )
     });
+    let sweep: Vec<(f64, f64, f64)> = runs.iter().map(|r| (r.0, r.1, r.2)).collect();
+    let sweep_err_mps = runs.iter().map(|r| r.3).collect();
     let g1 = gamma_for_1pct(&err_scene, &sweep, if quick { 12 } else { 40 });
     Evidence {
         scene: *scene,
         exact,
         err_scene,
         sweep,
+        sweep_err_mps,
         g1,
         sticking: sticking(scene),
         fast: fast_shaking(scene),
@@ -190,14 +208,15 @@ fn fluctuation(scene: &Scene) -> Fluctuation {
         bias: scene.bias,
         swing_over_v: (w.hi - w.lo) / scene.velocity_amplitude_mps(),
         sticks: w.sticks,
+        err: 2.0 * steady.err_mps / scene.velocity_amplitude_mps(), // formula: 2 err(v)/V
     }
 }
 
 /// The bias that keeps the exact drift at 0.1 V when the frequency is 30 x the
 /// scene's and the amplitude 1/30 of it (V = delta_x omega fixed, Gamma_x 30 x), from
 /// the scene at Gamma_x >= 10 (so that Gamma_x >= 300, where the averaged law that
-/// judges it is within 1e-4).
-fn fixed_v_bias(scene: &Scene) -> f64 {
+/// judges it is within 1e-4), and the bound on its numerical error.
+fn fixed_v_bias(scene: &Scene) -> (f64, f64) {
     let scene = &scene.at_gamma_x(scene.gamma_x().max(10.0));
     let s = Scene {
         frequency_hz: 30.0 * scene.frequency_hz,
@@ -233,6 +252,7 @@ fn sticking(scene: &Scene) -> Sticking {
     let mut out = Sticking {
         worst: 0.0,
         segments: 0,
+        edge_tol: 0.0,
     };
     for gx in [0.5, 0.9, 1.5, scene.gamma_x()] {
         let s = Scene {
@@ -251,22 +271,35 @@ fn sticking(scene: &Scene) -> Sticking {
             record_events: false,
             ..BlockOptions::default()
         };
-        simulate_block_observed(&s.params(), &plate, 20.0 * plate.period_s(), &opts, &mut w);
+        let t_end = 20.0 * plate.period_s();
+        simulate_block_observed(&s.params(), &plate, t_end, &opts, &mut w);
         out.worst = out.worst.max(w.worst);
+        let t_tol = 4.0 * f64::EPSILON * t_end.max(1.0); // bounds both event tolerances
+        let omega = std::f64::consts::TAU * s.frequency_hz;
+        // formula: |a'| t_tol/(mu g) = Gamma_x omega t_tol, plus 8 eps Gamma_x
+        out.edge_tol = out
+            .edge_tol
+            .max(gx * omega * t_tol + 8.0 * f64::EPSILON * gx.max(1.0));
         out.segments += w.sticks;
     }
     out
 }
 
-/// The bias (fraction of mu g) that makes the exact drift equal `v_target` (m/s).
-fn bias_for_drift(scene: &Scene, v_target: f64) -> f64 {
+/// The bias (fraction of mu g) that makes the exact drift equal `v_target` (m/s), and
+/// the bound on its numerical error: the drift's error bound over the drift's secant
+/// slope in the bias over [0, 0.999] (smaller than the slope anywhere below b = 0.99,
+/// so the bound is conservative), plus the bisection's bracket.
+fn bias_for_drift(scene: &Scene, v_target: f64) -> (f64, f64) {
     let f = |b: f64| steady_drift(&Scene { bias: b, ..*scene }).drift_mps - v_target;
     let (a, b) = (0.0, 0.999);
     let (fa, fb) = (f(a), f(b));
     if fa.signum() == fb.signum() {
-        return f64::NAN;
+        return (f64::NAN, f64::NAN);
     }
-    illinois(f, a, b, fa, fb, 1e-12).0
+    let bias = illinois(f, a, b, fa, fb, 1e-12).0;
+    let err = steady_drift(&Scene { bias, ..*scene }).err_mps;
+    let slope = (fb - fa) / (b - a); // formula: secant d(drift)/db
+    (bias, err / slope.abs() + 1e-12) // formula: err(v)/slope + bracket
 }
 
 /// The mean friction on a block drifting at 0.1 V at 1, 3, 10, 30 x the frequency
@@ -281,7 +314,7 @@ fn fast_shaking(scene: &Scene) -> FastShaking {
                 frequency_hz: k * scene.frequency_hz,
                 ..*scene
             };
-            bias_for_drift(&s, v_target)
+            bias_for_drift(&s, v_target).0
         })
         .collect();
     FastShaking {

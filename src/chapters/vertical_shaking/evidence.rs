@@ -48,16 +48,50 @@ pub struct Evidence {
     pub doublings: Vec<(u32, f64, f64, String, String)>,
     /// The Chladni demonstration.
     pub chladni: Chladni,
-    /// The largest bias (fraction of mu m g) whose landing after a flight from rest
-    /// sticks, at Gamma = 2: located on the exact model `(b*, half bracket)`, and the
-    /// closed form of [`super::landing`].
-    pub landing: ((f64, f64), f64),
+    /// The law b*(Gamma): the largest bias (fraction of mu m g) whose landing after a
+    /// flight from rest sticks, over Gamma in (1, Gamma_1): per Gamma, the closed form of
+    /// [`super::landing`] and, at the checked values, the bisection on the exact model
+    /// `(b*, half-width of its last bracket)`.
+    pub landing: Vec<LandingPoint>,
     /// The law's decomposition: per Gamma, the drifts of the exact model, sticking
     /// impacts, no contact slip, and the four steps to the law (m/s).
     pub decomposition: Vec<[f64; 8]>,
     /// The work-precision ladder.
     pub work: Vec<WorkPoint>,
 }
+
+/// One point of the law b*(Gamma).
+#[derive(Debug, Clone, Copy)]
+pub struct LandingPoint {
+    /// Gamma.
+    pub gamma: f64,
+    /// The closed form's b*.
+    pub closed: f64,
+    /// The exact model's b* and the half-width of its bracket, where checked.
+    pub located: Option<(f64, f64)>,
+}
+
+/// The Gamma of the law b*(Gamma) and, marked true, the ones also located on the exact
+/// model. Up to Gamma = 2 only: at Gamma = 3 the exact model's b* (0.927) and the closed
+/// form's (1.000) disagree, most likely because the first landing falls where the plate
+/// pulls away faster than g (touch-and-go), outside the closed form's picture of a
+/// landing that sticks or slides; not yet derived.
+pub const LANDING_GAMMAS: [(f64, bool); 6] = [
+    (1.05, false),
+    (1.2, true),
+    (1.35, false),
+    (1.5, false),
+    (1.75, false),
+    (2.0, true),
+];
+
+/// The largest frequency factor of [`FastLimits::law_sweep`] (Gamma = 32768): a range
+/// wide enough (ln 128 = 4.85) that the law's oscillating error (up to ~25 %) moves the
+/// fitted exponent by less than a 10 % error of it would.
+pub const LAW_SWEEP_K_MAX: f64 = 128.0;
+
+/// The frequency factors of [`FastLimits::cs`] (Gamma = 2 k^2 at fixed delta_z).
+pub const FAST_FACTORS: [f64; 6] = [1.0, 2.0, 4.0, 8.0, 16.0, 32.0];
 
 /// Contact fraction and viscous constant as omega grows at fixed delta_z.
 #[derive(Debug, Clone)]
@@ -66,6 +100,11 @@ pub struct FastLimits {
     pub fractions: Vec<f64>,
     /// c = F/(m v_ave) (1/s) at 1, 2, 4, 8, 16, 32 x the frequency.
     pub cs: Vec<f64>,
+    /// The law's ratio r = c v_z/g (1 for the document's law) over the whole range:
+    /// `(k, Gamma, c, r)` at frequency factors k log-spaced from 1 to
+    /// [`LAW_SWEEP_K_MAX`] (Gamma = 2 k^2; 10 quick, 25 full), windows of 10 flights at
+    /// least.
+    pub law_sweep: Vec<(f64, f64, f64, f64)>,
 }
 
 /// Runs at Gamma_n (1 - eps): t_f g/v_z and (v_ave/v_z)/mu_eff.
@@ -156,18 +195,30 @@ pub fn gather(scene: &Scene, quick: bool) -> Evidence {
         law_range: law_range(scene, quick),
         doublings: doublings(scene, quick),
         chladni: demonstrate(scene, quick, transient, observe),
-        landing: {
-            let at2 = scene.at_gamma(2.0);
-            let iters = if quick { 12 } else { 20 };
-            (
-                super::landing::located_bound(&at2, iters),
-                super::landing::closed_form_bound(&at2),
-            )
-        },
+        landing: landing_law(scene, quick),
         decomposition: decomposition(scene, transient, observe),
         work: work_precision(scene, quick),
         stats,
     }
+}
+
+/// The law b*(Gamma) at [`LANDING_GAMMAS`]: the closed form everywhere, the exact
+/// model's bisection (12 halvings quick, 20 full) where marked (quick: at Gamma = 2
+/// only).
+fn landing_law(scene: &Scene, quick: bool) -> Vec<LandingPoint> {
+    let iters = if quick { 12 } else { 20 };
+    LANDING_GAMMAS
+        .iter()
+        .map(|&(gamma, check)| {
+            let at = scene.at_gamma(gamma);
+            let check = check && (!quick || gamma == 2.0);
+            LandingPoint {
+                gamma,
+                closed: super::landing::closed_form_bound(&at),
+                located: check.then(|| super::landing::located_bound(&at, iters)),
+            }
+        })
+        .collect()
 }
 
 /// Does the block take off within 50 periods at `gamma`?
@@ -202,7 +253,7 @@ fn fast_limits(scene: &Scene, quick: bool) -> FastLimits {
         cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
     }
     // the viscous constant further out, where the law's windows (up to +-15 % of
-    // error, issue 21) weigh less against the change in c: to 64 x the frequency
+    // error) weigh less against the change in c: to 64 x the frequency
     for k in [16.0, 32.0] {
         let s = at(k);
         // a flight lasts ~ 2 v_z/g = Gamma/pi periods: the window holds 40 of them
@@ -215,7 +266,24 @@ fn fast_limits(scene: &Scene, quick: bool) -> FastLimits {
         );
         cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
     }
-    FastLimits { fractions, cs }
+    let ks = crate::sweep::logspace(1.0, LAW_SWEEP_K_MAX, if quick { 10 } else { 25 });
+    let law_sweep = crate::sweep::par_map(&ks, "viscous constant over Gamma", |&k| {
+        let s = at(k);
+        let flight_periods = (s.gamma / PI).ceil() as usize;
+        let stk = run(
+            &s,
+            Model::Exact,
+            transient.max(5 * flight_periods),
+            (4 * observe).max(10 * flight_periods),
+        );
+        let c = s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps; // formula: c = F/(m v_ave)
+        (k, s.gamma, c, c * s.vz_mps() / s.g_mps2) // formula: r = c v_z/g
+    });
+    FastLimits {
+        fractions,
+        cs,
+        law_sweep,
+    }
 }
 
 /// A block kept sliding over 60 periods: mean friction / (mu x mean normal force), and

@@ -123,7 +123,11 @@ impl<P: PlateMotion + ?Sized> HybridSystem<4> for BlockSystem<'_, P> {
                 let next = self.rest_mode(t);
                 // The same slip direction again can only come from round-off at the
                 // cone's edge, where sticking is the consistent choice.
-                let next = if next == mode { BlockMode::Stick } else { next };
+                let next = if next == mode && self.at_cone_edge(t) {
+                    BlockMode::Stick
+                } else {
+                    next
+                };
                 Transition::To {
                     mode: next,
                     state: [u, 0.0, 0.0, 0.0],

@@ -63,6 +63,7 @@
 //! [`ContactInvariants`] is the observer that does so (and checks the impacts), and
 //! [`ballistic_flight_s`] finds a hop's flight time without the driver.
 
+use crate::numerics::events::time_tolerance;
 use crate::numerics::hybrid::{HybridSystem, Transition};
 use crate::physics::friction::{
     coulomb_impact, stick_test, FrictionLaw, ImpactFriction, StickTest,
@@ -79,8 +80,8 @@ mod tests;
 pub use crate::numerics::hybrid::Observer;
 pub use checks::{ballistic_flight_s, ContactInvariants};
 pub use run::{
-    simulate_block, simulate_block_observed, BlockEvent, BlockOptions, BlockRun, EventCounts,
-    EventKind, ModeFractions,
+    simulate_block, simulate_block_observed, time_tolerance_of_run, BlockEvent, BlockOptions,
+    BlockRun, EventCounts, EventKind, ModeFractions,
 };
 
 /// Physical parameters of the block scene (per unit mass).
@@ -298,6 +299,18 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
                 }
             }
         }
+    }
+
+    /// Whether the needed friction at `t` is on the cone's edge `|f_need| = mu n` to
+    /// within its own uncertainty: the rounding of the two sides (8 ulps of their sum)
+    /// plus their change over the event-time uncertainty `time_tolerance(t)` (an event
+    /// is located to that, so the switch can sit that far off the true one).
+    pub fn at_cone_edge(&self, t: f64) -> bool {
+        let edge = |s: f64| self.needed_friction(s).abs() - self.mu() * self.normal(s);
+        let dt = time_tolerance(t);
+        let (f, n) = (self.needed_friction(t).abs(), self.mu() * self.normal(t));
+        let drift = 0.5 * (edge(t + dt) - edge(t - dt)).abs(); // formula: |d(edge)/dt| dt
+        (f - n).abs() <= 8.0 * f64::EPSILON * (f + n) + drift
     }
 
     /// The contact mode for relative velocity `w` at `t` (the block touches the plate).

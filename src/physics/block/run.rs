@@ -2,6 +2,15 @@
 
 use super::{BlockMode, BlockParams, BlockStop, BlockSystem};
 use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment, Transition};
+
+/// Event-time tolerance of a block run from `t0_s` to `t_end_s` (s): 4 ulps of its
+/// largest time when every time of the run is below 1 s, where the driver's default
+/// (4 ulps of max(t, 1 s)) would be coarser than the floating-point times allow; `None`
+/// (the default, 4 ulps of each event's own time) otherwise.
+pub fn time_tolerance_of_run(t0_s: f64, t_end_s: f64) -> Option<f64> {
+    let t_max = t0_s.abs().max(t_end_s.abs());
+    (t_max < 1.0 && t_max > 0.0).then_some(4.0 * f64::EPSILON * t_max) // formula: 4 eps max|t|
+}
 use crate::numerics::ode::Stats;
 use crate::physics::plate::PlateMotion;
 
@@ -329,7 +338,17 @@ pub fn simulate_block_observed<P: PlateMotion + ?Sized>(
         tr.period_x.push((t0, y0[0] + plate.x_m(t0)));
         tr.next_k += 1;
     }
-    let run = simulate(sysr, mode0, t0, y0, t_end_s, &opts.hybrid, &mut tr);
+    // Events to a few ulps of the run's own times (the driver's default is a few ulps
+    // of max(t, 1 s): over a run of one 1 ms period that is 1000 times coarser, and
+    // each switch located that late moves the velocity by a_plate x the delay).
+    let hybrid = Options {
+        event_tol_s: opts
+            .hybrid
+            .event_tol_s
+            .or(time_tolerance_of_run(t0, t_end_s)),
+        ..opts.hybrid
+    };
+    let run = simulate(sysr, mode0, t0, y0, t_end_s, &hybrid, &mut tr);
     let span = window.1 - window.0;
     let x_at = |k: i64| {
         tr.period_x
