@@ -86,7 +86,7 @@ pub const CAUSES: &[Cause] = &[
     },
     Cause {
         key: "theta-zero-guard-as-rule",
-        what: "the code's guard of the 1/sin(theta) singularity is printed as a rule of the dynamics (|theta| = 0 or F_x = 0 -> FLIGHT)",
+        what: "the code's guard of the 1/sin(θ) singularity is printed as a rule of the dynamics (|θ| = 0 or F_x = 0 -> FLIGHT)",
         claims: &[
             "a1-vertical-flight",
             "a3-flight-test",
@@ -100,12 +100,12 @@ pub const CAUSES: &[Cause] = &[
     },
     Cause {
         key: "a2-tan-sign",
-        what: "Algorithm 2 tests tan(theta) <= mu without the absolute value",
+        what: "Algorithm 2 tests tan(θ) <= μ without the absolute value",
         claims: &["a2-tan-test"],
     },
     Cause {
         key: "a2-r-cp-direction",
-        what: "Algorithm 2 uses r_CP in the opposite sense to C.15 (the authors' fsm.m: C to P), which swaps the shortening branch and the sign of theta'",
+        what: "Algorithm 2 uses r_CP in the opposite sense to C.15 (the authors' fsm.m: C to P), which swaps the shortening branch and the sign of θ'",
         claims: &["a2-shortening-branch", "a2-theta-dot-sign"],
     },
     Cause {
@@ -120,7 +120,7 @@ pub const CAUSES: &[Cause] = &[
     },
     Cause {
         key: "a2-hinge-test",
-        what: "Algorithm 2's hinge test is reversed (mu F_z < |F_x|)",
+        what: "Algorithm 2's hinge test is reversed (μ F_z < |F_x|)",
         claims: &["a2-hinge-test"],
     },
     Cause {
