@@ -377,28 +377,15 @@ fn issue_scene_runs_through_like_an_outside_time_stepper() {
 /// solver gives 8.71 rad/s preferring contact and about 3.77 preferring separation).
 #[test]
 fn glocker_painleve_point_persists_and_depends_on_the_rule() {
-    use locomotion_workbook::physics::stick_inertia::run::simulate_inertia;
-    use locomotion_workbook::physics::stick_inertia::{PainleveRule, NSTATE, OM, TH, VXC};
+    use locomotion_workbook::physics::stick_inertia::run::glocker_scene;
+    use locomotion_workbook::physics::stick_inertia::{PainleveRule, OM};
     let run = |rtol: f64, rule: PainleveRule| {
-        let th = -(59.0f64).to_radians();
-        let mut base =
-            StickParams::new(2.0, 0.0, 0.0, 0.0, 5.0 / 3.0, th, 10.0, 0.0, 30.0).unwrap();
-        base.mass_kg = 0.0;
-        let mut md = InertiaModel::new(InertiaParams {
-            base,
-            rod_mass_kg: 1.0,
-            restitution: 0.0,
-        });
-        md.painleve_rule = rule;
-        let mut y = [0.0; NSTATE];
-        y[TH] = th;
-        y[VXC] = 30.0;
         let o = Options {
             method: Method::Dop853,
             control: StepControl::tol(rtol, rtol),
             ..Options::default()
         };
-        simulate_inertia(&md, 0.0, y, 1.0, &o, 1e-3)
+        glocker_scene(rule, &o, 1.0)
     };
     let t: Vec<f64> = [1e-8, 1e-10, 1e-11]
         .iter()

@@ -6,6 +6,7 @@
 //! type, a body too large) is an [`ApiError`] with HTTP status 400 or 413 and one line
 //! saying why; nothing here panics on any input.
 
+use super::http::clip;
 use crate::chapters::stick_state_machine::{self as ssm, main_run};
 use crate::flags::Flag;
 use crate::grammar::{Cli, Command};
@@ -188,20 +189,6 @@ fn field_text(key: &str, value: &Value) -> Result<String, ApiError> {
         )));
     }
     Ok(text)
-}
-
-/// At most 40 characters of `s`, control characters escaped, for one-line messages.
-fn clip(s: &str) -> String {
-    let mut out: String = s
-        .chars()
-        .take(40)
-        .collect::<String>()
-        .escape_debug()
-        .to_string();
-    if s.chars().count() > 40 {
-        out.push_str("...");
-    }
-    out
 }
 
 /// The one line the CLI prints for a clap error: the same text as `workbook` on stderr.

@@ -370,7 +370,7 @@ struct Head {
 }
 
 /// At most 40 characters of `s`, control characters escaped, for one-line reasons.
-fn clip(s: &str) -> String {
+pub(crate) fn clip(s: &str) -> String {
     let mut out: String = s
         .chars()
         .take(40)

@@ -331,20 +331,7 @@ pub fn moreau_jean() -> (f64, Vec<(f64, f64)>) {
 /// contact; the point is singular, see [`glocker_rate_after`]). Returns the run (first
 /// Painleve event, impacts), traced every millisecond.
 pub fn glocker_scene(rule: PainleveRule) -> InertiaRun {
-    let th = -(59.0f64).to_radians();
-    let mut base = StickParams::new(2.0, 0.0, 0.0, 0.0, 5.0 / 3.0, th, 10.0, 0.0, 30.0)
-        .expect("a stick inside the model's domain");
-    base.mass_kg = 0.0;
-    let mut md = InertiaModel::new(InertiaParams {
-        base,
-        rod_mass_kg: 1.0,
-        restitution: 0.0,
-    });
-    md.painleve_rule = rule;
-    let mut y = [0.0; NSTATE];
-    y[TH] = th;
-    y[VXC] = 30.0;
-    simulate_inertia(&md, 0.0, y, 1.5, &options(1e-10), 1e-3)
+    crate::physics::stick_inertia::run::glocker_scene(rule, &options(1e-10), 1.5)
 }
 
 /// The rod's rate just after the Glocker scene's Painleve point (rad/s): the first traced

@@ -1,10 +1,11 @@
 //! One run of the stick with inertia through chapter 6's hybrid driver, and its summary.
 
 use super::{
-    ImpactRecord, InertiaModel, InertiaStop, Log, Mode, PainleveEvent, State, D_DAMP, D_FRIC,
-    D_IMPACT, NSTATE, TH, W_PLATE, XC,
+    ImpactRecord, InertiaModel, InertiaParams, InertiaStop, Log, Mode, PainleveEvent, PainleveRule,
+    State, D_DAMP, D_FRIC, D_IMPACT, NSTATE, TH, VXC, W_PLATE, XC,
 };
 use crate::numerics::hybrid::{simulate, Observer, Options, Outcome, Segment, Transition};
+use crate::physics::stick::StickParams;
 
 /// The typed outcome of a run.
 #[derive(Debug, Clone, PartialEq)]
@@ -157,6 +158,29 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
             self.switches += 1;
         }
     }
+}
+
+/// The scene of cardillo's `examples/Painleve.py` (Glocker 1995, 5.3.4, "impact without
+/// collision"): a uniform rod of length 2 m and 1 kg, mu = 5/3, g = 10 m/s^2, leaning
+/// 59 deg from the vertical (top to the left), its lower end sliding right at 30 m/s on a
+/// still floor, under the Painleve `rule`, run to `t_end_s` with a trace every
+/// millisecond. The Painleve point it reaches is singular (both coefficients vanish), so
+/// the rate after it depends on `rule`.
+pub fn glocker_scene(rule: PainleveRule, opts: &Options, t_end_s: f64) -> InertiaRun {
+    let th = -(59.0f64).to_radians(); // formula: 31 deg from the floor = -59 deg from the vertical
+    let mut base = StickParams::new(2.0, 0.0, 0.0, 0.0, 5.0 / 3.0, th, 10.0, 0.0, 30.0)
+        .expect("a stick inside the model's domain");
+    base.mass_kg = 0.0;
+    let mut md = InertiaModel::new(InertiaParams {
+        base,
+        rod_mass_kg: 1.0,
+        restitution: 0.0,
+    });
+    md.painleve_rule = rule;
+    let mut y = [0.0; NSTATE];
+    y[TH] = th;
+    y[VXC] = 30.0;
+    simulate_inertia(&md, 0.0, y, t_end_s, opts, 1e-3)
 }
 
 /// Runs `model` from `(t0, y0)` with C on the plate at rest relative to it (the rules
