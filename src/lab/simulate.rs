@@ -234,14 +234,8 @@ pub fn observed_ratio(dist: &[Option<f64>]) -> Option<f64> {
     if pts.len() < 8 {
         return None;
     }
-    let n = pts.len() as f64;
-    let (mk, ml) = (
-        pts.iter().map(|p| p.0).sum::<f64>() / n,
-        pts.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mk) * (p.1 - ml)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mk) * (p.0 - mk)).sum();
-    Some(10f64.powf(sxy / sxx)) // formula: d_k ~ |lambda|^k, slope of log10 d_k = log10 |lambda|
+    // formula: d_k ~ |lambda|^k, so the slope of log10 d_k over k is log10 |lambda|
+    Some(10f64.powf(crate::numerics::fit::slope(&pts)))
 }
 
 /// Chapter 8's rod (when the request's rod mass is above 0): the rigid rod with its

@@ -3,11 +3,13 @@
 //! - [`ode`]: explicit Euler, classical RK4, Dormand-Prince 5(4) and 8(5,3) with
 //!   adaptive step control and dense output, behind one [`ode::Integrator`].
 //! - [`events`]: crossing directions and a bracketing (Illinois) root finder.
+//! - [`fit`]: least-squares slopes (the observed order of a convergence study).
 //! - [`hybrid`]: the event-driven hybrid-automaton driver: modes, flows (integrated or
 //!   in closed form), guards, resets, scheduled breakpoints and a Zeno guard.
 //! - [`trig`]: sine and cosine together by a table and angle addition (inner loops).
 
 pub mod events;
+pub mod fit;
 pub mod hybrid;
 pub mod ode;
 pub mod search;

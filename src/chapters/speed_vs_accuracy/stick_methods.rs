@@ -295,15 +295,7 @@ pub fn fitted_order(l: &Ladder) -> f64 {
         .filter(|r| r.rel.is_finite() && r.rel > 0.0)
         .map(|r| (r.knob.ln(), r.rel.ln()))
         .collect();
-    if pts.len() < 2 {
-        return f64::NAN;
-    }
-    let n = pts.len() as f64;
-    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
-    let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    sxy / sxx // formula: order = cov(ln knob, ln err) / var(ln knob)
+    crate::numerics::fit::slope(&pts) // formula: order = cov(ln knob, ln err) / var(ln knob)
 }
 
 /// The gap at the finest setting over its Richardson estimate for a method of order

@@ -267,17 +267,7 @@ pub fn observed_order(points: &[WpPoint], label: &str, floor: f64) -> f64 {
         .filter(|p| p.solver.label() == label && p.completed && p.error > floor)
         .map(|p| (p.solver.knob().ln(), p.error.ln()))
         .collect();
-    let n = pts.len() as f64;
-    if pts.len() < 2 {
-        return f64::NAN;
-    }
-    let (mx, my) = (
-        pts.iter().map(|p| p.0).sum::<f64>() / n,
-        pts.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    sxy / sxx // formula: order = cov(ln h, ln err) / var(ln h)
+    crate::numerics::fit::slope(&pts) // formula: order = cov(ln h, ln err) / var(ln h)
 }
 
 /// Formats an error coarsely for tables (two significant digits).

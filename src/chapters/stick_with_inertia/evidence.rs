@@ -262,14 +262,7 @@ pub fn fitted_order(rungs: &[Rung], lo: f64, hi: f64) -> f64 {
         .filter(|r| (lo..=hi).contains(&r.inertia_ratio))
         .map(|r| (r.inertia_ratio.ln(), r.error().abs().ln()))
         .collect();
-    let n = pts.len() as f64;
-    let (mx, my) = (
-        pts.iter().map(|p| p.0).sum::<f64>() / n,
-        pts.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    sxy / sxx // formula: least-squares slope
+    crate::numerics::fit::slope(&pts) // formula: least-squares slope in log-log
 }
 
 /// The rigid rule's `(P_n, u_n)` at the slip stop and the compliant runs' `(K, P_n, u_n)`.
