@@ -143,6 +143,46 @@ pub const CAUSES: &[Cause] = &[
             "a4-abort",
         ],
     },
+    Cause {
+        key: "hinge-force-missing",
+        what: "Algorithms 1-4 'Compute Fx and Fz in the HINGE phase', but section 4.2 gives no formula for the pivot's contact force",
+        claims: &["s5-hinge-force-missing"],
+    },
+    Cause {
+        key: "theta-reset-missing",
+        what: "section 4.4 resets θ = θ₀ after a collision; Algorithm 2, which executes the collision, never does",
+        claims: &["a2-theta-reset-missing"],
+    },
+    Cause {
+        key: "table1-flight-row",
+        what: "Table 1's Flight row has three entries for four columns: read as typeset it says v_x = 0",
+        claims: &["t1-flight-row"],
+    },
+    Cause {
+        key: "landing-at-lift-off",
+        what: "lift-off sets z_c = z_s and Algorithm 2 lands when z_c - z_s = 0: read literally every flight lands at once",
+        claims: &["a2-landing-at-once"],
+    },
+    Cause {
+        key: "exceeds-friction-signed",
+        what: "'F_x exceeds the frictional force' is printed as F_x > μ F_z; a slip needs |F_x| > μ F_z",
+        claims: &["s43-exceeds-friction"],
+    },
+    Cause {
+        key: "slip-stop-abort",
+        what: "the ABORT at a slip stop fires where a flight is consistent",
+        claims: &["a34-slip-stop-abort"],
+    },
+    Cause {
+        key: "table1-caption-one-mode",
+        what: "Table 1's caption promises one mode whose inequalities hold at the present values; at a pivot exit none or several do",
+        claims: &["t1-caption-one-mode"],
+    },
+    Cause {
+        key: "self-locking-edge",
+        what: "C.9's slide denominator vanishes at tan θ = σ μ inside the allowed range, where no printed rule applies",
+        claims: &["c9-self-locking-edge"],
+    },
 ];
 
 /// The cause of claim `claim` of chapter `chapter`: its key in [`CAUSES`]; else, for
