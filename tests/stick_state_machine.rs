@@ -49,6 +49,8 @@ const FULL: Recording = Recording {
     sequence_cap: 100_000,
     trace_dt_s: 0.0,
     check_invariants: true,
+    grid_only: false,
+    list_cap: None,
 };
 
 fn scenes() -> Vec<(&'static str, StickParams)> {

@@ -20,6 +20,9 @@ use std::collections::BTreeMap;
 pub const FRAMES_PER_CYCLE: f64 = 40.0;
 /// Most frames in one answer (about 0.3 MB of JSON); longer runs are sampled coarser.
 pub const MAX_FRAMES: f64 = 4000.0;
+/// Most events and landings a lab run keeps in its lists (the answer shows the counts
+/// and the events CSV, whose switches `main_run::recording` caps at 4000).
+pub const LIST_CAP: usize = 4000;
 
 /// The interval between frames (s) for a run of `duration_s` at `p`'s frequency.
 pub fn frame_dt_s(p: &StickParams, duration_s: f64) -> f64 {
@@ -58,10 +61,17 @@ pub fn run(req: &RunRequest) -> Value {
 
 /// The run the CLI reports for the request (`main_run::run_main`'s second run), alone:
 /// the lab has no claims to judge on the physical run, so it neither runs it twice under
-/// `--rules printed` nor keeps a copy of its trace (each trace holds a sample per
-/// integration step: one copy fewer halves a run's peak memory, docs/lab.md).
+/// `--rules printed` nor keeps a copy of its trace. Its recording keeps the trace's grid
+/// samples only (the frames; not every step's end) and at most [`LIST_CAP`] events and
+/// landings (the answer uses neither list): a run's memory is bounded by the frames,
+/// not by its steps (docs/lab.md).
 fn reported_run(req: &RunRequest, dt: f64) -> (RunSummary, BTreeMap<&'static str, u64>) {
-    let (p, a, rec) = (&req.params, &req.args, main_run::recording(dt));
+    let rec = Recording {
+        grid_only: true,
+        list_cap: Some(LIST_CAP),
+        ..main_run::recording(dt)
+    };
+    let (p, a) = (&req.params, &req.args);
     match a.rules {
         ssm::Rules::Physical => (
             ssm::run_scene_from(p, a.start, req.duration_s, &req.opts, rec),
@@ -89,8 +99,8 @@ fn scene_facts(model: &StickModel) -> Value {
     })
 }
 
-/// The trace thinned to one sample per `dt` (the samples on the grid; the trace also
-/// holds every step's end), as columns: time (s), mode letter, theta (rad), x and z of
+/// The trace thinned to one sample per `dt` (the samples on the grid; a lab run's trace
+/// holds no others, `Recording::grid_only`), as columns: time (s), mode letter, theta (rad), x and z of
 /// C (m), plate height (m), contact force on C (N, zero in flight), and the energy
 /// accumulators (J).
 fn frames(model: &StickModel, s: &RunSummary, dt: f64) -> Value {
@@ -266,6 +276,8 @@ pub fn rod_view(req: &RunRequest, dt: f64) -> Value {
         sequence_cap: 0,
         trace_dt_s: dt,
         check_invariants: false,
+        grid_only: true,
+        list_cap: Some(LIST_CAP),
     };
     let g = simulate_stick(&ghost, 0.0, y0, req.duration_s, &req.opts, rec);
     let reason = match &run.outcome {

@@ -52,6 +52,8 @@ pub fn collect(ctx: &Context, opts: &Options) -> Evidence {
         sequence_cap: 100_000,
         trace_dt_s: p.period_s() / 16.0,
         check_invariants: true,
+        grid_only: false,
+        list_cap: None,
     };
     let tight = Options {
         control: StepControl::tol(EVIDENCE_RTOL, EVIDENCE_RTOL),
@@ -130,6 +132,8 @@ pub fn pendulum_trace(base: &StickParams, eps: f64) -> Vec<(f64, f64)> {
         sequence_cap: 0,
         trace_dt_s: 1e-3,
         check_invariants: false,
+        grid_only: false,
+        list_cap: None,
     };
     let s = crate::physics::stick::run::simulate_stick(
         &model,

@@ -34,6 +34,8 @@ pub fn draw_all(
             sequence_cap: 0,
             trace_dt_s: t / 200.0,
             check_invariants: false,
+            grid_only: false,
+            list_cap: None,
         },
     );
     let window: Vec<&Sample> = traced.trace.iter().filter(|s| s.t_s >= 10.0 * t).collect();
@@ -166,6 +168,8 @@ fn energy(dir: &Path, p: &StickParams, opts: &Options) -> Result<Vec<String>> {
             sequence_cap: 0,
             trace_dt_s: p.period_s() / 8.0,
             check_invariants: false,
+            grid_only: false,
+            list_cap: None,
         },
     );
     let m = StickModel::new(*p);

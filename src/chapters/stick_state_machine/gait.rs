@@ -86,6 +86,8 @@ pub fn frames(
         sequence_cap: 0,
         trace_dt_s: t / (per_cycle * n_track.div_ceil(per_cycle)) as f64,
         check_invariants: false,
+        grid_only: false,
+        list_cap: None,
     };
     let run = run_scene(p, (t0_cycles + cycles) * t, opts, rec);
     let m = StickModel::new(*p);

@@ -21,6 +21,8 @@ pub fn recording(trace_dt_s: f64) -> Recording {
         sequence_cap: 4000,
         trace_dt_s,
         check_invariants: true,
+        grid_only: false,
+        list_cap: None,
     }
 }
 

@@ -43,6 +43,8 @@ pub(super) fn late_speed(p: &StickParams, opts: &Options, quick: bool) -> f64 {
         sequence_cap: 0,
         trace_dt_s: skip * t, // samples at 0, skip T, 2 skip T, ... and at segment ends
         check_invariants: false,
+        grid_only: false,
+        list_cap: None,
     };
     let s = run_scene(p, cycles * t, opts, rec);
     if s.outcome != StickOutcome::Completed {

@@ -96,6 +96,8 @@ pub fn errata_table(ev: &Evidence, opts: &Options) -> String {
         sequence_cap: 100_000,
         trace_dt_s: 0.0,
         check_invariants: false,
+        grid_only: false,
+        list_cap: None,
     };
     let sets = rule_sets();
     let scenes = [(&ev.params[0], &ev.authors), (&ev.params[1], &ev.jamming)];

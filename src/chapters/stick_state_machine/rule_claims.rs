@@ -409,6 +409,8 @@ fn sequence_claim(d: &Statements, c: &Ctx) -> Claim {
             sequence_cap: 100_000,
             trace_dt_s: 0.0,
             check_invariants: false,
+            grid_only: false,
+            list_cap: None,
         };
         [0, 1].map(|i| super::run_scene(&ev.params[i], ev.duration_s, &opts, rec))
     };

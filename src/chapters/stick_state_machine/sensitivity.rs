@@ -72,6 +72,8 @@ pub fn tolerance_sensitivity(
         sequence_cap: 0,
         trace_dt_s: 0.0,
         check_invariants: false,
+        grid_only: false,
+        list_cap: None,
     };
     let second = run_scene_from(p, start, duration_s, &tight, rec);
     let (v1, v2) = (main.mean_velocity_mps, second.mean_velocity_mps);

@@ -58,6 +58,20 @@ pub struct Recording {
     pub trace_dt_s: f64,
     /// Check the contact conditions of Table 1 at the ends of every accepted step.
     pub check_invariants: bool,
+    /// Keep only the trace's samples on the `trace_dt_s` grid, not every step's end
+    /// (false: both, as drawn by the chapter's figures; true: the lab's frames, which
+    /// use the grid only, at a fraction of the memory).
+    pub grid_only: bool,
+    /// Most entries the event and landing lists keep (`None`: [`LIST_CAP`]); the counts
+    /// go on.
+    pub list_cap: Option<usize>,
+}
+
+impl Recording {
+    /// The cap of the event and landing lists.
+    fn list_cap(&self) -> usize {
+        self.list_cap.unwrap_or(LIST_CAP)
+    }
 }
 
 /// Largest violations of Table 1 seen at accepted steps (N, m, m/s).
@@ -292,13 +306,15 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
                 self.sum.trace.push(Sample { t_s: t, mode, y });
                 self.next_sample_t += self.rec.trace_dt_s;
             }
-            // keep the segment's end so that events are drawn sharply
-            let y = self.running(mode, seg.t1, &seg.y1);
-            self.sum.trace.push(Sample {
-                t_s: seg.t1,
-                mode,
-                y,
-            });
+            if !self.rec.grid_only {
+                // keep the segment's end so that events are drawn sharply
+                let y = self.running(mode, seg.t1, &seg.y1);
+                self.sum.trace.push(Sample {
+                    t_s: seg.t1,
+                    mode,
+                    y,
+                });
+            }
         }
     }
 
@@ -312,7 +328,7 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
     ) {
         let to = after.map(|(m, _)| m);
         self.sum.event_count += 1;
-        if self.rec.sequence_cap > 0 && self.sum.events.len() < LIST_CAP {
+        if self.rec.sequence_cap > 0 && self.sum.events.len() < self.rec.list_cap() {
             self.sum.events.push((t, from, to));
             if self.sum.switches.len() < self.rec.sequence_cap {
                 let y = self.model.canonical(from, t, _before);
@@ -342,7 +358,7 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
                 if sticking {
                     self.sum.sticking_landings += 1;
                 }
-                if self.rec.sequence_cap > 0 && self.sum.landings.len() < LIST_CAP {
+                if self.rec.sequence_cap > 0 && self.sum.landings.len() < self.rec.list_cap() {
                     let lever = y[TH];
                     self.sum.landings.push(Landing {
                         t_s: t,
