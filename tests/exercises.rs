@@ -676,6 +676,11 @@ fn math_reads_on_github() {
         // A tab is a TeX command that lost its backslash-t (`\tan` written in a Rust
         // string literal), and a space before a closing `$` stops it closing.
         assert!(!text.contains('\t'), "{}: contains a tab", path.display());
+        // Likewise any other control character (`\a` of `\approx` becomes BEL, `\b` of
+        // `\beta` a backspace, `\f` of `\frac` a form feed).
+        if let Some(c) = text.chars().find(|c| c.is_control() && *c != '\n') {
+            panic!("{}: contains control character {c:?}", path.display());
+        }
         assert!(
             !text.contains("\\rvert $"),
             "{}: a space before a closing $",
