@@ -338,28 +338,23 @@ pub fn mode_colours() -> Value {
     Value::Object(o)
 }
 
+/// One slider's ends as the page reads them: the flag's range, unit and reason.
+fn slider_ends(f: &Flag) -> Value {
+    let r = f.range;
+    serde_json::json!({
+        "min": r.lo, "max": r.hi, "min_open": r.lo_open, "max_open": r.hi_open,
+        "unit": f.unit, "range": f.range_text(), "reason": f.reason,
+    })
+}
+
 /// The sliders' ends, per request field: chapter 6's flag table ([`ssm::FLAGS`], the
 /// CLI's ranges with their reasons).
 pub fn ranges() -> Value {
     let mut o = serde_json::Map::new();
-    let r = ROD_MASS_KG.range;
-    o.insert(
-        ROD_MASS_FIELD.to_string(),
-        serde_json::json!({
-            "min": r.lo, "max": r.hi, "min_open": r.lo_open, "max_open": r.hi_open,
-            "unit": ROD_MASS_KG.unit, "range": ROD_MASS_KG.range_text(), "reason": ROD_MASS_KG.reason,
-        }),
-    );
+    o.insert(ROD_MASS_FIELD.to_string(), slider_ends(&ROD_MASS_KG));
     for (key, flag, _) in FIELDS {
         if let Some(f) = crate::flags::find(ssm::FLAGS, flag) {
-            let r = f.range;
-            o.insert(
-                key.to_string(),
-                serde_json::json!({
-                    "min": r.lo, "max": r.hi, "min_open": r.lo_open, "max_open": r.hi_open,
-                    "unit": f.unit, "range": f.range_text(), "reason": f.reason,
-                }),
-            );
+            o.insert(key.to_string(), slider_ends(f));
         }
     }
     Value::Object(o)

@@ -232,6 +232,20 @@ fn leaves(scene: &Scene, gamma: f64) -> bool {
 
 /// Contact fraction and c = F/(m v_ave) as omega grows at fixed delta_z: from the
 /// amplitude of Gamma = 2 at the chapter's frequency, with a bias of at least 0.05.
+/// The viscous constant c = F/(m v_ave) of scene `s` (1/s), from an exact run whose
+/// transient and window cover at least 5 and `flights` flights: a flight lasts about
+/// 2 v_z/g = Gamma/pi periods, so at large Gamma the windows must grow with it.
+fn viscous_constant(s: &Scene, transient: usize, observe: usize, flights: usize) -> f64 {
+    let flight_periods = (s.gamma / PI).ceil() as usize;
+    let stk = run(
+        s,
+        Model::Exact,
+        transient.max(5 * flight_periods),
+        observe.max(flights * flight_periods),
+    );
+    s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps // formula: c = F/(m v_ave)
+}
+
 fn fast_limits(scene: &Scene, quick: bool) -> FastLimits {
     let (transient, observe) = super::budget(quick);
     let base = Scene {
@@ -255,28 +269,12 @@ fn fast_limits(scene: &Scene, quick: bool) -> FastLimits {
     // the viscous constant further out, where the law's windows (up to +-15 % of
     // error) weigh less against the change in c: to 64 x the frequency
     for k in [16.0, 32.0] {
-        let s = at(k);
-        // a flight lasts ~ 2 v_z/g = Gamma/pi periods: the window holds 40 of them
-        let flight_periods = (s.gamma / PI).ceil() as usize;
-        let stk = run(
-            &s,
-            Model::Exact,
-            transient.max(5 * flight_periods),
-            (4 * observe).max(40 * flight_periods),
-        );
-        cs.push(s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps); // formula: c = F/(m v_ave)
+        cs.push(viscous_constant(&at(k), transient, 4 * observe, 40));
     }
     let ks = crate::sweep::logspace(1.0, LAW_SWEEP_K_MAX, if quick { 10 } else { 25 });
     let law_sweep = crate::sweep::par_map(&ks, "viscous constant over Gamma", |&k| {
         let s = at(k);
-        let flight_periods = (s.gamma / PI).ceil() as usize;
-        let stk = run(
-            &s,
-            Model::Exact,
-            transient.max(5 * flight_periods),
-            (4 * observe).max(10 * flight_periods),
-        );
-        let c = s.bias * s.mu * s.g_mps2 / stk.cycle_velocity_mps; // formula: c = F/(m v_ave)
+        let c = viscous_constant(&s, transient, 4 * observe, 10);
         (k, s.gamma, c, c * s.vz_mps() / s.g_mps2) // formula: r = c v_z/g
     });
     FastLimits {
