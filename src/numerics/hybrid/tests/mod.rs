@@ -1,5 +1,6 @@
 //! Tests of the hybrid driver against closed forms.
 use super::*;
+use crate::numerics::events::Direction;
 
 const G: f64 = 9.81;
 
