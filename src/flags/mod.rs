@@ -98,16 +98,6 @@ impl Flag {
         }
     }
 
-    /// The same entry under another name (a chapter whose flag means the same with
-    /// another name or another about).
-    pub const fn renamed(self, name: &'static str, about: &'static str) -> Self {
-        Flag {
-            name,
-            about,
-            ..self
-        }
-    }
-
     /// The range as text: `0.015 <= value <= 1.5`.
     pub fn range_text(&self) -> String {
         self.shown.map_or_else(|| self.range.text(), str::to_string)

@@ -4,7 +4,7 @@
 
 /// Golden-section search for the minimum of a unimodal `f` on `[a, b]`, stopped when the
 /// bracket is below `tol`. Returns the abscissa (the bracket's midpoint).
-pub fn golden_min(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> f64 {
+pub(crate) fn golden_min(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, tol: f64) -> f64 {
     let g = (5f64.sqrt() - 1.0) / 2.0; // formula: 1/phi
     let (mut c, mut d) = (b - g * (b - a), a + g * (b - a));
     let (mut fc, mut fd) = (f(c), f(d));

@@ -67,7 +67,7 @@ pub fn table() -> Table {
 impl Table {
     /// `(sin(2 pi x), cos(2 pi x))` for an angle `x` in turns, as [`sin_cos_turns`].
     #[inline]
-    pub fn sin_cos_turns(self, x: f64) -> (f64, f64) {
+    pub(crate) fn sin_cos_turns(self, x: f64) -> (f64, f64) {
         let u = x * SIZE as f64; // exact: SIZE is a power of two
         if in_range(u) {
             lookup(self.0, u)

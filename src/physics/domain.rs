@@ -43,7 +43,7 @@ impl Interval {
     }
 
     /// `[lo, inf)`.
-    pub const fn at_least(lo: f64) -> Self {
+    pub(crate) const fn at_least(lo: f64) -> Self {
         Interval::closed(lo, f64::INFINITY)
     }
 
@@ -53,7 +53,7 @@ impl Interval {
     }
 
     /// The same interval without its lower end.
-    pub const fn open_below(self) -> Self {
+    pub(crate) const fn open_below(self) -> Self {
         Interval {
             lo_open: true,
             ..self
@@ -61,7 +61,7 @@ impl Interval {
     }
 
     /// The same interval without its upper end.
-    pub const fn open_above(self) -> Self {
+    pub(crate) const fn open_above(self) -> Self {
         Interval {
             hi_open: true,
             ..self

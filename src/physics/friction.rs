@@ -72,7 +72,7 @@ pub enum StickTest {
 
 /// Coulomb's sticking test: the tangential force per unit mass `needed` to keep the
 /// block at rest relative to the plate against the normal force per unit mass `n`.
-pub fn stick_test(needed: f64, n: f64, mu: f64) -> StickTest {
+pub(crate) fn stick_test(needed: f64, n: f64, mu: f64) -> StickTest {
     // formula: stick iff |f_needed| <= mu N
     if needed.abs() <= mu * n {
         StickTest::Sticks
@@ -86,7 +86,7 @@ pub fn stick_test(needed: f64, n: f64, mu: f64) -> StickTest {
 /// The relative tangential velocity after an impact with normal impulse per unit mass
 /// `p_n >= 0` (m/s) and coefficient `mu`: stick if `|w| <= mu p_n`, else slide on with
 /// `w - mu p_n sign(w)` (tangential impulse limited by the cone).
-pub fn coulomb_impact(w_mps: f64, p_n_mps: f64, mu: f64) -> f64 {
+pub(crate) fn coulomb_impact(w_mps: f64, p_n_mps: f64, mu: f64) -> f64 {
     // formula: |P_t| <= mu P_n; w+ = 0 if |w-| <= mu P_n, else w- - mu P_n sign(w-)
     if w_mps.abs() <= mu * p_n_mps {
         0.0
@@ -119,7 +119,7 @@ pub fn averaged_coulomb_force(
 
 /// Effective viscous coefficient per unit mass of the averaged Coulomb law at small
 /// velocity (1/s): `2 mu n / (pi V)`.
-pub fn effective_viscous_coefficient(
+pub(crate) fn effective_viscous_coefficient(
     plate_velocity_amplitude_mps: f64,
     mu: f64,
     n_mps2: f64,

@@ -18,7 +18,7 @@ use std::cmp::Ordering;
 pub type V2 = [f64; 2];
 
 /// Whether `x` is in the range where the predicates are exact.
-pub fn in_exact_range(x: f64) -> bool {
+pub(crate) fn in_exact_range(x: f64) -> bool {
     x == 0.0 || (x.is_finite() && (1e-100..=1e100).contains(&x.abs()))
 }
 
@@ -200,7 +200,7 @@ fn fmt_v(v: V2) -> String {
 }
 
 /// A description of the hull for the reader.
-pub fn describe(h: &Hull) -> String {
+pub(crate) fn describe(h: &Hull) -> String {
     match h {
         Hull::Point(p) => format!("the single velocity {} m/s", fmt_v(*p)),
         Hull::Segment(a, b) => format!("the segment from {} to {} m/s", fmt_v(*a), fmt_v(*b)),

@@ -79,7 +79,7 @@ impl Harmonic {
     }
 
     /// `u = delta cos(2 pi f t)` along `axis` (the stick's platform, section 4).
-    pub fn cosine(axis: Axis, amplitude_m: f64, frequency_hz: f64) -> Self {
+    pub(crate) fn cosine(axis: Axis, amplitude_m: f64, frequency_hz: f64) -> Self {
         Harmonic {
             axis,
             amplitude_m,
@@ -89,12 +89,12 @@ impl Harmonic {
     }
 
     /// Peak velocity delta omega (m/s).
-    pub fn peak_velocity_mps(&self) -> f64 {
+    pub(crate) fn peak_velocity_mps(&self) -> f64 {
         self.amplitude_m * self.omega_rad_s
     }
 
     /// Peak acceleration delta omega^2 (m/s^2).
-    pub fn peak_acceleration_mps2(&self) -> f64 {
+    pub(crate) fn peak_acceleration_mps2(&self) -> f64 {
         self.amplitude_m * self.omega_rad_s * self.omega_rad_s
     }
 
@@ -192,12 +192,12 @@ pub enum Stroke {
 
 impl Sawtooth {
     /// Duration of the fast stroke (s): `v_slow t_slow / v_fast`.
-    pub fn fast_duration_s(&self) -> f64 {
+    pub(crate) fn fast_duration_s(&self) -> f64 {
         self.slow_velocity_mps * self.slow_duration_s / self.fast_velocity_mps // formula: v_s t_s = v_f t_f
     }
 
     /// The canonical float of breakpoint `i` (s).
-    pub fn breakpoint(&self, i: i64) -> f64 {
+    pub(crate) fn breakpoint(&self, i: i64) -> f64 {
         let k = i.div_euclid(2) as f64;
         let base = k * self.period_s(); // formula: B(2k) = k T
         if i.rem_euclid(2) == 0 {
@@ -208,7 +208,7 @@ impl Sawtooth {
     }
 
     /// Index of the piece containing `t`: the largest `i` with `B(i) <= t`.
-    pub fn piece_index(&self, t: f64) -> i64 {
+    pub(crate) fn piece_index(&self, t: f64) -> i64 {
         let mut i = 2 * (t / self.period_s()).floor() as i64;
         while self.breakpoint(i) > t {
             i -= 1;
@@ -220,7 +220,7 @@ impl Sawtooth {
     }
 
     /// The stroke under way at `t` (right-continuous at the breakpoints).
-    pub fn stroke_at(&self, t: f64) -> Stroke {
+    pub(crate) fn stroke_at(&self, t: f64) -> Stroke {
         if self.piece_index(t).rem_euclid(2) == 0 {
             Stroke::Slow
         } else {

@@ -52,25 +52,25 @@ impl RigidBody {
 }
 
 /// Unit vector along a stick leaning `theta_rad` from the vertical, from C to P.
-pub fn stick_axis(theta_rad: f64) -> Vector2<f64> {
+pub(crate) fn stick_axis(theta_rad: f64) -> Vector2<f64> {
     Vector2::new(theta_rad.sin(), theta_rad.cos())
 }
 
 /// Unit vector orthogonal to the stick (the document's z' direction).
-pub fn stick_normal(theta_rad: f64) -> Vector2<f64> {
+pub(crate) fn stick_normal(theta_rad: f64) -> Vector2<f64> {
     Vector2::new(theta_rad.cos(), -theta_rad.sin())
 }
 
 /// `(-j) x r = (-r_z, r_x)`: the velocity direction of a point at `r` under a positive
 /// (counter-clockwise, about `-j`) rotation; `j` is the normal of the x-z plane.
-pub fn perp(r: Vector2<f64>) -> Vector2<f64> {
+pub(crate) fn perp(r: Vector2<f64>) -> Vector2<f64> {
     Vector2::new(-r.y, r.x)
 }
 
 /// The planar cross product of `r` and an impulse or force `J`: the component of
 /// `r x J` along `-j` (the normal of the x-z plane), `r_x J_z - r_z J_x`, positive for a
 /// counter-clockwise moment.
-pub fn cross(r: Vector2<f64>, j: Vector2<f64>) -> f64 {
+pub(crate) fn cross(r: Vector2<f64>, j: Vector2<f64>) -> f64 {
     r.x * j.y - r.y * j.x
 }
 
@@ -166,7 +166,7 @@ pub fn impulse_for_velocity_change(
 /// The document's derivation for a body at rest: a force F at C gives
 /// `a_G = F/m`, `omega_dot = (r x F)/I_G` and `a_C = a_G + omega_dot perp(r)`.
 /// Returns `(a_G, omega_dot, a_C)`; requires `I_G > 0`.
-pub fn contact_acceleration(
+pub(crate) fn contact_acceleration(
     body: &RigidBody,
     r: Vector2<f64>,
     f: Vector2<f64>,

@@ -161,12 +161,6 @@ pub fn steady_drift(scene: &Scene) -> Steady {
     }
 }
 
-/// Relative error of the averaged law against the exact drift (b > 0).
-pub fn averaged_law_error(scene: &Scene) -> f64 {
-    let exact = steady_drift(scene).drift_mps;
-    ((scene.averaged_drift_mps() - exact) / exact).abs()
-}
-
 /// Relative error of the averaged law (`|law - exact| / |exact|`; over V when the
 /// exact drift vanishes, as at zero bias).
 pub fn relative_error(scene: &Scene, exact: f64) -> f64 {

@@ -29,7 +29,7 @@ pub enum Direction {
 impl Direction {
     /// Does the change `g0 -> g1` fire a guard with this direction? A guard that starts
     /// at exactly zero does not fire (it was just handled by the event that put it there).
-    pub fn fires(self, g0: f64, g1: f64) -> bool {
+    pub(crate) fn fires(self, g0: f64, g1: f64) -> bool {
         let rising = g0 < 0.0 && g1 >= 0.0;
         let falling = g0 > 0.0 && g1 <= 0.0;
         match self {
@@ -41,7 +41,7 @@ impl Direction {
 }
 
 /// Default time tolerance of event location: a few ulps of `t` (s).
-pub fn time_tolerance(t: f64) -> f64 {
+pub(crate) fn time_tolerance(t: f64) -> f64 {
     4.0 * f64::EPSILON * t.abs().max(1.0)
 }
 
@@ -50,7 +50,7 @@ pub fn time_tolerance(t: f64) -> f64 {
 /// end of a final bracket no wider than `t_tol`.
 ///
 /// Illinois: regula falsi, halving the weight of an end that is retained twice in a row.
-pub fn illinois(
+pub(crate) fn illinois(
     f: impl FnMut(f64) -> f64,
     a: f64,
     b: f64,
@@ -67,7 +67,7 @@ pub fn illinois(
 /// steps from it, `c - 1.5 f(c) / slope`, which lands just across the crossing when
 /// the model is good, so the bracket is a small multiple of the estimate's error wide;
 /// Illinois closes it. A poor estimate costs at most these two evaluations.
-pub fn illinois_from(
+pub(crate) fn illinois_from(
     mut f: impl FnMut(f64) -> f64,
     a: f64,
     b: f64,
@@ -181,7 +181,7 @@ pub struct GuardPoint {
 /// `sigma g0 > 0`, `3 sigma g0 + sigma d0 > 8 A`, `3 sigma g1 - sigma d1 > 8 A`, `sigma g1 > 0`.
 /// Most steps pass here; the others go to the exact least value of the model.
 #[inline]
-pub fn clearly_one_sided(a: &GuardPoint, b: &GuardPoint) -> bool {
+pub(crate) fn clearly_one_sided(a: &GuardPoint, b: &GuardPoint) -> bool {
     let h = b.t - a.t;
     let sign = if a.g > 0.0 { 1.0 } else { -1.0 };
     let (g0, g1) = (sign * a.g, sign * b.g);
@@ -194,7 +194,7 @@ pub fn clearly_one_sided(a: &GuardPoint, b: &GuardPoint) -> bool {
 /// values have opposite signs (or `b.g == 0`): `(t, rate)`, the model's root and its
 /// slope there, from Newton's method on the cubic started at the secant's root and kept
 /// inside the bracket. `None` when the iteration leaves it or does not settle.
-pub fn hermite_root(a: &GuardPoint, b: &GuardPoint) -> Option<(f64, f64)> {
+pub(crate) fn hermite_root(a: &GuardPoint, b: &GuardPoint) -> Option<(f64, f64)> {
     let h = b.t - a.t;
     if h <= 0.0 || a.g == b.g {
         return None;
@@ -383,7 +383,7 @@ pub struct CertifyStats {
 /// crossing can hide; the search stops refining pieces narrower than `t_tol` (a
 /// tangency below the time resolution), or `2^-32` of the step, and gives up after
 /// [`MAX_SAMPLES`] samples (a tangency within round-off), counting it as unresolved.
-pub fn hidden_crossing(
+pub(crate) fn hidden_crossing(
     mut at: impl FnMut(f64) -> (f64, f64),
     a: GuardPoint,
     b: GuardPoint,

@@ -15,7 +15,7 @@ pub struct Segment<'a, const N: usize> {
 
 impl<const N: usize> Segment<'_, N> {
     /// The state at `t` in `[t0, t1]` (dense output or closed form).
-    pub fn eval(&self, t: f64) -> [f64; N] {
+    pub(crate) fn eval(&self, t: f64) -> [f64; N] {
         (self.eval)(t)
     }
 }

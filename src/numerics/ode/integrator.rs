@@ -40,7 +40,7 @@ impl<const N: usize> Integrator<N> {
 
     /// Forgets the step history: call after a discontinuity (an event or a reset),
     /// so that no derivative from before it is reused. Keeps the step suggestion.
-    pub fn restart(&mut self) {
+    pub(crate) fn restart(&mut self) {
         self.mem.fsal = None;
     }
 

@@ -41,7 +41,7 @@ impl<const N: usize> Step<N> {
     /// The interpolated state at `t` in `[t0, t1]` (exact at the ends). `sys` is the
     /// system the step was taken on: DOP853 evaluates it three more times, once per
     /// step, the first time the step's interior is asked for.
-    pub fn eval<S: OdeSystem<N> + ?Sized>(&self, sys: &S, t: f64) -> [f64; N] {
+    pub(crate) fn eval<S: OdeSystem<N> + ?Sized>(&self, sys: &S, t: f64) -> [f64; N] {
         self.eval_first(sys, t, N)
     }
 
@@ -49,7 +49,12 @@ impl<const N: usize> Step<N> {
     /// guards, say): DOP853's interpolant skips the others, which keep `y0`'s values
     /// inside the step; the other interpolants, cheap already, give all.
     #[inline(always)]
-    pub fn eval_first<S: OdeSystem<N> + ?Sized>(&self, sys: &S, t: f64, args: usize) -> [f64; N] {
+    pub(crate) fn eval_first<S: OdeSystem<N> + ?Sized>(
+        &self,
+        sys: &S,
+        t: f64,
+        args: usize,
+    ) -> [f64; N] {
         let h = self.t1 - self.t0;
         if h == 0.0 || t == self.t0 {
             return self.y0;
@@ -94,7 +99,7 @@ impl<const N: usize> Step<N> {
 
     /// Right-hand-side evaluations spent on this step's interpolant after it was
     /// accepted (3 once DOP853's continuous extension is built, else 0).
-    pub fn dense_evals(&self) -> u64 {
+    pub(crate) fn dense_evals(&self) -> u64 {
         match &self.interp {
             Interp::Dop853(lazy) if lazy.built() => 3,
             _ => 0,

@@ -104,7 +104,12 @@ pub struct Impulse {
 /// The cases are tried in the order open, stick, slide +t, slide -t and the first one
 /// whose conditions hold is returned. `None`: no case holds (a Painleve-type
 /// inconsistency, possible only when `mu |W_nt|` is comparable with `W_nn`).
-pub fn solve_contact(w: [[f64; 2]; 2], u_free: [f64; 2], s0: f64, mu: f64) -> Option<Impulse> {
+pub(crate) fn solve_contact(
+    w: [[f64; 2]; 2],
+    u_free: [f64; 2],
+    s0: f64,
+    mu: f64,
+) -> Option<Impulse> {
     let s = u_free[0] + s0; // the free value of u_n + e u_n,k
     let ut = u_free[1];
     // Relative slack for the inequality checks: round-off of the 2 x 2 solves.
@@ -274,7 +279,7 @@ pub struct LocalProblem<const N: usize> {
 
 /// The midpoint, the free velocity and, when the contact is active at the midpoint, the
 /// local problem of a step of length `h` from `(t, q, v)`: `(q_m, v_free, problem)`.
-pub fn local_problem<M: ContactModel<N> + ?Sized, const N: usize>(
+pub(crate) fn local_problem<M: ContactModel<N> + ?Sized, const N: usize>(
     model: &M,
     t: f64,
     q: &[f64; N],

@@ -41,7 +41,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockContact<'a, P> {
 
     /// Absolute `(q, v)` of the block resting on the plate at `t` (at the plate's
     /// horizontal position and velocity plus `(u, w)`).
-    pub fn on_plate(&self, t: f64, u: f64, w: f64) -> ([f64; 2], [f64; 2]) {
+    pub(crate) fn on_plate(&self, t: f64, u: f64, w: f64) -> ([f64; 2], [f64; 2]) {
         let p = self.plate;
         ([u + p.x_m(t), p.z_m(t)], [w + p.vx_mps(t), p.vz_mps(t)])
     }

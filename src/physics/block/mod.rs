@@ -188,7 +188,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
     }
 
     /// Tangential force per unit mass needed to keep the block at rest on the plate (m/s^2).
-    pub fn needed_friction(&self, t: f64) -> f64 {
+    pub(crate) fn needed_friction(&self, t: f64) -> f64 {
         self.plate.ax_mps2(t) - self.params.bias_mps2 // formula: f_need = a_xp - b
     }
     // ANCHOR_END: contact_needs
@@ -208,14 +208,14 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
     /// segment that starts at `t0`: like [`BlockSystem::absolute`], but with the plate
     /// velocity of the segment's own piece (its left limit when `t` ends the segment on
     /// a breakpoint, where the relative state still belongs to the old piece).
-    pub fn absolute_in_piece(&self, t0: f64, t: f64, y: &[f64; 4]) -> [f64; 4] {
+    pub(crate) fn absolute_in_piece(&self, t0: f64, t: f64, y: &[f64; 4]) -> [f64; 4] {
         let p = self.plate;
         let (vx, vz) = self.plate_velocity_in_piece(t0, t);
         [y[0] + p.x_m(t), y[1] + vx, y[2] + p.z_m(t), y[3] + vz]
     }
 
     /// The contact forces per unit mass in `mode` at `(t, y)`.
-    pub fn contact_force(&self, mode: BlockMode, t: f64, y: &[f64; 4]) -> ContactForce {
+    pub(crate) fn contact_force(&self, mode: BlockMode, t: f64, y: &[f64; 4]) -> ContactForce {
         let n = self.normal(t);
         let f = match (mode, self.params.friction) {
             (BlockMode::Flight, _) => {
@@ -287,7 +287,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
     }
 
     /// The contact mode a block resting relative to the plate (`w = 0`) enters at `t`.
-    pub fn rest_mode(&self, t: f64) -> BlockMode {
+    pub(crate) fn rest_mode(&self, t: f64) -> BlockMode {
         match self.params.friction {
             FrictionLaw::Viscous { .. } => BlockMode::Viscous,
             FrictionLaw::NoSlip => BlockMode::Stick,
@@ -305,7 +305,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
     /// within its own uncertainty: the rounding of the two sides (8 ulps of their sum)
     /// plus their change over the event-time uncertainty `time_tolerance(t)` (an event
     /// is located to that, so the switch can sit that far off the true one).
-    pub fn at_cone_edge(&self, t: f64) -> bool {
+    pub(crate) fn at_cone_edge(&self, t: f64) -> bool {
         let edge = |s: f64| self.needed_friction(s).abs() - self.mu() * self.normal(s);
         let dt = time_tolerance(t);
         let (f, n) = (self.needed_friction(t).abs(), self.mu() * self.normal(t));
@@ -314,7 +314,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
     }
 
     /// The contact mode for relative velocity `w` at `t` (the block touches the plate).
-    pub fn contact_mode(&self, t: f64, w: f64) -> BlockMode {
+    pub(crate) fn contact_mode(&self, t: f64, w: f64) -> BlockMode {
         match self.params.friction {
             FrictionLaw::Viscous { .. } => BlockMode::Viscous,
             FrictionLaw::NoSlip => BlockMode::Stick,

@@ -17,18 +17,18 @@
 use std::f64::consts::{PI, TAU};
 
 /// `f(theta) = sin(theta) + eps cos(2 theta)`: plate velocity in units of `V`.
-pub fn plate_velocity(eps: f64, theta: f64) -> f64 {
+pub(crate) fn plate_velocity(eps: f64, theta: f64) -> f64 {
     theta.sin() + eps * (2.0 * theta).cos() // formula: v_p / V
 }
 
 /// `f'(theta) = cos(theta) - 2 eps sin(2 theta)`: plate acceleration in units of `V omega`.
-pub fn plate_acceleration(eps: f64, theta: f64) -> f64 {
+pub(crate) fn plate_acceleration(eps: f64, theta: f64) -> f64 {
     theta.cos() - 2.0 * eps * (2.0 * theta).sin() // formula: a_p / (V omega)
 }
 
 /// Largest `|f'|` over a period: `sqrt(1 - s^2) |1 - 4 eps s|` at
 /// `s = sin(theta) = (1 - sqrt(1 + 128 eps^2)) / (16 eps)` (`1` for `eps = 0`).
-pub fn peak_acceleration(eps: f64) -> f64 {
+pub(crate) fn peak_acceleration(eps: f64) -> f64 {
     if eps == 0.0 {
         return 1.0;
     }

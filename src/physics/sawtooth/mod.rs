@@ -71,7 +71,7 @@ pub fn drift_velocity_mps(s: &Sawtooth, k_mps2: f64) -> f64 {
 
 /// The same drift in dimensionless form: `v_d / a = max(0, 1 - y / (r (r + 1)))` with
 /// `r = b / a` (speed ratio, > 1) and `y = k T_s / a` (friction number).
-pub fn drift_ratio(speed_ratio: f64, friction_number: f64) -> f64 {
+pub(crate) fn drift_ratio(speed_ratio: f64, friction_number: f64) -> f64 {
     let r = speed_ratio;
     (1.0 - friction_number / (r * (r + 1.0))).max(0.0) // formula: v_d/a = 1 - y/(r(r+1))
 }
@@ -79,7 +79,7 @@ pub fn drift_ratio(speed_ratio: f64, friction_number: f64) -> f64 {
 /// Friction impulse per unit mass and period (m/s) on a block that slips all period
 /// with `-b < v < a`: friction `+k` for `T_s`, `-k` for `T_f`: `k (T_s - T_f)`, along the
 /// slow stroke.
-pub fn slipping_impulse_per_mass(s: &Sawtooth, k_mps2: f64) -> f64 {
+pub(crate) fn slipping_impulse_per_mass(s: &Sawtooth, k_mps2: f64) -> f64 {
     k_mps2 * (s.slow_duration_s - s.fast_duration_s()) // formula: J/m = k (T_s - T_f)
 }
 
@@ -133,7 +133,7 @@ pub fn lock_time_s(s: &Sawtooth, k_mps2: f64, v0_mps: f64) -> f64 {
 
 /// The smallest `mu` for which a block starting at rest locks within `n_max` periods
 /// (g in m/s^2): from `a - k T_s <= n_max k (T_s - T_f)`.
-pub fn mu_min_for_lock(s: &Sawtooth, g_mps2: f64, n_max: f64) -> f64 {
+pub(crate) fn mu_min_for_lock(s: &Sawtooth, g_mps2: f64, n_max: f64) -> f64 {
     let (a, ts, tf) = (s.slow_velocity_mps, s.slow_duration_s, s.fast_duration_s());
     a / (g_mps2 * (ts + n_max * (ts - tf))) // formula: k >= a / (T_s + N (T_s - T_f))
 }

@@ -30,7 +30,7 @@ impl StickModel {
     /// Angular momentum of P about C relative to the plate, per unit mass, in the
     /// document's sign: `-(r_P/C x (v_P - zdot_s e_z))_y` = `(z_p - z_c)(xdot_p) -
     /// (x_p - x_c)(zdot_p - zdot_s)` with lever arm at `theta_lever` (m^2/s).
-    pub fn angular_momentum_about_c(&self, t: f64, y: &State, theta_lever: f64) -> f64 {
+    pub(crate) fn angular_momentum_about_c(&self, t: f64, y: &State, theta_lever: f64) -> f64 {
         let l = self.p.length_m;
         let [_, _, vxp, vzp] = self.tip(y);
         let (_, vs, _) = self.plate(t);
@@ -74,7 +74,7 @@ impl StickModel {
     /// moves with the plate vertically, `theta' = (zdot_s - zdot_p) / (L sin(theta))`,
     /// and C slides at `xdot_c = xdot_p - L theta' cos(theta)` (Algorithm 2's third
     /// branch). `None` when `sin(theta) = 0` (the rod vertical: no such motion).
-    pub fn impulse_free_landing(&self, t: f64, y: &State) -> Option<State> {
+    pub(crate) fn impulse_free_landing(&self, t: f64, y: &State) -> Option<State> {
         let l = self.p.length_m;
         let [_, _, vxp, vzp] = self.tip(y);
         let (zs, vs, _) = self.plate(t);

@@ -35,7 +35,7 @@ impl StickModel {
     /// [`StickModel::pivot_eval`] with the plate's acceleration `a_s` (m/s^2) given and
     /// the rod's direction carried in the state, `(sin, cos) = (ROD_X, ROD_Z)`.
     #[inline]
-    pub fn pivot_eval_carried(&self, a_s: f64, y: &State) -> ContactEval {
+    pub(crate) fn pivot_eval_carried(&self, a_s: f64, y: &State) -> ContactEval {
         self.pivot_eval_with(a_s, y[ROD_X], y[ROD_Z], y)
     }
 
@@ -60,15 +60,6 @@ impl StickModel {
     }
     // ANCHOR_END: pivot
 
-    /// Denominator of the slide's normal force, `L (sin(theta) - sigma mu cos(theta))`
-    /// (C.9 for sigma = +1, C.11 for sigma = -1): zero on the edge of the self-locking
-    /// range, where the rod lies along the edge of the friction cone.
-    #[inline]
-    pub fn slide_denominator(&self, sigma: f64, theta: f64) -> f64 {
-        let (s, c) = sin_cos(theta);
-        self.p.length_m * (s - sigma * self.p.mu * c) // formula: C.9/C.11 denominators
-    }
-
     /// Slide with friction `F_x = sigma mu F_z` (sigma = +1 left, -1 right): the normal
     /// force from the moment balance about P (C.9/C.11), theta'' from the vertical
     /// constraint `z_c = z_s` (C.14) and x'' of C from C.4. Exact trigonometry of `t`
@@ -82,7 +73,7 @@ impl StickModel {
     /// [`StickModel::slide_eval`] with `a_s` (m/s^2) given and the rod's direction
     /// carried in the state.
     #[inline]
-    pub fn slide_eval_carried(&self, sigma: f64, a_s: f64, y: &State) -> ContactEval {
+    pub(crate) fn slide_eval_carried(&self, sigma: f64, a_s: f64, y: &State) -> ContactEval {
         self.slide_eval_with(sigma, a_s, y[ROD_X], y[ROD_Z], y)
     }
 
@@ -115,7 +106,7 @@ impl StickModel {
 
     /// The evaluation of a contact mode (`None` in flight).
     #[inline]
-    pub fn contact_eval(&self, mode: Mode, t: f64, y: &State) -> Option<ContactEval> {
+    pub(crate) fn contact_eval(&self, mode: Mode, t: f64, y: &State) -> Option<ContactEval> {
         match mode {
             Mode::Flight => None,
             Mode::Pivot => Some(self.pivot_eval(t, y)),

@@ -37,7 +37,7 @@ impl Budget {
 
     /// The largest term of the budget (J), at least 1e-9 J: the scale of
     /// [`Budget::relative_residual`].
-    pub fn scale_j(&self) -> f64 {
+    pub(crate) fn scale_j(&self) -> f64 {
         [
             self.plate_work_j,
             self.delta_mechanical_j,
@@ -52,7 +52,7 @@ impl Budget {
 
 impl StickModel {
     /// Mechanical energy of the state (J).
-    pub fn mechanical_energy(&self, y: &State) -> f64 {
+    pub(crate) fn mechanical_energy(&self, y: &State) -> f64 {
         let p = &self.p;
         let [_, zp, vxp, vzp] = self.tip(y);
         let d = y[super::TH] - p.theta0_rad;

@@ -9,7 +9,7 @@ use super::{State, StickModel, D_DAMP, OM, ROD_X, ROD_Z, TH, VXC, VZC, XC, ZC};
 impl StickModel {
     /// The flight state at `t` of a flight that starts at `(t0, y0)`.
     #[inline]
-    pub fn flight_state(&self, t0: f64, y0: &State, t: f64) -> State {
+    pub(crate) fn flight_state(&self, t0: f64, y0: &State, t: f64) -> State {
         let p = &self.p;
         let (l, g) = (p.length_m, p.g_mps2);
         let tau = t - t0;
@@ -40,7 +40,7 @@ impl StickModel {
 
     /// Height of C above the plate, `h_c = z_c - z_s` (Table 1).
     #[inline]
-    pub fn h_c(&self, t: f64, y: &State) -> f64 {
+    pub(crate) fn h_c(&self, t: f64, y: &State) -> f64 {
         y[ZC] - self.plate(t).0
     }
 
@@ -56,7 +56,7 @@ impl StickModel {
     /// and the difference's arithmetic round terms of size `|z_c| + A + L` a few (16)
     /// times. This grows with `t` and with the number of cycles `f t`: a fixed bound
     /// cannot hold over long runs.
-    pub fn penetration_budget_m(&self, t: f64, y: &State) -> f64 {
+    pub(crate) fn penetration_budget_m(&self, t: f64, y: &State) -> f64 {
         let eps = f64::EPSILON;
         let a = self.p.plate.amplitude_m;
         let t_tol = 4.0 * eps * t.abs().max(1.0); // formula: numerics::events::time_tolerance
@@ -74,7 +74,7 @@ impl StickModel {
     /// with `|h_c''| <= A = g + delta omega^2 + L (k/gamma)^2 (d^2 + |d|)`,
     /// `h_c(t + s) >= h + v s - A s^2 / 2`, positive for `s < (v + sqrt(v^2 + 2 A h)) / A`.
     /// Never shorter than the model's `min_flight_sample_s`.
-    pub fn flight_step(&self, t: f64, y: &State) -> f64 {
+    pub(crate) fn flight_step(&self, t: f64, y: &State) -> f64 {
         let p = &self.p;
         let (_, vs, _) = self.plate(t);
         let h = self.h_c(t, y).max(0.0);

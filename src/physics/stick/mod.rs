@@ -122,7 +122,7 @@ impl Mode {
     }
 
     /// One letter for phase sequences: F, P, L, R.
-    pub fn letter(self) -> char {
+    pub(crate) fn letter(self) -> char {
         match self {
             Mode::Flight => 'F',
             Mode::Pivot => 'P',

@@ -71,7 +71,7 @@ impl StickParams {
     /// # Panics
     /// When `gamma_accel` or `frequency_hz` is outside [`domain`] (the callers sweep
     /// validated ranges).
-    pub fn with_drive(&self, gamma_accel: f64, frequency_hz: f64) -> StickParams {
+    pub(crate) fn with_drive(&self, gamma_accel: f64, frequency_hz: f64) -> StickParams {
         StickParams::new(
             self.length_m,
             self.mass_kg,

@@ -41,7 +41,7 @@ impl StickModel {
     /// [`StickModel::select_contact`] with the pivot excluded when `allow_pivot` is false:
     /// a pivot guard that fired at the edge of the cone (or at `F_z = 0`) must leave the
     /// pivot even if rounding puts the reaction back on the edge.
-    pub fn select_contact_from(&self, t: f64, y: &State, allow_pivot: bool) -> Next {
+    pub(crate) fn select_contact_from(&self, t: f64, y: &State, allow_pivot: bool) -> Next {
         let mut y = *y;
         y[VXC] = 0.0;
         let e = self.pivot_eval(t, &y);
@@ -77,7 +77,7 @@ impl StickModel {
 
     /// The slide `mode` from rest at `(t, y)` if it is consistent (see
     /// [`StickModel::select_contact`]); a stop with the reason otherwise.
-    pub fn try_slide(&self, mode: Mode, t: f64, y: &State) -> Next {
+    pub(crate) fn try_slide(&self, mode: Mode, t: f64, y: &State) -> Next {
         if y[TH].sin().abs() < 1e-9 {
             return Next::Stop(StickStop::Invalid(InvalidReason::SingularSlide {
                 t_s: t,
@@ -122,7 +122,7 @@ impl StickModel {
 
     /// Lift-off: flight rate of the rod, C's velocity from P's (continuous) velocity;
     /// invalid if the flight would drive C into the plate.
-    pub fn takeoff(&self, t: f64, y: &State) -> Next {
+    pub(crate) fn takeoff(&self, t: f64, y: &State) -> Next {
         let p = &self.p;
         if !self.rate.is_finite() {
             return Next::Stop(StickStop::invalid(
@@ -155,7 +155,7 @@ impl StickModel {
     }
 
     /// Along-rod velocity of P relative to the plate, `w = (v_P - zdot_s e_z) . e_r` (m/s).
-    pub fn approach_velocity(&self, t: f64, y: &State) -> f64 {
+    pub(crate) fn approach_velocity(&self, t: f64, y: &State) -> f64 {
         let [_, _, vxp, vzp] = self.tip(y);
         let (_, vs, _) = self.plate(t);
         let (s, c) = y[TH].sin_cos();

@@ -36,7 +36,7 @@ impl StickOutcome {
     }
 
     /// The outcome of a model stop.
-    pub fn from_stop(x: StickStop) -> Self {
+    pub(crate) fn from_stop(x: StickStop) -> Self {
         match x {
             StickStop::Fell => StickOutcome::Fell,
             StickStop::Invalid(r) => StickOutcome::Invalid(r),
@@ -220,7 +220,7 @@ pub struct Switch {
 /// about 2.8 mm/s in their scene. With the plate accelerating downwards at `Gamma g`
 /// at `t = 0` no contact mode is consistent there, and their `selectPhase` starts in
 /// flight; so does the workbook from this state.
-pub fn authors_code_state(model: &StickModel) -> State {
+pub(crate) fn authors_code_state(model: &StickModel) -> State {
     let p = &model.p;
     let mut y = initial_state(model, 0.0, p.theta0_rad);
     let (z_s, _, _) = model.plate(0.0);
@@ -434,7 +434,7 @@ fn empty_summary(t0: f64, y0: State) -> RunSummary {
 /// [`super::printed`]) supplies flows, guards and transitions; `model` the geometry
 /// and forces the summary is measured with; `start` is the first mode and state.
 #[allow(clippy::too_many_arguments)]
-pub fn simulate_system<S: HybridSystem<NSTATE, Mode = Mode, Stop = StickStop>>(
+pub(crate) fn simulate_system<S: HybridSystem<NSTATE, Mode = Mode, Stop = StickStop>>(
     sys: &S,
     model: &StickModel,
     start: super::rules::Next,

@@ -58,7 +58,7 @@ impl OdeSystem<8> for Soft<'_> {
 /// plate, from exact contact at rest vertically, with stiffness `k` (N/m): the impulse
 /// `(P_t, P_n)` (N s) and C's normal velocity (m/s) when the slip stops; `None` if it
 /// has not stopped within `t_max_s`.
-pub fn slip_stop(
+pub(crate) fn slip_stop(
     md: &InertiaModel,
     theta: f64,
     u_t: f64,
@@ -104,7 +104,7 @@ pub fn slip_stop(
 /// The rigid rule's prediction at the slip stop: the first piece of the impact without
 /// collision, `p1 = -u_t / (W_tt r + W_tn)` with `r = -mu sign(u_t)`; returns
 /// `(P_n, u_n)` at the stop (N s, m/s).
-pub fn rigid_slip_stop(md: &InertiaModel, theta: f64, u_t: f64) -> (f64, f64) {
+pub(crate) fn rigid_slip_stop(md: &InertiaModel, theta: f64, u_t: f64) -> (f64, f64) {
     let w = md.mobility(theta);
     let r = -u_t.signum() * md.p.base.mu;
     let p1 = -u_t / (w[0][0] * r + w[0][1]); // formula: u_t + (W_tt r + W_tn) p = 0

@@ -70,7 +70,7 @@ impl InertiaModel {
     /// The normal acceleration of C is `a_Cz = (D / (M I_G)) F_z + b_z`: `D > 0` gives one
     /// normal force, `D < 0` none (inconsistent) or two (indeterminate). `D = 0` at
     /// `sigma mu = tan(theta) + 1/(alpha sin(theta) cos(theta))`.
-    pub fn slide_coefficient(&self, sigma: f64, theta: f64) -> f64 {
+    pub(crate) fn slide_coefficient(&self, sigma: f64, theta: f64) -> f64 {
         let (s, c) = theta.sin_cos();
         let (m, l) = (self.geo.total_kg, self.geo.l_g_m);
         self.geo.i_g + m * l * l * s * (s - sigma * self.p.base.mu * c) // formula: D = M I_G (W_zz + sigma mu W_zx)
@@ -110,7 +110,7 @@ impl InertiaModel {
     }
 
     /// The evaluation of a contact mode (`None` in flight).
-    pub fn contact_eval(&self, mode: super::Mode, t: f64, y: &State) -> Option<ContactEval> {
+    pub(crate) fn contact_eval(&self, mode: super::Mode, t: f64, y: &State) -> Option<ContactEval> {
         match mode {
             super::Mode::Flight => None,
             super::Mode::Pivot => Some(self.pivot_eval(t, y)),
@@ -119,7 +119,7 @@ impl InertiaModel {
     }
 
     /// Velocity of C relative to the plate `(u_t, u_n)` (m/s).
-    pub fn relative_velocity(&self, t: f64, y: &State) -> [f64; 2] {
+    pub(crate) fn relative_velocity(&self, t: f64, y: &State) -> [f64; 2] {
         [y[VXC], y[super::VZC] - self.plate(t).1]
     }
 }

@@ -120,7 +120,7 @@ impl Oscillator {
     }
 
     /// Bounds on `|d'|` and `|d''|` over all `t >= 0`.
-    pub fn bounds(&self) -> (f64, f64) {
+    pub(crate) fn bounds(&self) -> (f64, f64) {
         match *self {
             Oscillator::TwoExp { a, b, s1, s2 } => (
                 (a * s1).abs() + (b * s2).abs(),
@@ -142,7 +142,7 @@ impl Oscillator {
 
 impl InertiaModel {
     /// The angle's oscillator for a flight starting at `y0`.
-    pub fn flight_oscillator(&self, y0: &State) -> Oscillator {
+    pub(crate) fn flight_oscillator(&self, y0: &State) -> Oscillator {
         let b = &self.p.base;
         Oscillator::new(
             self.geo.i_g,
@@ -154,7 +154,7 @@ impl InertiaModel {
     }
 
     /// The flight state at `t` of a flight that starts at `(t0, y0)`.
-    pub fn flight_state(&self, t0: f64, y0: &State, t: f64) -> State {
+    pub(crate) fn flight_state(&self, t0: f64, y0: &State, t: f64) -> State {
         let b = &self.p.base;
         let tau = t - t0;
         let [xg, zg, vxg, vzg] = self.centre(y0);
@@ -178,14 +178,14 @@ impl InertiaModel {
     }
 
     /// Height of C above the plate (m).
-    pub fn h_c(&self, t: f64, y: &State) -> f64 {
+    pub(crate) fn h_c(&self, t: f64, y: &State) -> f64 {
         y[ZC] - self.plate(t).0
     }
 
     /// Longest flight step over which `h_c` provably stays positive, from
     /// `|h_c''| <= A = g + delta omega^2 + l_G (max|theta''| + max theta'^2)`; never
     /// shorter than `min_flight_sample_s`.
-    pub fn flight_step(&self, t: f64, y: &State) -> f64 {
+    pub(crate) fn flight_step(&self, t: f64, y: &State) -> f64 {
         let b = &self.p.base;
         let (_, vs, _) = self.plate(t);
         let h = self.h_c(t, y).max(0.0);

@@ -48,7 +48,7 @@ pub fn uses_composite(p: &InertiaParams) -> bool {
 }
 
 /// The massless model of the same stick (chapter 6): its whole mass at P.
-pub fn massless_params(p: &InertiaParams) -> StickParams {
+pub(crate) fn massless_params(p: &InertiaParams) -> StickParams {
     let mut b = p.base;
     b.mass_kg = p.base.mass_kg + p.rod_mass_kg;
     b
@@ -56,7 +56,7 @@ pub fn massless_params(p: &InertiaParams) -> StickParams {
 
 /// Chapter 6's mean speed on the same scene (m/s), from its static angle: the outer
 /// solution.
-pub fn massless_speed(p: &InertiaParams, duration_s: f64, opts: &Options) -> f64 {
+pub(crate) fn massless_speed(p: &InertiaParams, duration_s: f64, opts: &Options) -> f64 {
     let b = massless_params(p);
     let md = StickModel::new(b);
     let y0 = initial_state(&md, 0.0, b.static_angle().unwrap_or(b.theta0_rad));

@@ -208,7 +208,7 @@ impl InertiaModel {
     }
 
     /// The spring-damper couple `Q = k (theta - theta_0) + gamma theta'` (N m).
-    pub fn couple(&self, theta: f64, omega: f64) -> f64 {
+    pub(crate) fn couple(&self, theta: f64, omega: f64) -> f64 {
         let b = &self.p.base;
         b.stiffness_nm_per_rad * (theta - b.theta0_rad) + b.damping_nms_per_rad * omega
         // formula: Q
@@ -229,19 +229,19 @@ impl InertiaModel {
     }
 
     /// Mechanical energy `M |v_G|^2/2 + I_G theta'^2/2 + M g z_G + k (theta-theta_0)^2/2` (J).
-    pub fn mechanical_energy(&self, y: &State) -> f64 {
+    pub(crate) fn mechanical_energy(&self, y: &State) -> f64 {
         self.kinetic_energy(y) + self.potential_energy(y)
     }
 
     /// Kinetic energy `M |v_G|^2/2 + I_G theta'^2/2` (J).
-    pub fn kinetic_energy(&self, y: &State) -> f64 {
+    pub(crate) fn kinetic_energy(&self, y: &State) -> f64 {
         let [_, _, vx, vz] = self.centre(y);
         0.5 * self.geo.total_kg * (vx * vx + vz * vz) + 0.5 * self.geo.i_g * y[OM] * y[OM]
         // formula: T
     }
 
     /// Potential energy `M g z_G + k (theta - theta_0)^2 / 2` (J).
-    pub fn potential_energy(&self, y: &State) -> f64 {
+    pub(crate) fn potential_energy(&self, y: &State) -> f64 {
         let b = &self.p.base;
         let d = y[TH] - b.theta0_rad;
         self.geo.total_kg * b.g_mps2 * self.centre(y)[1] + 0.5 * b.stiffness_nm_per_rad * d * d

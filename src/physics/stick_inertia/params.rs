@@ -54,11 +54,6 @@ impl MassGeometry {
     pub fn alpha(&self) -> f64 {
         self.total_kg * self.l_g_m * self.l_g_m / self.i_g // formula: alpha = M l_G^2 / I_G
     }
-
-    /// `beta = alpha/(1+alpha) = M l_G^2 / I_C` (1), finite in the massless limit (1).
-    pub fn beta(&self) -> f64 {
-        self.total_kg * self.l_g_m * self.l_g_m / self.i_c // formula: beta = M l_G^2 / I_C
-    }
 }
 
 impl InertiaParams {

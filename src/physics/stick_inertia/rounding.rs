@@ -37,13 +37,13 @@ pub const C_OPS: f64 = 64.0;
 impl InertiaModel {
     /// Condition number of the mobility `W`, `1 + alpha` (1), capped at `1/u` (beyond
     /// it no digit of an impact survives).
-    pub fn mobility_condition(&self) -> f64 {
+    pub(crate) fn mobility_condition(&self) -> f64 {
         (1.0 + self.geo.alpha()).min(1.0 / UNIT_ROUNDOFF) // formula: kappa_W = (1 + alpha)/1
     }
 
     /// The velocity scale of C (m/s): the largest of `|u|` (C's velocity relative to the
     /// plate), the plate's peak speed and `sqrt(g L)`.
-    pub fn velocity_scale(&self, u: [f64; 2]) -> f64 {
+    pub(crate) fn velocity_scale(&self, u: [f64; 2]) -> f64 {
         let b = &self.p.base;
         u[0].hypot(u[1])
             .max(b.plate.peak_velocity_mps())
@@ -59,7 +59,7 @@ impl InertiaModel {
 
     /// The rounding threshold of `D` at `theta` (kg m^2):
     /// `eta_D = C_OPS u (I_G + M l_G^2 (sin^2 + mu |sin cos|))`.
-    pub fn coefficient_rounding(&self, theta: f64) -> f64 {
+    pub(crate) fn coefficient_rounding(&self, theta: f64) -> f64 {
         let (s, c) = theta.sin_cos();
         let (m, l) = (self.geo.total_kg, self.geo.l_g_m);
         C_OPS
@@ -70,7 +70,7 @@ impl InertiaModel {
 
     /// The rounding threshold of the contact force at `y` (N):
     /// `eta_F = C_OPS u (M (g + delta omega^2 + l_G theta'^2) + |Q|/l_G)`.
-    pub fn force_rounding(&self, y: &State) -> f64 {
+    pub(crate) fn force_rounding(&self, y: &State) -> f64 {
         let b = &self.p.base;
         let (m, l) = (self.geo.total_kg, self.geo.l_g_m);
         let scale = m * (b.g_mps2 + b.plate.peak_acceleration_mps2() + l * y[OM] * y[OM])

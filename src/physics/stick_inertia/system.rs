@@ -217,7 +217,7 @@ impl InertiaModel {
     /// C on the plate slipping at `y[VXC] != 0`: the slide of that slip if its contact
     /// problem has one solution with `F_z >= 0`; lift-off if that solution is tensile;
     /// the Painleve rules otherwise.
-    pub fn enter_slide(&self, t: f64, y: &State, depth: usize) -> Next {
+    pub(crate) fn enter_slide(&self, t: f64, y: &State, depth: usize) -> Next {
         // a slip below the rounding of C's velocity is no slip: C is stuck (a 1e-13 m/s
         // remainder of a sticking impact is not a slide, let alone a Painleve case)
         if y[VXC].abs() <= self.velocity_rounding([y[VXC], 0.0]) {
@@ -279,7 +279,7 @@ impl InertiaModel {
 
     /// Lift-off with the state continuous (the rod's rate does not jump: it has inertia);
     /// consistent when the free motion moves C away from the plate (`N <= 0`).
-    pub fn takeoff(&self, t: f64, y: &State) -> Next {
+    pub(crate) fn takeoff(&self, t: f64, y: &State) -> Next {
         let e = self.slide_eval(1.0, t, y); // N does not depend on the slide's direction
         let b = &self.p.base;
         let scale = self.geo.i_g * (b.g_mps2 + b.plate.peak_acceleration_mps2())

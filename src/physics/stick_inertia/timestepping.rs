@@ -58,13 +58,13 @@ impl ContactModel<3> for MjStick<'_> {
 
 impl InertiaModel {
     /// `(q, v)` of the Moreau-Jean form from a state of the event-driven form.
-    pub fn to_mj(&self, y: &State) -> ([f64; 3], [f64; 3]) {
+    pub(crate) fn to_mj(&self, y: &State) -> ([f64; 3], [f64; 3]) {
         let [xg, zg, vx, vz] = self.centre(y);
         ([xg, zg, y[TH]], [vx, vz, y[OM]])
     }
 
     /// x of C from Moreau-Jean coordinates (m).
-    pub fn mj_xc(&self, q: &[f64; 3]) -> f64 {
+    pub(crate) fn mj_xc(&self, q: &[f64; 3]) -> f64 {
         q[0] - self.geo.l_g_m * q[2].sin()
     }
 }

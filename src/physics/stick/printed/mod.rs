@@ -165,13 +165,13 @@ impl Printed {
     };
 
     /// The same rule set with `e` corrected.
-    pub fn with_fix(mut self, e: Erratum) -> Self {
+    pub(crate) fn with_fix(mut self, e: Erratum) -> Self {
         self.fixed |= e.bit();
         self
     }
 
     /// The same rule set read with `semantics`.
-    pub fn with_semantics(mut self, semantics: Semantics) -> Self {
+    pub(crate) fn with_semantics(mut self, semantics: Semantics) -> Self {
         self.semantics = semantics;
         self
     }
@@ -230,7 +230,7 @@ impl PrintedStick {
     }
 
     /// Counts of the printed lines that fired, by rule id.
-    pub fn fired(&self) -> BTreeMap<&'static str, u64> {
+    pub(crate) fn fired(&self) -> BTreeMap<&'static str, u64> {
         self.fired.borrow().clone()
     }
 

@@ -87,7 +87,7 @@ pub struct SoftParams {
 impl SoftParams {
     /// The one-parameter family of the module doc: `eps` (1) with `tau_0` = a thirtieth
     /// of the drive period and `v_0` = 1 m/s (`v_eps` = 0.01 m/s at eps = 0.1).
-    pub fn regularised(p: &StickParams, eps: f64) -> Self {
+    pub(crate) fn regularised(p: &StickParams, eps: f64) -> Self {
         let tau0 = p.period_s() / 30.0;
         let m = p.mass_kg;
         SoftParams {
@@ -103,7 +103,7 @@ impl SoftParams {
     /// [`SoftParams::regularised`]): its friction error, O(sqrt v_eps) at worst, is then
     /// not first order in `eps` (apparent order near 0.7 measured). Kept as the wrong
     /// variant that the chapter's order claim must reject.
-    pub fn regularised_linear_slip(p: &StickParams, eps: f64) -> Self {
+    pub(crate) fn regularised_linear_slip(p: &StickParams, eps: f64) -> Self {
         SoftParams {
             slip_scale_mps: 0.1 * eps, // formula: v_eps = 0.1 eps (m/s)
             ..Self::regularised(p, eps)

@@ -50,7 +50,7 @@ pub fn simulate_soft(
 
 /// As [`simulate_soft`] with the contact constants `soft` given one by one (to vary one
 /// constant at a time).
-pub fn simulate_soft_with(
+pub(crate) fn simulate_soft_with(
     p: &StickParams,
     soft: SoftParams,
     cycles: f64,

@@ -47,7 +47,7 @@ impl StickContact {
 
     /// `(q, v)` of the stick standing still on the plate at `t` at angle `theta` with C
     /// at `x_c` (m).
-    pub fn on_plate(&self, t: f64, theta: f64, x_c: f64) -> ([f64; 3], [f64; 3]) {
+    pub(crate) fn on_plate(&self, t: f64, theta: f64, x_c: f64) -> ([f64; 3], [f64; 3]) {
         let l = self.model.p.length_m;
         let (zs, vs, _) = self.model.plate(t);
         let (s, c) = theta.sin_cos();
