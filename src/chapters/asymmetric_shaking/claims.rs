@@ -352,18 +352,18 @@ fn plate_mean_velocity_mps(saw: &crate::physics::plate::Sawtooth, t1: f64, t2: f
 pub fn window_length_not_ratio(doc: &Statements, ev: &Evidence) -> Claim {
     let saw = ev.scene.saw;
     let (period, v_slow) = (saw.period_s(), saw.slow_velocity_mps);
-    let x_pp = v_slow * saw.slow_duration_s; // formula: peak-to-peak stroke x_pp = v_slow t_slow
     // Window A: t2 = 100 t1 (the printed condition), but only T/10 long, inside the slow
     // stroke (the long one, t_slow > T/2). Window B: t2/t1 = 1.04, but 40.25 periods long.
     let (a1, a2) = (period / 1000.0, period / 10.0);
     let (b1, b2) = (1000.0 * period, 1040.25 * period);
     let (ma, ma2) = plate_mean_velocity_mps(&saw, a1, a2);
     let (mb, mb2) = plate_mean_velocity_mps(&saw, b1, b2);
-    let small = 0.05 * v_slow; // "a small error": 5 % of the slow stroke's speed
-    let bound_b = x_pp / (b2 - b1); // formula: |mean v| <= x_pp/(t2 - t1)
     // Both methods agree to the rounding of a time near 1000 T (a few ulps of t, times
     // the stroke speeds, over the window).
     let round = 64.0 * f64::EPSILON * b2 * (v_slow + saw.fast_velocity_mps) / (b2 - b1);
+    let small = 0.05 * v_slow; // "a small error": 5 % of the slow stroke's speed
+    let x_pp = v_slow * saw.slow_duration_s; // formula: peak-to-peak stroke x_pp = v_slow t_slow
+    let bound_b = x_pp / (b2 - b1); // formula: |mean v| <= x_pp/(t2 - t1)
     let methods_agree = is_close(ma, ma2, round) && is_close(mb, mb2, round);
     let ratio_rule = ma.abs() <= small; // as printed: t2/t1 = 100 suffices
     let length_rule = mb.abs() <= bound_b + round && bound_b <= small && ma.abs() > small;

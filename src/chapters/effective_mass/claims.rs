@@ -3,8 +3,8 @@
 //! equations).
 
 use super::evidence::{
-    bisect, free_acceleration, point_mass_ratio, rod_lock_angles_closed_form, rod_ratio,
-    Evidence, Ratios,
+    bisect, free_acceleration, point_mass_ratio, rod_lock_angles_closed_form, rod_ratio, Evidence,
+    Ratios,
 };
 use super::statements::Statements;
 use super::{LENGTH_M, MASS_KG};

@@ -189,13 +189,16 @@ pub fn free_acceleration(
             force_n.dot(&dc_dtheta) / body.inertia_kgm2, // formula: I_G θ'' = F . dC/dθ
         ]
     };
-    let axpy = |s: [f64; 6], k: [f64; 6], a: f64| std::array::from_fn::<f64, 6, _>(|i| s[i] + a * k[i]);
+    let axpy =
+        |s: [f64; 6], k: [f64; 6], a: f64| std::array::from_fn::<f64, 6, _>(|i| s[i] + a * k[i]);
     let rk4 = |s: [f64; 6], h: f64| {
         let k1 = rhs(s);
         let k2 = rhs(axpy(s, k1, h / 2.0));
         let k3 = rhs(axpy(s, k2, h / 2.0));
         let k4 = rhs(axpy(s, k3, h));
-        std::array::from_fn::<f64, 6, _>(|i| s[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
+        std::array::from_fn::<f64, 6, _>(|i| {
+            s[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
+        })
     };
     let c_of = |s: [f64; 6]| Vector2::new(s[0] - half * s[2].sin(), s[1] - half * s[2].cos()); // formula: C = G - (L/2) e_r
     let s0 = [0.0, 0.0, theta, 0.0, 0.0, spin_rad_s];
