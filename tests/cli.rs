@@ -140,7 +140,7 @@ fn a_chapter_run_leads_with_the_physics_and_the_claim_table_is_one_flag_away() {
     assert!(
         first
             .iter()
-            .any(|l| l.contains("Verdicts: 16 claims: 13 confirmed")),
+            .any(|l| l.contains("Verdicts: 17 claims: 13 confirmed")),
         "{out}"
     );
     assert!(

@@ -35,6 +35,11 @@ pub const CAUSES: &[Cause] = &[
         claims: &["locomotion-needs-slip"],
     },
     Cause {
+        key: "window-ratio-not-length",
+        what: "3.2.1 bounds the error of a non-integer averaging window by 't2 so much greater than t1'; the window's length in periods, (t2 - t1)/T, sets it",
+        claims: &["window-length-not-ratio"],
+    },
+    Cause {
         key: "c3-relaxation-in-contact",
         what: "C.3 lists the flight's relaxation law among the general kinematics",
         claims: &["c3-relaxation-flight-only"],
@@ -46,7 +51,7 @@ pub const CAUSES: &[Cause] = &[
     },
     Cause {
         key: "c12-blank",
-        what: "C.12 (the sliding-left angle equation) is blank",
+        what: "the sliding-left angle equation is not printed (after 'from Eqns. C.10, C.4, thus'; the empty C.12 stands in the sliding-right part)",
         claims: &["c12-blank"],
     },
     Cause {

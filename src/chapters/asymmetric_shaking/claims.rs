@@ -27,6 +27,7 @@ pub fn all(doc: &Statements, ev: &Evidence) -> Vec<Claim> {
         locomotion_needs_slip(doc, ev),
         biharmonic_always_slipping(doc, ev),
         biharmonic_stuck(doc, ev),
+        window_length_not_ratio(doc, ev),
     ]);
     out
 }
@@ -327,4 +328,65 @@ pub fn biharmonic_stuck(doc: &Statements, ev: &Evidence) -> Claim {
     .confirmed_if(
         agrees(0.95 * s.threshold, s.below_mps) && agrees(1.05 * s.threshold, s.above_mps),
     )
+}
+
+/// The plate's mean velocity over [t1, t2], twice: the closed form
+/// (x(t2) - x(t1))/(t2 - t1), and the velocity integrated stroke by stroke (a second
+/// method that never evaluates x). Returns (closed form, second method), m/s.
+fn plate_mean_velocity_mps(saw: &crate::physics::plate::Sawtooth, t1: f64, t2: f64) -> (f64, f64) {
+    let closed = (saw.x_m(t2) - saw.x_m(t1)) / (t2 - t1); // formula: mean v = (x(t2) - x(t1))/(t2 - t1)
+    let (mut t, mut integral) = (t1, 0.0);
+    while t < t2 {
+        let next = saw.breakpoint_after(t).unwrap_or(t2).min(t2);
+        integral += saw.vx_mps(t) * (next - t); // formula: the integral of a piecewise-constant velocity
+        t = next;
+    }
+    (closed, integral / (t2 - t1))
+}
+
+/// 3.2.1: "or so that t2 is so much greater than t1 that there is a small error from
+/// being a non-integer number of cycles": an erratum. The error of a window that is not
+/// a whole number of periods is set by its length in periods, (t2 - t1)/T, not by the
+/// ratio t2/t1: the plate's mean velocity over [t1, t2] is (x(t2) - x(t1))/(t2 - t1),
+/// at most x_pp/(t2 - t1), whatever t1.
+pub fn window_length_not_ratio(doc: &Statements, ev: &Evidence) -> Claim {
+    let saw = ev.scene.saw;
+    let (period, v_slow) = (saw.period_s(), saw.slow_velocity_mps);
+    // Window A: t2 = 100 t1 (the printed condition), but only T/10 long, inside the slow
+    // stroke (the long one, t_slow > T/2). Window B: t2/t1 = 1.04, but 40.25 periods long.
+    let (a1, a2) = (period / 1000.0, period / 10.0);
+    let (b1, b2) = (1000.0 * period, 1040.25 * period);
+    let (ma, ma2) = plate_mean_velocity_mps(&saw, a1, a2);
+    let (mb, mb2) = plate_mean_velocity_mps(&saw, b1, b2);
+    // Both methods agree to the rounding of a time near 1000 T (a few ulps of t, times
+    // the stroke speeds, over the window).
+    let round = 64.0 * f64::EPSILON * b2 * (v_slow + saw.fast_velocity_mps) / (b2 - b1);
+    let small = 0.05 * v_slow; // "a small error": 5 % of the slow stroke's speed
+    let x_pp = v_slow * saw.slow_duration_s; // formula: peak-to-peak stroke x_pp = v_slow t_slow
+    let bound_b = x_pp / (b2 - b1); // formula: |mean v| <= x_pp/(t2 - t1)
+    let methods_agree = is_close(ma, ma2, round) && is_close(mb, mb2, round);
+    let ratio_rule = ma.abs() <= small; // as printed: t2/t1 = 100 suffices
+    let length_rule = mb.abs() <= bound_b + round && bound_b <= small && ma.abs() > small;
+    let (printed, corrected) = if doc.window_ratio_condition {
+        (ratio_rule && methods_agree, length_rule && methods_agree)
+    } else {
+        (length_rule && methods_agree, length_rule && methods_agree)
+    };
+    Claim::draft(
+        Check::ClosedForm,
+        "window-length-not-ratio",
+        "3.2.1",
+        "As printed: the averaging window [t1, t2] is chosen with an integer number of cycles 'or so that t2 is so much greater than t1 that there is a small error from being a non-integer number of cycles'. Correct: the error is set by the window's length in periods, not by t2/t1: the plate's mean velocity over the window is (x(t2) - x(t1))/(t2 - t1), at most x_pp/(t2 - t1) (x_pp the plate's peak-to-peak stroke), whatever t1; so the condition is t2 - t1 >> T. Check (closed form, and the velocity integrated stroke by stroke): t1 = T/1000, t2 = 100 t1 (window T/10) against t1 = 1000 T, t2 = 1.04 t1 (40.25 periods); 'small': at most 5 % of the slow stroke's speed.",
+    )
+    .values(
+        "t2 = 100 t1: <= 0.05 v_slow",
+        format!(
+            "t2 = 100 t1: {} v_slow; t2 - t1 = 40.25 T: {} v_slow (bound {})",
+            fmt_num(ma / v_slow),
+            fmt_num(mb / v_slow),
+            fmt_num(bound_b / v_slow)
+        ),
+        "0.05 v_slow",
+    )
+    .printed_or_corrected(printed, corrected)
 }

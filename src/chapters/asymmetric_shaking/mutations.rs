@@ -46,6 +46,10 @@ pub const PRINTS_NO_NUMBER: &[(&str, &str)] = &[
         "locomotion-needs-slip",
         "'generically': no number; the mutations print the correction and move the workbook's derived threshold",
     ),
+    (
+        "window-length-not-ratio",
+        "a condition on the averaging window ('t2 so much greater than t1'), no number: the mutation prints the corrected condition (t2 - t1 many periods)",
+    ),
     ("drift-closed-form", DERIVED),
     ("drift-regime", DERIVED),
     ("lock-time", DERIVED),
@@ -156,6 +160,11 @@ const EDITS: &[DocEdit<Statements>] = &[
         "biharmonic-stuck",
         "derived Gamma_stick -> 0.9 Gamma_stick",
         |d| d.stick_gamma_factor = 0.9,
+    ),
+    (
+        "window-length-not-ratio",
+        "t2 >> t1 -> the corrected t2 - t1 >> T (a window of many periods)",
+        |d| d.window_ratio_condition = false,
     ),
 ];
 

@@ -42,6 +42,10 @@ pub struct Statements {
     pub biharmonic_factor: f64,
     /// The workbook's Gamma_stick, scaled by this factor (derived 1).
     pub stick_gamma_factor: f64,
+    /// 3.2.1 as printed: a window with "t2 so much greater than t1" has a small error
+    /// from a non-integer number of cycles (`true`, the erratum); `false` prints the
+    /// corrected condition, a window of many periods (t2 - t1 >> T).
+    pub window_ratio_condition: bool,
 }
 
 /// The document as printed (and the workbook's closed forms as derived).
@@ -62,4 +66,5 @@ pub const PRINTED: Statements = Statements {
     slip_threshold: 1.0,
     biharmonic_factor: 1.0,
     stick_gamma_factor: 1.0,
+    window_ratio_condition: true,
 };

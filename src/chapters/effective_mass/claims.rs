@@ -3,11 +3,13 @@
 //! equations).
 
 use super::evidence::{
-    bisect, point_mass_ratio, rod_lock_angles_closed_form, rod_ratio, Evidence, Ratios,
+    bisect, free_acceleration, point_mass_ratio, rod_lock_angles_closed_form, rod_ratio, Evidence,
+    Ratios,
 };
 use super::statements::Statements;
 use super::{LENGTH_M, MASS_KG};
 use crate::report::{fmt_num, is_close, Check, Claim};
+use nalgebra::Vector2;
 
 /// Rounding tolerance of a 2x2 inversion and a 5x5 LU solve of well-conditioned
 /// systems (condition number <= ~20 here): a few hundred ulps, relative.
@@ -21,6 +23,7 @@ fn rel(x: f64) -> f64 {
 /// Every claim of the chapter at friction `mu`, in the order of the report.
 pub fn all(st: &Statements, ev: &Evidence, mu: f64) -> Vec<Claim> {
     let mut out = mass_matrix(st, ev);
+    out.push(a1_needs_free_acceleration(st, ev));
     out.extend(derivation(st, ev));
     out.extend(ratios(st, ev));
     out.extend(example_45(st, ev));
@@ -188,4 +191,41 @@ fn self_locking_statement(mu: f64, tight_for_point_mass: bool) -> String {
             "but here the point mass does not switch at it"
         }
     )
+}
+
+/// (A.1) as "the relation between contact acceleration and contact force": it holds
+/// for a stick at rest with the contact force the only force (and for impulses,
+/// J = [m]' Δv_C); in general a_C = [m]'^-1 F + b with C's free acceleration
+/// b = -g e_z + θ'² (L/2) e_r (gravity, and the centripetal term: C accelerates towards
+/// G). An approximation: the limit m |b| << |F| (impulsive forces). Judged by a second
+/// method that never forms the mass matrix (Lagrange's equations integrated, C's
+/// acceleration by central differences), at rest without gravity and spinning under it.
+pub fn a1_needs_free_acceleration(st: &Statements, ev: &Evidence) -> Claim {
+    let theta = ev.at.theta;
+    let (spin, g) = (10.0, 9.81); // rad/s, m/s²: centripetal 7.5 m/s² at L = 0.15 m
+    let force = ev.normal; // 1 N across the stick, as in the document's derivation
+    let e_r = Vector2::new(theta.sin(), theta.cos());
+    // formula: (A.1) as printed, in stick coordinates: a_x' = F_x'/m, a_z' = F_z'/(m/4)
+    let a1 = force.dot(&e_r) / (st.mass_along * MASS_KG) * e_r
+        + force.dot(&ev.normal) / (st.mass_across * MASS_KG) * ev.normal;
+    let b = Vector2::new(0.0, -g) + spin * spin * 0.5 * LENGTH_M * e_r; // formula: b = -g e_z + θ'² (L/2) e_r
+    let rest = free_acceleration(theta, 0.0, 0.0, force);
+    let spinning = free_acceleration(theta, spin, g, force);
+    let tol = rest.error_mps2.max(spinning.error_mps2) + rel(a1.norm());
+    let at_rest_holds = (rest.a_c - a1).norm() <= tol;
+    let departure = (spinning.a_c - a1).norm();
+    let general_holds = (spinning.a_c - a1 - b).norm() <= tol;
+    let claim = Claim::draft(
+        Check::SecondMethod,
+        "a1-needs-free-acceleration",
+        "2, eq. (A.1)",
+        &format!("As printed, (A.1) is 'the relation between contact acceleration and contact force': F = [m]' a_C. It holds for a stick at rest with the contact force the only force (and for impulses, J = [m]' Δv_C, the collision that follows); in general a_C = [m]'^-1 F + b, with C's free acceleration b = -g e_z + θ'² (L/2) e_r (gravity, and the centripetal term: C accelerates towards G). An approximation, exact in the limit m |b| << |F| (impulsive forces). Second method, no mass matrix: Lagrange's equations of the rod (m a_G = F - m g e_z, I_G θ'' = F . dC/dθ) integrated by RK4, C's acceleration by central differences, F = 1 N across the stick at θ = {:.1} deg: at rest without gravity it matches (A.1) (difference {}, the central difference's truncation), spinning at {spin} rad/s under g = {g} m/s² it departs by |b| and matches (A.1) plus b. Shown: |b| (closed form) against |a_C - [m]'^-1 F| spinning (m/s²); tolerance the differences' error estimate (Richardson).", theta.to_degrees(), fmt_num((rest.a_c - a1).norm())),
+    )
+    .values(b.norm(), departure, tol);
+    if st.a1_free_acceleration {
+        // The general relation printed: it must hold in both states.
+        claim.confirmed_if(at_rest_holds && general_holds)
+    } else {
+        claim.approximation_if(at_rest_holds && general_holds && departure > 100.0 * tol)
+    }
 }

@@ -151,3 +151,71 @@ pub fn gather(theta: f64) -> Evidence {
         best_rad: golden_max(rod_ratio, 0.0, std::f64::consts::FRAC_PI_2 - 1e-9, 1e-12),
     }
 }
+
+/// C's acceleration on a uniform rod under a contact force, by a second method that
+/// never uses the mass matrix: Lagrange's equations in (x_G, z_G, θ), m a_G = F - m g e_z
+/// and I_G θ'' = F . dC/dθ (the virtual work of F at C = G - (L/2) e_r(θ)), integrated by
+/// RK4 to t = ±h from the state (θ, θ' = `spin_rad_s`, G at rest), and C's acceleration
+/// taken as the central difference (C(h) - 2 C(0) + C(-h))/h².
+#[derive(Debug, Clone, Copy)]
+pub struct FreeAcceleration {
+    /// C's acceleration at step h (m/s², world frame).
+    pub a_c: Vector2<f64>,
+    /// Its error estimate: the difference to the value at h/2, times 4/3 (Richardson for
+    /// a second-order difference puts the h/2 value's error at a third of it: a margin
+    /// of 4), plus the rounding of the difference quotient (m/s²).
+    pub error_mps2: f64,
+}
+
+/// [`FreeAcceleration`] at lean `theta` (rad), spin `spin_rad_s`, gravity `g_mps2`, for
+/// the contact force `force_n` (N, world frame) held constant.
+pub fn free_acceleration(
+    theta: f64,
+    spin_rad_s: f64,
+    g_mps2: f64,
+    force_n: Vector2<f64>,
+) -> FreeAcceleration {
+    let body = rod();
+    let half = 0.5 * LENGTH_M;
+    // State: [x_G, z_G, θ, x_G', z_G', θ'].
+    let rhs = |s: [f64; 6]| -> [f64; 6] {
+        let dc_dtheta = Vector2::new(-half * s[2].cos(), half * s[2].sin()); // formula: dC/dθ = -(L/2) (cos θ, -sin θ)
+        [
+            s[3],
+            s[4],
+            s[5],
+            force_n.x / body.mass_kg,          // formula: m x_G'' = F_x
+            force_n.y / body.mass_kg - g_mps2, // formula: m z_G'' = F_z - m g
+            force_n.dot(&dc_dtheta) / body.inertia_kgm2, // formula: I_G θ'' = F . dC/dθ
+        ]
+    };
+    let axpy =
+        |s: [f64; 6], k: [f64; 6], a: f64| std::array::from_fn::<f64, 6, _>(|i| s[i] + a * k[i]);
+    let rk4 = |s: [f64; 6], h: f64| {
+        let k1 = rhs(s);
+        let k2 = rhs(axpy(s, k1, h / 2.0));
+        let k3 = rhs(axpy(s, k2, h / 2.0));
+        let k4 = rhs(axpy(s, k3, h));
+        std::array::from_fn::<f64, 6, _>(|i| {
+            s[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
+        })
+    };
+    let c_of = |s: [f64; 6]| Vector2::new(s[0] - half * s[2].sin(), s[1] - half * s[2].cos()); // formula: C = G - (L/2) e_r
+    let s0 = [0.0, 0.0, theta, 0.0, 0.0, spin_rad_s];
+    let second_difference = |h: f64| {
+        let n = 16; // RK4 substeps: local error (h/16)^5 terms, far below the difference's h^2
+        let (mut fwd, mut bwd) = (s0, s0);
+        for _ in 0..n {
+            fwd = rk4(fwd, h / n as f64);
+            bwd = rk4(bwd, -h / n as f64);
+        }
+        (c_of(fwd) - 2.0 * c_of(s0) + c_of(bwd)) / (h * h) // formula: C'' ~ (C(h) - 2 C(0) + C(-h))/h^2
+    };
+    let h = 1e-3;
+    let (a_h, a_half) = (second_difference(h), second_difference(h / 2.0));
+    let rounding = 8.0 * f64::EPSILON * LENGTH_M / (0.25 * h * h); // a few ulps of C over (h/2)^2
+    FreeAcceleration {
+        a_c: a_half,
+        error_mps2: (a_h - a_half).norm() * 4.0 / 3.0 + rounding,
+    }
+}

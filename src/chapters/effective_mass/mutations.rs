@@ -20,6 +20,7 @@ fn judge(id: &str, st: &Statements) -> Claim {
 pub const PRINTS_NO_NUMBER: &[(&str, &str)] = &[
     ("rod-best-angle", "q* = 2 is the workbook's derivation: the document prints no best angle (the mutation moves the derived value)"),
     ("rod-best-ratio", "3/4 is the workbook's derivation: the document prints no largest ratio (the mutation moves the derived value)"),
+    ("a1-needs-free-acceleration", "where (A.1) holds (a stick at rest, the contact force the only force) prints no number; (A.1)'s entries m and m/4 have their own claims and 10 % mutations: the mutation prints the general relation with C's free acceleration b"),
     ("self-locking-bound", "the caption's atan(mu) is a sufficient condition for the uniform stick with at least 33 % of slack (the stick's own bound q1(mu) >= 4 mu/3), so no 10 % change of it can fail for the stick the caption is about: the mutations reverse the inequality and move the bound past the slack (atan(1.5 mu) at mu = 0.4, where q1 = 1.44 mu)"),
 ];
 
@@ -40,6 +41,7 @@ pub fn all() -> Vec<Mutation> {
         ("example-45-rod-60-percent", "60 % -> 66 % (10 %)", |d| d.example_rod_fraction = 0.66),
         ("rod-best-angle", "derived q* = 2 -> 2.2", |d| d.best_q = 2.2),
         ("rod-best-ratio", "derived 3/4 -> 0.825", |d| d.best_ratio = 0.825),
+        ("a1-needs-free-acceleration", "(A.1) as the relation of a_C and F -> the general relation a_C = [m]'^-1 F + b printed (b: gravity and the centripetal term)", |d| d.a1_free_acceleration = true),
         ("self-locking-bound", "theta < atan(mu) -> theta > atan(mu) (the uniform stick slips between atan(q1) and atan(q2))", |d| d.lock_below = false),
         ("self-locking-bound", "theta < atan(mu) -> theta < atan(1.5 mu) (past the uniform stick's slack: it jams only up to q1 = 1.44 mu at mu = 0.4)", |d| d.lock_factor = 1.5),
     ];

@@ -31,6 +31,10 @@ pub struct Statements {
     pub lock_factor: f64,
     /// ... with the inequality below (`true`, as printed) or above (`false`).
     pub lock_below: bool,
+    /// (A.1) as printed: "the relation between contact acceleration and contact force"
+    /// with nothing else (`false`); `true` prints the general relation with C's free
+    /// acceleration b (gravity and the centripetal term): a_C = [m]'^-1 F + b.
+    pub a1_free_acceleration: bool,
 }
 
 /// The document as printed (and the workbook's derived argmax).
@@ -48,4 +52,5 @@ pub const PRINTED: Statements = Statements {
     best_ratio: 0.75,
     lock_factor: 1.0,
     lock_below: true,
+    a1_free_acceleration: false,
 };
