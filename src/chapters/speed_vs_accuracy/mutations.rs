@@ -1,6 +1,7 @@
 //! Falsification: edits of the chapter's statements ([`Statements`]), each judged by
-//! the same checks as the printed ones (the chapter re-run, quick, with the edited
-//! statements), plus the missed-event and stick-methods mutations.
+//! the same claim functions ([`super::claims`]) on the evidence of the default flags
+//! in quick mode, computed once per process; plus one edit of the model (soft
+//! contact's friction family), judged on that evidence with its own soft ladder.
 //!
 //! A 10 % mutation edits a number the document prints ("10 %" in its description): of
 //! this chapter's claims only `flight-map-economy` rests on one (section 3.1.2's
@@ -68,12 +69,19 @@ const SETTING: &str = "a tolerance or step range printed as a setting, not a sta
 /// Why the workbook's own statements have none.
 const OWN: &str = "the workbook's own statement about its methods (no printed number of the document): the mutation reverses it";
 
+use super::claims;
+use super::evidence::{gather, Evidence};
 use super::statements::Statements;
-use crate::report::{DocEdit, Mutation};
+use super::stick_methods::{soft_ladder, Plan};
+use crate::chapters::Context;
+use crate::physics::stick::jamming_scene;
+use crate::physics::stick::soft::SoftParams;
+use crate::report::{Claim, DocEdit, Mutation};
+use std::sync::OnceLock;
 
 /// The edits of the statements: a neighbouring order, a reversed inequality, a limit
 /// or coefficient off by 10 % or more, one per claim at least (a data table).
-const EDITS: [DocEdit<Statements>; 21] = [
+const EDITS: [DocEdit<Statements>; 26] = [
     (
         "reference-converged",
         "checked against DP5 at 1e-12 -> at 1e-4",
@@ -171,14 +179,77 @@ const EDITS: [DocEdit<Statements>; 21] = [
         "derived c = 2 mu m g/(pi V) -> 1.1 x",
         |d| d.viscous_factor = 1.1,
     ),
+    (
+        "stick-no-missed-event",
+        "event search without certification (signs at step ends only)",
+        |d| d.certified_search = false,
+    ),
+    (
+        "stick-methods-moreau-jean-order",
+        "Moreau-Jean order 1 -> 2",
+        |d| d.mj_order = 2.0,
+    ),
+    (
+        "stick-methods-moreau-jean-gap-within-estimate",
+        "Richardson estimate with order 2 instead of 1",
+        |d| d.mj_order = 2.0,
+    ),
+    ("soft-contact-order", "soft contact order 1 -> 2", |d| {
+        d.soft_order = 2.0
+    }),
+    (
+        "soft-contact-richardson-gap",
+        "soft contact's Richardson estimate with order 2 instead of 1",
+        |d| d.soft_order = 2.0,
+    ),
 ];
+
+/// The evidence of the default flags in quick mode (the tests' context: g = 9.81
+/// m/s^2 for the block, the authors' 10 for the stick), computed once per process.
+pub fn evidence() -> &'static Evidence {
+    static EV: OnceLock<Evidence> = OnceLock::new();
+    EV.get_or_init(|| {
+        let ctx = Context::headless(true);
+        gather(&super::Args::default(), ctx.g(), super::stick_g_mps2(&ctx), true)
+    })
+}
+
+/// The claim `id` judged under the statements `doc`.
+fn judge(id: &str, doc: &Statements) -> Claim {
+    claims::all(doc, evidence())
+        .into_iter()
+        .find(|c| c.id == id)
+        .unwrap_or_else(|| panic!("no claim {id} in this chapter"))
+}
 
 /// The falsification mutations of this chapter's claims (see [`Mutation`]).
 pub fn all() -> Vec<Mutation> {
-    let mut all = Mutation::from_edits(Statements::PRINTED, EDITS, |id, d| {
-        crate::chapters::quick_claim(id, d, super::run_with)
-    });
-    all.push(super::missed_event::mutation());
-    all.extend(super::stick_methods_report::mutations());
+    let mut all = Mutation::from_edits(Statements::PRINTED, EDITS, judge);
+    all.push(Mutation::new(
+        "soft-contact-order",
+        "soft contact with friction smoothing v_ε = 0.1 ε (m/s) instead of v₀ ε²",
+        soft_first_family,
+    ));
     all
+}
+
+/// `soft-contact-order` on the evidence with soft contact's first family (v_ε = 0.1 ε
+/// m/s, not first order) in place of its own: a model edit, so its soft ladder is run
+/// here (quick plan, the self-locking scene, the evidence's reference).
+fn soft_first_family() -> Claim {
+    let plan = Plan {
+        soft_family: SoftParams::regularised_linear_slip,
+        ..Plan::new(true)
+    };
+    let mut s = evidence().methods_default.clone();
+    let l = soft_ladder(&jamming_scene(9.81), &plan, s.reference_mps);
+    *s.ladders
+        .iter_mut()
+        .find(|l| l.method == "soft_contact")
+        .expect("a soft ladder") = l;
+    let printed = Statements::PRINTED;
+    claims::soft_contact(&s, printed.soft_order)
+        .into_iter()
+        .find(|c| c.id == "soft-contact-order")
+        .expect("the claim")
 }

@@ -31,6 +31,13 @@ pub struct Statements {
     pub flight_map_factor: f64,
     /// The viscous law's c = 2 mu m g/(pi V), scaled (1).
     pub viscous_factor: f64,
+    /// Moreau-Jean's order in the step h on the stick (1).
+    pub mj_order: f64,
+    /// Soft contact's order in the regularisation eps (1).
+    pub soft_order: f64,
+    /// The event search that misses no short lift-off is the certified one (`true`);
+    /// `false`: comparing signs at step ends suffices.
+    pub certified_search: bool,
 }
 
 impl Statements {
@@ -49,5 +56,8 @@ impl Statements {
         dop853_cheaper: true,
         flight_map_factor: 1.0,
         viscous_factor: 1.0,
+        mj_order: 1.0,
+        soft_order: 1.0,
+        certified_search: true,
     };
 }
