@@ -33,7 +33,15 @@ pub fn all(doc: &Statements, ev: &Evidence) -> Vec<Claim> {
         viscous_law(doc, ev),
     ]);
     out.extend(stick_methods(&ev.methods_default, doc.mj_order));
-    out.extend(soft_contact(&ev.methods_default, doc.soft_order));
+    if doc.soft_friction_quadratic {
+        out.extend(soft_contact(&ev.methods_default, doc.soft_order));
+    } else {
+        let mut s = ev.methods_default.clone();
+        for l in s.ladders.iter_mut().filter(|l| l.method == "soft_contact") {
+            *l = ev.soft_first_family.clone();
+        }
+        out.extend(soft_contact(&s, doc.soft_order));
+    }
     out
 }
 

@@ -9,11 +9,12 @@ use super::economy::{flight_map_drift, gather_horizontal, law_drift, Horizontal,
 use super::measure::{drift_block_model, window};
 use super::missed_event::{self, MissedEvent};
 use super::setup::{Plan, Setup};
-use super::stick_methods::{measure_scene, Plan as MethodsPlan, SceneMethods};
+use super::stick_methods::{measure_scene, soft_ladder, Ladder, Plan as MethodsPlan, SceneMethods};
 use super::stick_part::{self, StickEvidence};
 use super::Args;
 use crate::ladder::{timed, Timing};
 use crate::numerics::hybrid::Options;
+use crate::physics::stick::soft::SoftParams;
 use crate::physics::stick::{authors_scene, jamming_scene};
 
 /// Everything the chapter ran.
@@ -37,6 +38,10 @@ pub struct Evidence {
     pub methods_default: SceneMethods,
     /// The stick by three methods on the authors' scene (g = 10 m/s^2).
     pub methods_authors: SceneMethods,
+    /// Soft contact's first family (friction smoothing `v_eps = 0.1 eps` m/s, not first
+    /// order) on the self-locking scene: the ladder a wrong statement of the friction
+    /// smoothing looks at.
+    pub soft_first_family: Ladder,
 }
 
 /// The averaged laws of vertical shaking against the exact drift.
@@ -81,6 +86,12 @@ pub fn gather(args: &Args, g: f64, stick_g: f64, quick: bool) -> Evidence {
     // Moreau-Jean's error is not yet in its asymptotic range at the ladder's finest step,
     // so its Richardson estimate misses by a factor 5).
     let mplan = MethodsPlan::new(quick);
+    let methods_default = measure_scene(&jamming_scene(9.81), &mplan);
+    let first = MethodsPlan {
+        soft_family: SoftParams::regularised_linear_slip,
+        ..MethodsPlan::new(quick)
+    };
+    let soft_first_family = soft_ladder(&jamming_scene(9.81), &first, methods_default.reference_mps);
     Evidence {
         block,
         stiff,
@@ -89,8 +100,9 @@ pub fn gather(args: &Args, g: f64, stick_g: f64, quick: bool) -> Evidence {
         missed,
         economy,
         horizontal,
-        methods_default: measure_scene(&jamming_scene(9.81), &mplan),
+        methods_default,
         methods_authors: measure_scene(&authors_scene(10.0), &mplan),
+        soft_first_family,
     }
 }
 

@@ -35,6 +35,9 @@ pub struct Statements {
     pub mj_order: f64,
     /// Soft contact's order in the regularisation eps (1).
     pub soft_order: f64,
+    /// Soft contact's friction smoothing is `v_eps = v_0 eps^2` (`true`); `false`: the
+    /// first family's `v_eps = 0.1 eps` m/s.
+    pub soft_friction_quadratic: bool,
     /// The event search that misses no short lift-off is the certified one (`true`);
     /// `false`: comparing signs at step ends suffices.
     pub certified_search: bool,
@@ -58,6 +61,7 @@ impl Statements {
         viscous_factor: 1.0,
         mj_order: 1.0,
         soft_order: 1.0,
+        soft_friction_quadratic: true,
         certified_search: true,
     };
 }
