@@ -19,7 +19,7 @@ pub mod figures;
 pub mod measure;
 pub mod missed_event;
 pub mod mutations;
-pub use mutations::NO_TEN_PERCENT;
+pub use mutations::Document;
 pub mod report_parts;
 pub mod setup;
 pub mod statements;
@@ -185,7 +185,3 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &statements::Statements) -> Res
     Ok(r)
 }
 
-/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
-pub fn mutations() -> Vec<crate::report::Mutation> {
-    mutations::all()
-}
