@@ -21,7 +21,7 @@ pub mod figures;
 pub mod measure;
 pub mod missed_event;
 pub mod mutations;
-pub use mutations::NO_TEN_PERCENT;
+pub use mutations::Document;
 pub mod observed_failures;
 pub mod report_parts;
 pub mod setup;
@@ -181,9 +181,4 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     let ev = evidence::gather(args, ctx.g(), stick_g_mps2(ctx), ctx.quick);
     report_parts::build(&ev, ctx, &mut r, &statements::Statements::PRINTED)?;
     Ok(r)
-}
-
-/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
-pub fn mutations() -> Vec<crate::report::Mutation> {
-    mutations::all()
 }

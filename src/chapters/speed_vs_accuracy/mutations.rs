@@ -74,8 +74,29 @@ use super::claims;
 use super::evidence::{gather, Evidence};
 use super::statements::Statements;
 use crate::chapters::Context;
-use crate::report::{Claim, DocEdit, Mutation};
-use std::sync::OnceLock;
+use crate::report::{Claim, DocEdit, Falsifiable};
+
+/// The chapter's document for the generic judge (`crate::report::falsify`): the
+/// evidence of the default flags in quick mode (the tests' context: g = 9.81 m/s^2 for
+/// the block, the authors' 10 for the stick).
+pub struct Document;
+
+impl Falsifiable for Document {
+    type Statements = Statements;
+    type Evidence = Evidence;
+    fn printed() -> Statements {
+        Statements::PRINTED
+    }
+    fn quick_evidence() -> Evidence {
+        let ctx = Context::headless(true);
+        gather(&super::Args::default(), ctx.g(), super::stick_g_mps2(&ctx), true)
+    }
+    fn claims(st: &Statements, ev: &Evidence) -> Vec<Claim> {
+        claims::all(st, ev)
+    }
+    const EDITS: &'static [DocEdit<Statements>] = &EDITS;
+    const WITHOUT_TEN_PERCENT: &'static [(&'static str, &'static str)] = NO_TEN_PERCENT;
+}
 
 /// The edits of the statements: a neighbouring order, a reversed inequality, a limit
 /// or coefficient off by 10 % or more, one per claim at least (a data table).
@@ -206,26 +227,3 @@ const EDITS: [DocEdit<Statements>; 27] = [
         |d| d.soft_order = 2.0,
     ),
 ];
-
-/// The evidence of the default flags in quick mode (the tests' context: g = 9.81
-/// m/s^2 for the block, the authors' 10 for the stick), computed once per process.
-pub fn evidence() -> &'static Evidence {
-    static EV: OnceLock<Evidence> = OnceLock::new();
-    EV.get_or_init(|| {
-        let ctx = Context::headless(true);
-        gather(&super::Args::default(), ctx.g(), super::stick_g_mps2(&ctx), true)
-    })
-}
-
-/// The claim `id` judged under the statements `doc`.
-fn judge(id: &str, doc: &Statements) -> Claim {
-    claims::all(doc, evidence())
-        .into_iter()
-        .find(|c| c.id == id)
-        .unwrap_or_else(|| panic!("no claim {id} in this chapter"))
-}
-
-/// The falsification mutations of this chapter's claims (see [`Mutation`]).
-pub fn all() -> Vec<Mutation> {
-    Mutation::from_edits(Statements::PRINTED, EDITS, judge)
-}
