@@ -397,3 +397,79 @@ pub fn charts(wp: &[WorkPoint], title: &str) -> [Chart; 2] {
     .legend(Legend::UpperRight);
     [evals, wall]
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Explicit Euler and RK4 on y' = -y, y(0) = 1, to t = 1 at fixed steps 1/n: the
+    /// error against the closed form e^-1, the cost in rhs evaluations and steps.
+    fn decay_ladder(method: Method, ns: &[u32]) -> Vec<Rung<f64>> {
+        let exact = (-1.0f64).exp(); // formula: y(1) = e^-1
+        let settings = ns.iter().map(|&n| 1.0 / f64::from(n));
+        climb(settings, Timing::MinOf(1), relative_to(exact), |&h| {
+            let mut integ =
+                crate::numerics::ode::Integrator::new(method, StepControl::Fixed { h_s: h });
+            let mut steps = 0;
+            let y = integ.integrate(&|_t: f64, y: &[f64; 1]| [-y[0]], 0.0, [1.0], 1.0, |_| {
+                steps += 1
+            });
+            Run {
+                value: y.map_or(f64::NAN, |y| y[0]),
+                rhs_evals: integ.stats.rhs_evals,
+                steps,
+                completed: y.is_ok(),
+            }
+        })
+    }
+
+    #[test]
+    fn the_observed_orders_are_the_methods_orders() {
+        // Global error C h^p (+ O(h^(p+1))): over h = 1/16 .. 1/256 the fitted slope is
+        // within 0.05 of p (Euler: the next term shifts the slope by ~h/2 <= 0.03).
+        let ns = [16, 32, 64, 128, 256];
+        for (method, p) in [(Method::Euler, 1.0), (Method::Rk4, 4.0)] {
+            let rungs = decay_ladder(method, &ns);
+            let o = observed_order(&rungs, |&h| h, |_| true);
+            assert!((o - p).abs() < 0.05, "{method:?}: {o}");
+            // the cost: n steps, and one (Euler) or four (RK4) evaluations per step
+            let per_step = if p == 1.0 { 1 } else { 4 };
+            for (r, &n) in rungs.iter().zip(&ns) {
+                assert_eq!(r.cost.steps, u64::from(n));
+                assert!(r.cost.rhs_evals >= per_step * u64::from(n), "{:?}", r.cost);
+                assert!(r.cost.wall_s >= 0.0);
+            }
+        }
+    }
+
+    #[test]
+    fn a_run_that_did_not_complete_has_no_error_and_no_point() {
+        let err = relative_to(2.0);
+        let done = Run {
+            value: 3.0,
+            rhs_evals: 10,
+            steps: 5,
+            completed: true,
+        };
+        assert_eq!(err(&done), 0.5);
+        assert!(err(&Run {
+            completed: false,
+            ..done
+        })
+        .is_nan());
+        let rungs = climb([1.0, 2.0, 3.0], Timing::MedianOf(3), err, |&x| Run {
+            completed: x != 2.0,
+            rhs_evals: if x == 3.0 { 0 } else { 10 },
+            ..done
+        });
+        // the failed run (NaN) and the free one (log axis) are left out of the chart
+        assert_eq!(points(&rungs, CostAxis::RhsEvals, 1e-15), vec![(10.0, 0.5)]);
+        let c = chart(
+            "t",
+            "x",
+            "y",
+            vec![Curve::new("none", Draw::Line, Vec::new())],
+        );
+        assert!(c.series.is_empty());
+    }
+}
