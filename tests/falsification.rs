@@ -107,23 +107,12 @@ fn the_quick_reports_have_no_failed_claim() {
 
 /// Each chapter's claims that carry no 10 % mutation, with the reason (the statement
 /// prints no number a 10 % error could move, or the derived tolerance is coarser): the
-/// lists live beside the mutations, in each chapter's `mutations.rs`.
-fn without_ten_percent(chapter: &str) -> Vec<(&'static str, &'static str)> {
-    use locomotion_workbook::chapters::*;
-    let lists: &[&[(&str, &str)]] = match chapter {
-        "locomotion-definition" => &[locomotion_definition::PRINTS_NO_NUMBER],
-        "effective-mass" => &[effective_mass::PRINTS_NO_NUMBER],
-        "horizontal-shaking" => &[horizontal_shaking::PRINTS_NO_NUMBER],
-        "vertical-shaking" => &[vertical_shaking::PRINTS_NO_NUMBER],
-        "asymmetric-shaking" => &[asymmetric_shaking::PRINTS_NO_NUMBER],
-        "stick-state-machine" => &[
-            stick_state_machine::NO_PRINTED_NUMBER,
-            stick_state_machine::COARSER_THAN_10_PERCENT,
-        ],
-        "speed-vs-accuracy" => &[speed_vs_accuracy::NO_TEN_PERCENT],
-        _ => &[],
-    };
-    lists.iter().flat_map(|l| l.iter().copied()).collect()
+/// lists live beside the mutations, in each chapter's `mutations.rs`
+/// (`Falsifiable::WITHOUT_TEN_PERCENT`), read through the registry.
+fn without_ten_percent(chapter: &str) -> &'static [(&'static str, &'static str)] {
+    chapters::info(chapter)
+        .expect("registered")
+        .without_ten_percent()
 }
 
 /// Issue 21: a 10 % error in any printed number must flip its claim. Every document
@@ -135,7 +124,7 @@ fn every_document_claim_has_a_10_percent_mutation_or_a_listed_reason() {
     let mut wrong = Vec::new();
     for r in reports() {
         let listed = without_ten_percent(&r.chapter);
-        for (id, why) in &listed {
+        for (id, why) in listed {
             let ok = r
                 .claims
                 .iter()

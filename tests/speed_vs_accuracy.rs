@@ -328,9 +328,10 @@ fn bad_input_names_the_flag() {
 
 #[test]
 fn the_stick_methods_claims_fail_when_their_order_is_off_by_one() {
-    // Each mutation reruns its claim's check (the quick ladder on the default scene)
-    // against a wrong statement (order 2 instead of 1): the verdict must change from
-    // confirmed (the chapter's quick run, snapshot above) to failed.
+    // Each mutation judges its claim on the evidence of the quick default run (gathered
+    // once) under a wrong statement (an order 2 instead of 1, the uncertified search, a
+    // limit 10 % off, ...): the verdict must change from confirmed (the chapter's quick
+    // run, snapshot above) to failed.
     let muts = locomotion_workbook::chapters::mutations("speed-vs-accuracy");
     assert!(muts.len() >= 2);
     for m in muts {
@@ -361,5 +362,25 @@ fn the_stability_limits_are_sharp_to_5_percent() {
         assert!(blows_up(m, 1e-3, 30.0, 1.05 * limit), "{m:?}");
         assert!(!blows_up(m, 1e-3, 30.0, 0.95 * limit), "{m:?}");
         assert!(blows_up(m, 1e-3, 30.0, 0.95 * 1.1 * limit), "{m:?}");
+    }
+}
+
+#[test]
+fn the_measured_blow_up_thresholds_lie_just_beyond_the_stability_limits() {
+    // The evidence behind `stiff-relaxation-explicit-blowup` bisects h/tau for the
+    // threshold from which each fixed-step method blows up within 400 steps. Expected:
+    // just beyond the root of |R(-z)| = 1 (Euler: R = 1 - z, z = 2; RK4: the quartic
+    // Taylor polynomial, z = 2.7853), where the transient (amplitude ~0.1 rad) must grow
+    // by ~1e4 to pass 1e3 rad: |R| >= 1e4^(1/400) = 1.023, i.e. z = 2.023 for Euler and,
+    // with |R'(-2.785)| = 1.51, z = 2.80 for RK4: within 2 % beyond the limit.
+    use locomotion_workbook::chapters::speed_vs_accuracy::Document;
+    use locomotion_workbook::numerics::ode::Method;
+    use locomotion_workbook::report::falsify::quick_evidence;
+    let ev = quick_evidence::<Document>();
+    assert_eq!(ev.stiff.thresholds.len(), 2);
+    for &(m, (a, b)) in &ev.stiff.thresholds {
+        let limit = if m == Method::Euler { 2.0 } else { 2.7853 };
+        assert!(b - a <= 1e-8, "{m:?}: bracket {a} .. {b}");
+        assert!(limit <= a && b <= 1.02 * limit, "{m:?}: {a} .. {b}");
     }
 }

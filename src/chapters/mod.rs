@@ -11,7 +11,9 @@
 //! - `FLAGS: &[crate::flags::Flag]`: the table of its physical flags (range, reason,
 //!   default per scene), which writes their `--help` lines and validates them;
 //! - `run(&Args, &Context) -> Result<ChapterReport>`;
-//! - `mutations() -> Vec<Mutation>`: its falsification mutations;
+//! - `Document`: its document as the one generic judge sees it ([`Falsifiable`]: the
+//!   statements, the quick evidence, the claims, the edits of the statements and the
+//!   claims without a 10 % mutation), from which the registry builds its mutations;
 //!
 //! and is plugged in by its one `chapter!` line in the registry (which declares the
 //! module and its entry of [`CHAPTERS`]).
@@ -19,6 +21,7 @@
 
 use crate::error::{Result, WorkbookError};
 use crate::flags::Flag;
+pub use crate::report::Falsifiable;
 use crate::report::{ChapterReport, Mutation};
 use clap::{Args as ClapArgs, FromArgMatches};
 use std::path::PathBuf;
@@ -37,16 +40,21 @@ pub trait Chapter: Sync {
     fn run(&self, matches: &clap::ArgMatches, ctx: &Context) -> Result<ChapterReport>;
     /// Runs the chapter with its default flags.
     fn run_default(&self, ctx: &Context) -> Result<ChapterReport>;
-    /// The falsification mutations of its claims.
+    /// The falsification mutations of its claims (built by the one generic judge,
+    /// `crate::report::falsify`, from its `Falsifiable` document).
     fn mutations(&self) -> Vec<Mutation>;
+    /// Its document claims without a 10 % mutation, with the reason.
+    fn without_ten_percent(&self) -> &'static [(&'static str, &'static str)];
 }
 
 /// A chapter module's entry points, typed by its `Args` (`A`).
 pub struct Module<A> {
     /// The module's `run`.
     pub run: fn(&A, &Context) -> Result<ChapterReport>,
-    /// The module's `mutations`.
+    /// The mutations of the module's `Document` (`crate::report::falsify::mutations`).
     pub mutations: fn() -> Vec<Mutation>,
+    /// Its `Document`'s `WITHOUT_TEN_PERCENT`.
+    pub without_ten_percent: &'static [(&'static str, &'static str)],
 }
 
 impl<A: ClapArgs + FromArgMatches> Chapter for Module<A> {
@@ -66,6 +74,10 @@ impl<A: ClapArgs + FromArgMatches> Chapter for Module<A> {
 
     fn mutations(&self) -> Vec<Mutation> {
         (self.mutations)()
+    }
+
+    fn without_ten_percent(&self) -> &'static [(&'static str, &'static str)] {
+        self.without_ten_percent
     }
 }
 
@@ -163,11 +175,18 @@ impl ChapterInfo {
     pub fn mutations(&self) -> Vec<Mutation> {
         self.chapter.mutations()
     }
+
+    /// Its document claims without a 10 % mutation, each with the reason (the statement
+    /// prints no number a 10 % error could move, or the derived tolerance is coarser).
+    pub fn without_ten_percent(&self) -> &'static [(&'static str, &'static str)] {
+        self.chapter.without_ten_percent()
+    }
 }
 
 /// The registry: one line `chapter!(module, number, "id", "title", "section",
 /// "question")` per chapter declares its module (`pub mod module;`, the folder
-/// `module/`) and its entry of [`CHAPTERS`].
+/// `module/`) and its entry of [`CHAPTERS`] (its `run`, its `FLAGS` and its
+/// [`Falsifiable`] `Document`).
 macro_rules! registry {
     ($(chapter!($module:ident, $number:literal, $id:literal, $title:literal, $section:literal, $question:literal)),* $(,)?) => {
         $(pub mod $module;)*
@@ -183,7 +202,8 @@ macro_rules! registry {
                 flags: $module::FLAGS,
                 chapter: &Module {
                     run: $module::run,
-                    mutations: $module::mutations,
+                    mutations: crate::report::falsify::mutations::<$module::Document>,
+                    without_ten_percent: <$module::Document as Falsifiable>::WITHOUT_TEN_PERCENT,
                 },
             }
         ),*];
@@ -306,22 +326,6 @@ pub fn run_default(id: &str, ctx: &Context) -> Result<ChapterReport> {
             "one of the ids printed by `workbook list`",
         )),
     }
-}
-
-/// The claim `id` of a chapter run in quick mode, headless, with default flags and the
-/// statements `doc` (`run_with` is the chapter's runner that takes them): how a mutation
-/// judges a claim whose check needs the whole chapter.
-pub fn quick_claim<A: ClapArgs + FromArgMatches, D>(
-    id: &str,
-    doc: &D,
-    run_with: fn(&A, &Context, &D) -> Result<ChapterReport>,
-) -> crate::report::Claim {
-    let r =
-        run_with(&default_args(), &Context::headless(true), doc).expect("default flags are valid");
-    r.claims
-        .into_iter()
-        .find(|c| c.id == id)
-        .expect("claim id of this chapter")
 }
 
 /// The falsification mutations of chapter `id`'s claims (empty for an unknown id).

@@ -92,25 +92,6 @@ pub struct Mutation {
 pub type DocEdit<D> = (&'static str, &'static str, fn(&mut D));
 
 impl Mutation {
-    /// One mutation per edit: each applies its edit to a copy of the document's
-    /// statements `printed` and judges the claim with `judge(claim_id, &statements)`.
-    pub fn from_edits<D: Copy + Send + Sync + 'static>(
-        printed: D,
-        edits: impl IntoIterator<Item = DocEdit<D>>,
-        judge: fn(&str, &D) -> Claim,
-    ) -> Vec<Mutation> {
-        edits
-            .into_iter()
-            .map(|(id, what, edit)| {
-                Mutation::new(id, what, move || {
-                    let mut d = printed;
-                    edit(&mut d);
-                    judge(id, &d)
-                })
-            })
-            .collect()
-    }
-
     /// A mutation of claim `claim_id`.
     pub fn new(
         claim_id: &'static str,

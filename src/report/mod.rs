@@ -10,11 +10,13 @@
 
 pub mod causes;
 mod claim;
+pub mod falsify;
 mod format;
 mod summary;
 
 use claim::finite_or_text;
 pub use claim::{is_close, Check, Claim, ClaimDraft, DocEdit, Mutation, Verdict};
+pub use falsify::Falsifiable;
 pub use format::{fmt_num, fmt_value};
 use serde::Serialize;
 use serde_json::{Map, Value};

@@ -13,7 +13,7 @@ pub mod claims;
 pub mod evidence;
 mod figures;
 mod mutations;
-pub use mutations::PRINTS_NO_NUMBER;
+pub use mutations::Document;
 pub mod sims;
 pub mod statements;
 pub mod work;
@@ -253,7 +253,3 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     Ok(r)
 }
 
-/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
-pub fn mutations() -> Vec<crate::report::Mutation> {
-    mutations::mutations()
-}

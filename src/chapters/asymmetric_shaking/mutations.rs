@@ -6,25 +6,28 @@ use super::claims;
 use super::evidence::{gather, Evidence};
 use super::statements::{Statements, PRINTED};
 use crate::chapters::{default_args, Context};
-use crate::report::{Claim, DocEdit, Mutation};
-use std::sync::OnceLock;
+use crate::report::{Claim, DocEdit, Falsifiable};
 
-/// The default scene's evidence in quick mode, computed once per process.
-fn evidence() -> &'static Evidence {
-    static EV: OnceLock<Evidence> = OnceLock::new();
-    EV.get_or_init(|| {
+/// The chapter's document for the generic judge (`crate::report::falsify`): the
+/// default scene's evidence in quick mode.
+pub struct Document;
+
+impl Falsifiable for Document {
+    type Statements = Statements;
+    type Evidence = Evidence;
+    fn printed() -> Statements {
+        PRINTED
+    }
+    fn quick_evidence() -> Evidence {
         let scene = super::validate(&default_args(), Context::G_DEFAULT_MPS2)
             .expect("default flags are valid");
         gather(&scene, true, false)
-    })
-}
-
-/// The claim `id` judged under the statements `doc`.
-fn judge(id: &str, doc: &Statements) -> Claim {
-    claims::all(doc, evidence())
-        .into_iter()
-        .find(|c| c.id == id)
-        .unwrap_or_else(|| panic!("no claim {id} in this chapter"))
+    }
+    fn claims(st: &Statements, ev: &Evidence) -> Vec<Claim> {
+        claims::all(st, ev)
+    }
+    const EDITS: &'static [DocEdit<Statements>] = EDITS;
+    const WITHOUT_TEN_PERCENT: &'static [(&'static str, &'static str)] = PRINTS_NO_NUMBER;
 }
 
 /// The claims of the chapter that print no number a 10 % change could move, with the
@@ -167,8 +170,3 @@ const EDITS: &[DocEdit<Statements>] = &[
         |d| d.window_ratio_condition = false,
     ),
 ];
-
-/// The falsification mutations (see [`EDITS`]).
-pub fn mutations() -> Vec<Mutation> {
-    Mutation::from_edits(PRINTED, EDITS.iter().copied(), judge)
-}

@@ -25,7 +25,7 @@ use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
 pub use evidence::{bisect, golden_max, rod_lock_angles_closed_form, rod_ratio};
-pub use mutations::PRINTS_NO_NUMBER;
+pub use mutations::Document;
 
 /// Flags of the chapter (their help lines: [`FLAGS`]).
 #[derive(clap::Args, Debug, Clone)]
@@ -110,7 +110,3 @@ fn results(r: &mut ChapterReport, ev: &evidence::Evidence, mu: f64) {
     r.result("rod_jams_under_vertical_impulse", rod_jams);
 }
 
-/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
-pub fn mutations() -> Vec<crate::report::Mutation> {
-    mutations::all()
-}

@@ -4,16 +4,31 @@
 //! derived values and the caption's bound (a sufficient condition with more than 10 %
 //! of slack for the uniform stick) are in [`PRINTS_NO_NUMBER`] with the reason.
 
-use super::evidence::gather;
+use super::evidence::{gather, Evidence};
 use super::statements::{Statements, PRINTED};
-use crate::report::{Claim, DocEdit, Mutation};
+use crate::chapters::default_args;
+use crate::report::{Claim, DocEdit, Falsifiable};
 
-/// The claim `id` judged against the statements `st` at the default scene.
-fn judge(id: &str, st: &Statements) -> Claim {
-    super::claims::all(st, &gather(std::f64::consts::FRAC_PI_4), 0.4)
-        .into_iter()
-        .find(|c| c.id == id)
-        .expect("claim id of this chapter")
+/// The chapter's document for the generic judge (`crate::report::falsify`): the
+/// evidence is the default scene's (its angle) with its mu.
+pub struct Document;
+
+impl Falsifiable for Document {
+    type Statements = Statements;
+    /// The default scene's evidence and its mu.
+    type Evidence = (Evidence, f64);
+    fn printed() -> Statements {
+        PRINTED
+    }
+    fn quick_evidence() -> (Evidence, f64) {
+        let args: super::Args = default_args();
+        (gather(args.angle_deg.to_radians()), args.mu)
+    }
+    fn claims(st: &Statements, (ev, mu): &(Evidence, f64)) -> Vec<Claim> {
+        super::claims::all(st, ev, *mu)
+    }
+    const EDITS: &'static [DocEdit<Statements>] = EDITS;
+    const WITHOUT_TEN_PERCENT: &'static [(&'static str, &'static str)] = PRINTS_NO_NUMBER;
 }
 
 /// The chapter's claims that carry no 10 % mutation of a printed number, and why.
@@ -25,9 +40,8 @@ pub const PRINTS_NO_NUMBER: &[(&str, &str)] = &[
 ];
 
 /// The falsification mutations: each printed coefficient off by 10 %, the
-/// self-locking inequality reversed.
-pub fn all() -> Vec<Mutation> {
-    let list: Vec<DocEdit<Statements>> = vec![
+/// self-locking inequality reversed (a data table).
+const EDITS: &[DocEdit<Statements>] = &[
         ("rod-mass-along", "m -> 1.1 m (10 %)", |d| d.mass_along = 1.1),
         ("rod-mass-across", "m/4 -> 1.1 m/4 (10 %)", |d| d.mass_across = 0.275),
         ("rod-mass-diagonal", "off-diagonal 0 -> 0.1 m (10 % of m)", |d| d.mass_off_diagonal = 0.1),
@@ -44,6 +58,4 @@ pub fn all() -> Vec<Mutation> {
         ("a1-needs-free-acceleration", "(A.1) as the relation of a_C and F -> the general relation a_C = [m]'^-1 F + b printed (b: gravity and the centripetal term)", |d| d.a1_free_acceleration = true),
         ("self-locking-bound", "theta < atan(mu) -> theta > atan(mu) (the uniform stick slips between atan(q1) and atan(q2))", |d| d.lock_below = false),
         ("self-locking-bound", "theta < atan(mu) -> theta < atan(1.5 mu) (past the uniform stick's slack: it jams only up to q1 = 1.44 mu at mu = 0.4)", |d| d.lock_factor = 1.5),
-    ];
-    Mutation::from_edits(PRINTED, list, judge)
-}
+];

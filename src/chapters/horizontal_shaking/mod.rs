@@ -20,7 +20,7 @@ use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
 use drift::Scene;
 pub use drift::{gamma_for_1pct, relative_error};
-pub use mutations::PRINTS_NO_NUMBER;
+pub use mutations::Document;
 
 mod claims;
 pub mod drift;
@@ -192,7 +192,3 @@ fn results(r: &mut ChapterReport, ev: &evidence::Evidence) {
     );
 }
 
-/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
-pub fn mutations() -> Vec<crate::report::Mutation> {
-    mutations::all()
-}

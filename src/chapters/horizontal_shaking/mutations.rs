@@ -9,22 +9,28 @@
 
 use super::evidence::{gather, Evidence};
 use super::statements::{Statements, PRINTED};
-use crate::report::{Claim, DocEdit, Mutation};
-use std::sync::OnceLock;
+use crate::report::{Claim, DocEdit, Falsifiable};
 
-/// The claim `id` judged against the statements `st` on the default scene's evidence.
-fn judge(id: &str, st: &Statements) -> Claim {
-    static EVIDENCE: OnceLock<Evidence> = OnceLock::new();
-    let ev = EVIDENCE.get_or_init(|| {
+/// The chapter's document for the generic judge (`crate::report::falsify`).
+pub struct Document;
+
+impl Falsifiable for Document {
+    type Statements = Statements;
+    type Evidence = Evidence;
+    fn printed() -> Statements {
+        PRINTED
+    }
+    fn quick_evidence() -> Evidence {
         let args: super::Args = crate::chapters::default_args();
         let ctx = crate::chapters::Context::headless(true);
         let scene = super::validate(&args, &ctx).expect("default flags are valid");
         gather(&scene, true)
-    });
-    super::claims::all(st, ev)
-        .into_iter()
-        .find(|c| c.id == id)
-        .expect("claim id of this chapter")
+    }
+    fn claims(st: &Statements, ev: &Evidence) -> Vec<Claim> {
+        super::claims::all(st, ev)
+    }
+    const EDITS: &'static [DocEdit<Statements>] = EDITS;
+    const WITHOUT_TEN_PERCENT: &'static [(&'static str, &'static str)] = PRINTS_NO_NUMBER;
 }
 
 /// The chapter's document claims whose statement prints no number, and why.
@@ -48,9 +54,8 @@ pub const PRINTS_NO_NUMBER: &[(&str, &str)] = &[
 ];
 
 /// The falsification mutations: each statement's coefficient off by 10 % (or more
-/// where the statement has slack), the direction reversed.
-pub fn all() -> Vec<Mutation> {
-    let list: Vec<DocEdit<Statements>> = vec![
+/// where the statement has slack), the direction reversed (a data table).
+const EDITS: &[DocEdit<Statements>] = &[
         (
             "fast-shaking-zero-mean-friction",
             "mean friction -> 0 replaced by -> 0.1 mu m g (10 % of the Coulomb friction mu m g; 0 has no 10 %)",
@@ -91,6 +96,4 @@ pub fn all() -> Vec<Mutation> {
             "slides down the tilt -> up the tilt",
             |d| d.slides_down = false,
         ),
-    ];
-    Mutation::from_edits(PRINTED, list, judge)
-}
+];

@@ -21,9 +21,9 @@ use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::physics::locomotion::{in_exact_range, is_locomotion, reason, V2};
 use crate::plot::save_drawing;
-use crate::report::{ChapterReport, Mutation};
+use crate::report::ChapterReport;
 use figures::{HullFigure, Panel};
-pub use mutations::PRINTS_NO_NUMBER;
+pub use mutations::Document;
 use statements::{CASES, WATER, WIND};
 
 /// Flags of the chapter (their help lines: [`FLAGS`]).
@@ -111,7 +111,3 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     Ok(r)
 }
 
-/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
-pub fn mutations() -> Vec<Mutation> {
-    mutations::all()
-}

@@ -14,14 +14,24 @@
 //! no printed number).
 
 use super::statements::{Rule, Statements, PRINTED};
-use crate::report::{Claim, DocEdit, Mutation};
+use crate::report::{Claim, DocEdit, Falsifiable};
 
-/// The claim `id` judged against the statements `st`.
-fn judge(id: &str, st: &Statements) -> Claim {
-    super::claims::all(st)
-        .into_iter()
-        .find(|c| c.id == id)
-        .expect("claim id of this chapter")
+/// The chapter's document for the generic judge (`crate::report::falsify`): its
+/// claims need no evidence beyond the statements (closed-form hull tests).
+pub struct Document;
+
+impl Falsifiable for Document {
+    type Statements = Statements;
+    type Evidence = ();
+    fn printed() -> Statements {
+        PRINTED
+    }
+    fn quick_evidence() {}
+    fn claims(st: &Statements, _: &()) -> Vec<Claim> {
+        super::claims::all(st)
+    }
+    const EDITS: &'static [DocEdit<Statements>] = EDITS;
+    const WITHOUT_TEN_PERCENT: &'static [(&'static str, &'static str)] = PRINTS_NO_NUMBER;
 }
 
 /// The chapter's document claims whose statement prints no number, and why.
@@ -34,13 +44,13 @@ pub const PRINTS_NO_NUMBER: &[(&str, &str)] = &[
     ("three-media", "'two (or possibly more) media': the triangle is the workbook's example, no printed number"),
 ];
 
-/// The falsification mutations of this chapter's claims.
-pub fn all() -> Vec<Mutation> {
-    const REVERSED: &str = "the document's verdict on this case reversed";
-    const BOUNDARY: &str = "the hull's boundary counts as locomotion";
-    const LOW: &str = "dragging while the boat's speed is not greater than the wind's -> than 0.9 x the wind's (10 %)";
-    const HIGH: &str = "dragging while the boat's speed is not greater than the wind's -> than 1.1 x the wind's (10 %)";
-    let list: Vec<DocEdit<Statements>> = vec![
+const REVERSED: &str = "the document's verdict on this case reversed";
+const BOUNDARY: &str = "the hull's boundary counts as locomotion";
+const LOW: &str = "dragging while the boat's speed is not greater than the wind's -> than 0.9 x the wind's (10 %)";
+const HIGH: &str = "dragging while the boat's speed is not greater than the wind's -> than 1.1 x the wind's (10 %)";
+
+/// The falsification mutations of this chapter's claims (a data table).
+const EDITS: &[DocEdit<Statements>] = &[
         ("downwind-slower-than-wind", REVERSED, |d| {
             d.flipped = Some("downwind-slower-than-wind")
         }),
@@ -90,6 +100,4 @@ pub fn all() -> Vec<Mutation> {
             "0 <= s <= 1 -> 0 <= s <= 1.1 (10 %)",
             |d| d.s_max = 1.1,
         ),
-    ];
-    Mutation::from_edits(PRINTED, list, judge)
-}
+];

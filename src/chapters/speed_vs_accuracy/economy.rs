@@ -109,22 +109,25 @@ pub fn horizontal_drifts(
 /// viscous law), drifts in m/s.
 pub type HorizontalRow = (f64, f64, f64, f64);
 
-/// The horizontal-dither economy: sweeps K, adds the results and the claim to `r`.
-pub fn horizontal_section(
-    r: &mut crate::report::ChapterReport,
+/// The horizontal-dither economy: the sweep of K and the limit the viscous law names.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Horizontal {
+    /// The sweep.
+    pub rows: Vec<HorizontalRow>,
+    /// At K = 100, b = 0.05: (exact drift, viscous law) (m/s).
+    pub limit: (f64, f64),
+}
+
+/// Sweeps K (4 values in `quick` mode, else 25, from 1.5 to 100) and runs the limit the
+/// viscous law names: K = 100 and b = 0.05, whatever the flags.
+pub fn gather_horizontal(
     frequency_hz: f64,
     mu: f64,
     bias: f64,
     g: f64,
     quick: bool,
-    law_factor: f64,
-) -> Vec<HorizontalRow> {
-    use crate::report::{Check, Claim};
-    let ks = if quick {
-        crate::sweep::logspace(1.5, 100.0, 4)
-    } else {
-        crate::sweep::logspace(1.5, 100.0, 25)
-    };
+) -> Horizontal {
+    let ks = crate::sweep::logspace(1.5, 100.0, if quick { 4 } else { 25 });
     let rows: Vec<HorizontalRow> = ks
         .iter()
         .map(|&k| {
@@ -132,43 +135,39 @@ pub fn horizontal_section(
             (k, e, a, v)
         })
         .collect();
-    let rel = |m: f64, e: f64| ((m - e) / e).abs();
-    // The smallest K of the sweep from which on every larger K is within 1 %.
-    let from = |f: &dyn Fn(&HorizontalRow) -> f64| -> serde_json::Value {
-        let mut k_from = None;
-        for row in rows.iter().rev() {
-            if rel(f(row), row.1) < 0.01 {
-                k_from = Some(row.0);
-            } else {
-                break;
+    let (e_lim, _, v_lim) = horizontal_drifts(frequency_hz, 100.0, mu, 0.05, g, 20);
+    Horizontal {
+        rows,
+        limit: (e_lim, v_lim),
+    }
+}
+
+impl Horizontal {
+    /// The result `economy_horizontal`: from which K on each law is within 1 %, and the
+    /// viscous law's error at the largest K.
+    pub fn json(&self) -> serde_json::Value {
+        let rows = &self.rows;
+        let rel = |m: f64, e: f64| ((m - e) / e).abs();
+        // The smallest K of the sweep from which on every larger K is within 1 %.
+        let from = |f: &dyn Fn(&HorizontalRow) -> f64| -> serde_json::Value {
+            let mut k_from = None;
+            for row in rows.iter().rev() {
+                if rel(f(row), row.1) < 0.01 {
+                    k_from = Some(row.0);
+                } else {
+                    break;
+                }
             }
-        }
-        k_from.map_or(serde_json::json!("never"), serde_json::Value::from)
-    };
-    let last = rows
-        .last()
-        .copied()
-        .unwrap_or((f64::NAN, f64::NAN, f64::NAN, f64::NAN));
-    r.result(
-        "economy_horizontal",
+            k_from.map_or(serde_json::json!("never"), serde_json::Value::from)
+        };
+        let last = rows
+            .last()
+            .copied()
+            .unwrap_or((f64::NAN, f64::NAN, f64::NAN, f64::NAN));
         serde_json::json!({
             "arcsin_law_within_1pct_from_k": from(&|row| row.2),
             "viscous_law_within_1pct_from_k": from(&|row| row.3),
             "viscous_law_error_at_largest_k": rel(last.3, last.1),
-        }),
-    );
-    // Checked inside the limit it names, whatever the flags: K = 100 and b = 0.05.
-    // The viscous law neglects the block's velocity fluctuation (relative size ~ 1/K^2)
-    // and linearises arcsin (relative size ~ b^2 pi^2/24 = 1e-3 at b = 0.05): both
-    // are well under 1 % there.
-    let (e_lim, _, v_lim) = horizontal_drifts(frequency_hz, 100.0, mu, 0.05, g, 20);
-    let err = rel(v_lim / law_factor, e_lim); // formula: v = F/c, c scaled by law_factor
-    r.claim(Claim::draft(
-        Check::SecondMethod,
-        "viscous-law-economy",
-        "3.1.1",
-        "Approximation: under horizontal dither the effective viscous law F = c v, c = 2 μ m g/(π V), reproduces the exact drift within 1 % in the limit Γₓ = δₓ ω²/(μ g) >> 1 and small bias; at Γₓ = 100, b = 0.05 (relative error)",
-    )
-    .values(0.0, err, 0.01).approximation_if(err < 0.01));
-    rows
+        })
+    }
 }

@@ -1,9 +1,14 @@
-//! The chapter's figures: work-precision diagrams and the economy chart.
+//! The chapter's figures: work-precision diagrams (error against cost, [`crate::ladder`]),
+//! the economy charts and the stick by three methods.
 
 use super::economy::SweepRow;
+use super::evidence::Evidence;
+use super::stick_methods::SceneMethods;
 use super::work_precision::WpPoint;
 use crate::error::Result;
-use crate::plot::{save_chart, save_panels, Chart, Series};
+use crate::ladder::{self, CostAxis, Curve, Draw};
+use crate::plot::{save_chart, save_panels, Chart, Legend, Series};
+use crate::report::ChapterReport;
 use std::path::Path;
 
 /// Method labels in drawing order with (palette colour, dashed).
@@ -21,43 +26,51 @@ const METHODS: [(&str, usize, bool); 8] = [
 /// Errors below this are drawn at it (the log axis needs positive values).
 const FLOOR: f64 = 1e-15;
 
-fn wp_chart(
-    points: &[WpPoint],
-    problem: &str,
-    title: &str,
-    x_label: &str,
-    x: impl Fn(&WpPoint) -> f64,
-) -> Chart {
-    let mut c = Chart::new(title, x_label, "relative error of the mean velocity")
-        .log_x()
-        .log_y();
-    for (label, col, dashed) in METHODS {
-        let mut pts: Vec<(f64, f64)> = points
-            .iter()
-            .filter(|p| {
-                p.problem == problem && p.solver.label() == label && p.completed && x(p) > 0.0
-            })
-            .map(|p| (x(p), p.error.max(FLOOR)))
-            .collect();
-        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-        if pts.is_empty() {
-            continue;
-        }
-        let s = if dashed {
-            Series::dashed(label, pts.clone())
-        } else {
-            Series::line(label, pts.clone())
-        };
-        c = c
-            .series(s.color(col))
-            .series(Series::points("", pts).color(col));
-    }
-    c
+fn wp_chart(points: &[WpPoint], title: &str, x_label: &str, axis: CostAxis) -> Chart {
+    let curves = METHODS
+        .into_iter()
+        .map(|(label, col, dashed)| {
+            let rungs = points.iter().filter(|p| p.setting.label() == label);
+            let mut pts = ladder::points(rungs, axis, FLOOR);
+            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let draw = if dashed {
+                Draw::DashedAndMarkers
+            } else {
+                Draw::LineAndMarkers
+            };
+            Curve::new(label, draw, pts).color(col)
+        })
+        .collect();
+    ladder::chart(title, x_label, "relative error of the mean velocity", curves)
 }
 
-/// Work-precision charts of `problem`: error against rhs evaluations (committed,
-/// deterministic) and against wall time (under `wall-time/`, not committed).
-pub fn work_precision(
+/// Every figure of the chapter, added to the report in order: the work-precision charts
+/// of the block and the stick, the economy charts, the stick by three methods.
+pub fn draw(dir: &Path, ev: &Evidence, r: &mut ChapterReport) -> Result<()> {
+    let block = work_precision(dir, &ev.block.points, "block-drift", "Block drift")?;
+    r.figures.extend(block);
+    let stick = work_precision(dir, &ev.stick.points, "stick-speed", "Stick mean speed")?;
+    r.figures.extend(stick);
+    r.figures
+        .extend(economy(dir, &ev.economy.sweep, &ev.horizontal.rows)?);
+    r.figures.extend(stick_methods(
+        dir,
+        &ev.methods_default,
+        "Stick by three methods: self-locking scene",
+        "stick-methods-default",
+    )?);
+    r.figures.extend(stick_methods(
+        dir,
+        &ev.methods_authors,
+        "Stick by three methods: authors' scene",
+        "stick-methods-authors",
+    )?);
+    Ok(())
+}
+
+/// Work-precision charts of `problem` (its `points`): error against rhs evaluations
+/// (committed, deterministic) and against wall time (under `wall-time/`, not committed).
+fn work_precision(
     dir: &Path,
     points: &[WpPoint],
     problem: &str,
@@ -65,17 +78,15 @@ pub fn work_precision(
 ) -> Result<Vec<String>> {
     let a = wp_chart(
         points,
-        problem,
         &format!("{what}: error vs work"),
         "right-hand-side evaluations",
-        |p| p.rhs_evals as f64,
+        CostAxis::RhsEvals,
     );
     let b = wp_chart(
         points,
-        problem,
         &format!("{what}: error vs time"),
         "wall time (s, minimum of repeats)",
-        |p| p.wall_s,
+        CostAxis::Wall,
     );
     let name = format!("work-precision-{problem}");
     let mut paths = save_chart(&a, dir, &name)?;
@@ -88,9 +99,36 @@ pub fn work_precision(
     Ok(paths)
 }
 
+/// Labels and colours of the stick's three methods in their charts.
+const STICK_METHODS: [(&str, &str, usize); 4] = [
+    ("event_dop853", "event-driven DOP853 (rtol)", 4),
+    ("event_dopri5", "event-driven DP5 (rtol)", 2),
+    ("moreau_jean", "Moreau-Jean (step h)", 3),
+    ("soft_contact", "soft contact + Rosenbrock (ε)", 0),
+];
+
+/// The stick by three methods on one scene: error against force evaluations.
+fn stick_methods(dir: &Path, s: &SceneMethods, title: &str, name: &str) -> Result<Vec<String>> {
+    let curves = STICK_METHODS
+        .into_iter()
+        .map(|(key, label, col)| {
+            let pts = ladder::points(&s.ladder(key).rungs, CostAxis::RhsEvals, FLOOR);
+            Curve::new(label, Draw::LineAndMarkers, pts).color(col)
+        })
+        .collect();
+    let c = ladder::chart(
+        title,
+        "force evaluations",
+        "relative difference of the mean speed",
+        curves,
+    )
+    .legend(Legend::LowerRight);
+    save_panels(&[c], 1, dir, name)
+}
+
 /// The economy charts: relative error of the averaged laws against Gamma (vertical
 /// shaking) and against Γₓ = δₓω²/(μg) (horizontal shaking).
-pub fn economy(
+fn economy(
     dir: &Path,
     sweep: &[SweepRow],
     horizontal: &[super::economy::HorizontalRow],

@@ -13,7 +13,6 @@ use crate::physics::block::contact_form::BlockContact;
 use crate::physics::block::{simulate_block, BlockOptions};
 use crate::physics::stick::run::{initial_state, simulate_stick, Recording, StickOutcome};
 use crate::physics::stick::StickModel;
-use std::time::Instant;
 
 /// One run of a method: the observable, its cost and whether it completed.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -22,6 +21,8 @@ pub struct Measured {
     pub value: f64,
     /// Right-hand-side evaluations (flow evaluations; one per Moreau-Jean step).
     pub rhs_evals: u64,
+    /// Accepted steps (integrator steps; Moreau-Jean steps).
+    pub steps: u64,
     /// Events handled (impacts, takeoffs, stick-slip switches), or contact steps for
     /// Moreau-Jean.
     pub events: u64,
@@ -29,6 +30,18 @@ pub struct Measured {
     pub completed: bool,
     /// How the run ended (`completed`, `zeno`, `invalid`, `failed`, ...).
     pub note: &'static str,
+}
+
+impl Measured {
+    /// The run as a rung of a work-precision ladder sees it.
+    pub fn run(&self) -> crate::ladder::Run {
+        crate::ladder::Run {
+            value: self.value,
+            rhs_evals: self.rhs_evals,
+            steps: self.steps,
+            completed: self.completed,
+        }
+    }
 }
 
 /// The drift window: `(t_a, t_b)` after `transient` periods, `cycles` periods long (s).
@@ -53,6 +66,7 @@ pub fn drift_mj(scene: &BlockScene, steps_per_period: u32, (t_a, t_b): (f64, f64
         return Measured {
             value: f64::NAN,
             rhs_evals: 0,
+            steps: 0,
             events: 0,
             completed: false,
             note: "invalid",
@@ -78,6 +92,7 @@ pub fn drift_mj(scene: &BlockScene, steps_per_period: u32, (t_a, t_b): (f64, f64
             Measured {
                 value,
                 rhs_evals: r.stats.rhs_evals,
+                steps: r.stats.steps,
                 events: r.stats.contact_steps,
                 completed: value.is_finite(),
                 note: "completed",
@@ -86,6 +101,7 @@ pub fn drift_mj(scene: &BlockScene, steps_per_period: u32, (t_a, t_b): (f64, f64
         Err(_) => Measured {
             value: f64::NAN,
             rhs_evals: k,
+            steps: k,
             events: 0,
             completed: false,
             note: "failed",
@@ -93,17 +109,10 @@ pub fn drift_mj(scene: &BlockScene, steps_per_period: u32, (t_a, t_b): (f64, f64
     }
 }
 
-/// Runs `f` `repeats` times; returns its (last) result and the minimum wall time (s).
-pub fn timed<R>(repeats: u32, mut f: impl FnMut() -> R) -> (R, f64) {
-    let mut best = f64::INFINITY;
-    let mut out = None;
-    for _ in 0..repeats.max(1) {
-        let start = Instant::now();
-        let r = f();
-        best = best.min(start.elapsed().as_secs_f64());
-        out = Some(r);
-    }
-    (out.expect("at least one repeat"), best)
+/// Runs `f` `repeats` times; returns its (last) result and the minimum wall time (s)
+/// ([`crate::ladder::timed`]).
+pub fn timed<R>(repeats: u32, f: impl FnMut() -> R) -> (R, f64) {
+    crate::ladder::timed(crate::ladder::Timing::MinOf(repeats), f)
 }
 
 /// The block's drift by the workbook's block model ([`crate::physics::block`]) with the
@@ -141,6 +150,7 @@ pub fn drift_block_model(
     Measured {
         value: run.mean_velocity_mps,
         rhs_evals: run.stats.rhs_evals,
+        steps: run.stats.accepted,
         events,
         completed: run.outcome == Outcome::Completed && run.mean_velocity_mps.is_finite(),
         note: outcome_label(&run.outcome),
@@ -173,6 +183,7 @@ pub fn stick_speed(model: &StickModel, cycles: f64, opts: &Options) -> (Measured
     let m = Measured {
         value: r.mean_velocity_mps,
         rhs_evals: r.stats.rhs_evals,
+        steps: r.stats.accepted,
         events: r.hops as u64,
         completed,
         note: r.outcome.label(),

@@ -13,7 +13,6 @@ use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
 use crate::physics::stick::run::{initial_state, simulate_stick, Recording};
 use crate::physics::stick::{authors_scene, StickModel};
-use crate::report::{ChapterReport, Check, Claim, Mutation};
 use serde_json::json;
 
 /// Simulated time (s).
@@ -27,11 +26,27 @@ const SEQUENCE_CAP: usize = 400;
 
 /// One run's discrete outcome.
 #[derive(Debug, Clone, PartialEq)]
-struct Seen {
-    method: Method,
-    rtol: f64,
-    sequence: String,
-    hops: usize,
+pub struct Seen {
+    /// The pair.
+    pub method: Method,
+    /// rtol = atol.
+    pub rtol: f64,
+    /// The phase letters of the run.
+    pub sequence: String,
+    /// Hops.
+    pub hops: usize,
+}
+
+/// The scene's runs: the reference and the tolerance ladder of both pairs, with the
+/// certified search and with the search that compares signs at step ends only.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MissedEvent {
+    /// DP5 at 1e-13, certified.
+    pub reference: Seen,
+    /// The ladder, certified search.
+    pub certified: Vec<Seen>,
+    /// The ladder, signs at step ends only.
+    pub blind: Vec<Seen>,
 }
 
 fn run(method: Method, rtol: f64, certify: bool) -> Seen {
@@ -64,74 +79,66 @@ fn ladder(certify: bool) -> Vec<Seen> {
         .collect()
 }
 
-/// The claim: every run of the ladder has the reference's phase sequence.
-fn judge(runs: &[Seen], reference: &Seen, search: &str) -> Claim {
-    let differing: Vec<String> = runs
-        .iter()
-        .filter(|s| s.sequence != reference.sequence)
-        .map(|s| format!("{} at {:e}: {} hops", s.method.name(), s.rtol, s.hops))
-        .collect();
-    Claim::draft(
-        Check::SecondMethod,
-        "stick-no-missed-event",
-        "4, 5",
-        &format!(
-            "With the {search} event search, both Dormand-Prince pairs at every rtol from 1e-8 to 1e-12 give the phase sequence of the reference (DP5 at 1e-13, certified) on the authors' stick at g = 9.81 m/s² over 0.4 s, whose ninth hop starts with a lift-off shorter than one step; the computed value lists the runs that differ"
-        ),
-    )
-    .exact(json!([]), json!(differing))
-}
-
-/// Adds the claim `stick-no-missed-event`, the result `missed_event` and, for every
-/// uncertified run that loses a transition, a failure row.
-pub fn build(r: &mut ChapterReport, fails: &mut Vec<Failure>) {
-    let reference = run(Method::Dopri5, 1e-13, true);
-    let certified = ladder(true);
-    r.claim(judge(&certified, &reference, "certified"));
-    let blind = ladder(false);
-    for s in blind.iter().filter(|s| s.sequence != reference.sequence) {
-        fails.push(Failure {
-            method: format!("{}-uncertified", s.method.name()),
-            scene: format!(
-                "stick, authors' scene at g = 9.81, 0.4 s, rtol = {:e}",
-                s.rtol
-            ),
-            symptom: format!(
-                "steps over a short lift-off: {} hops against {} (certified search: {})",
-                s.hops,
-                reference.hops,
-                certified
-                    .iter()
-                    .find(|c| c.method == s.method && c.rtol == s.rtol)
-                    .map_or(0, |c| c.hops)
-            ),
-        });
+/// Runs the reference and both ladders.
+pub fn gather() -> MissedEvent {
+    MissedEvent {
+        reference: run(Method::Dopri5, 1e-13, true),
+        certified: ladder(true),
+        blind: ladder(false),
     }
-    let hops = |runs: &[Seen]| -> serde_json::Map<String, serde_json::Value> {
-        runs.iter()
-            .map(|s| (format!("{}_{:e}", s.method.name(), s.rtol), json!(s.hops)))
-            .collect()
-    };
-    r.result(
-        "missed_event",
-        json!({
-            "reference_hops": reference.hops,
-            "certified_hops": hops(&certified),
-            "uncertified_hops": hops(&blind),
-        }),
-    );
 }
 
-/// The falsification of `stick-no-missed-event`: the same ladder with the search that
-/// compares signs at step ends only. It loses the short lift-off at some tolerances,
-/// so the claim's verdict turns to failed.
-pub fn mutation() -> Mutation {
-    Mutation::new(
-        "stick-no-missed-event",
-        "event search without certification (signs at step ends only)",
-        || {
-            let reference = run(Method::Dopri5, 1e-13, true);
-            judge(&ladder(false), &reference, "uncertified")
-        },
-    )
+impl MissedEvent {
+    /// The runs of the ladder whose phase sequence differs from the reference's:
+    /// "method at rtol: hops".
+    pub fn differing(&self, certified: bool) -> Vec<String> {
+        let runs = if certified {
+            &self.certified
+        } else {
+            &self.blind
+        };
+        runs.iter()
+            .filter(|s| s.sequence != self.reference.sequence)
+            .map(|s| format!("{} at {:e}: {} hops", s.method.name(), s.rtol, s.hops))
+            .collect()
+    }
+
+    /// One failure row per uncertified run that loses a transition.
+    pub fn failures(&self) -> Vec<Failure> {
+        let reference = &self.reference;
+        self.blind
+            .iter()
+            .filter(|s| s.sequence != reference.sequence)
+            .map(|s| Failure {
+                method: format!("{}-uncertified", s.method.name()),
+                scene: format!(
+                    "stick, authors' scene at g = 9.81, 0.4 s, rtol = {:e}",
+                    s.rtol
+                ),
+                symptom: format!(
+                    "steps over a short lift-off: {} hops against {} (certified search: {})",
+                    s.hops,
+                    reference.hops,
+                    self.certified
+                        .iter()
+                        .find(|c| c.method == s.method && c.rtol == s.rtol)
+                        .map_or(0, |c| c.hops)
+                ),
+            })
+            .collect()
+    }
+
+    /// The result `missed_event`: the hops of every run.
+    pub fn json(&self) -> serde_json::Value {
+        let hops = |runs: &[Seen]| -> serde_json::Map<String, serde_json::Value> {
+            runs.iter()
+                .map(|s| (format!("{}_{:e}", s.method.name(), s.rtol), json!(s.hops)))
+                .collect()
+        };
+        json!({
+            "reference_hops": self.reference.hops,
+            "certified_hops": hops(&self.certified),
+            "uncertified_hops": hops(&self.blind),
+        })
+    }
 }

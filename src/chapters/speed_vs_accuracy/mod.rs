@@ -13,18 +13,20 @@
 
 pub mod block_part;
 pub mod block_scene;
+pub mod claims;
 pub mod economy;
+pub mod evidence;
 pub mod failures;
 pub mod figures;
 pub mod measure;
 pub mod missed_event;
 pub mod mutations;
-pub use mutations::NO_TEN_PERCENT;
+pub use mutations::Document;
+pub mod observed_failures;
 pub mod report_parts;
 pub mod setup;
 pub mod statements;
 pub mod stick_methods;
-pub mod stick_methods_report;
 pub mod stick_methods_soft;
 pub mod stick_part;
 pub mod tables;
@@ -161,14 +163,9 @@ pub fn stick_g_mps2(_ctx: &Context) -> f64 {
     10.0
 }
 
-/// Runs the chapter.
+/// Runs the chapter: validates the flags, gathers the evidence once, and judges the
+/// printed statements on it.
 pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
-    run_with(args, ctx, &statements::Statements::PRINTED)
-}
-
-/// Runs the chapter with the statements `doc` (a wrong variant in the falsification
-/// tests).
-pub fn run_with(args: &Args, ctx: &Context, doc: &statements::Statements) -> Result<ChapterReport> {
     validate(args)?;
     G.check(super::check_g(ctx.g())?)?;
     let mut r = super::info("speed-vs-accuracy")
@@ -181,11 +178,7 @@ pub fn run_with(args: &Args, ctx: &Context, doc: &statements::Statements) -> Res
     r.param("restitution", args.restitution);
     r.param("g_mps2", ctx.g());
     r.param("stick_g_mps2", stick_g_mps2(ctx)); // the stick scene: the authors' g = 10
-    report_parts::build(args, ctx, &mut r, doc)?;
+    let ev = evidence::gather(args, ctx.g(), stick_g_mps2(ctx), ctx.quick);
+    report_parts::build(&ev, ctx, &mut r, &statements::Statements::PRINTED)?;
     Ok(r)
-}
-
-/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
-pub fn mutations() -> Vec<crate::report::Mutation> {
-    mutations::all()
 }

@@ -1,6 +1,8 @@
 //! Falsification: edits of the chapter's statements ([`Statements`]), each judged by
-//! the same checks as the printed ones (the chapter re-run, quick, with the edited
-//! statements), plus the missed-event and stick-methods mutations.
+//! the same claim functions ([`super::claims`]) on the evidence of the default flags
+//! in quick mode, computed once per process. A statement about a method (the event
+//! search, soft contact's friction family) is a flag that makes its claim look at the
+//! evidence's run of the other method.
 //!
 //! A 10 % mutation edits a number the document prints ("10 %" in its description): of
 //! this chapter's claims only `flight-map-economy` rests on one (section 3.1.2's
@@ -68,12 +70,37 @@ const SETTING: &str = "a tolerance or step range printed as a setting, not a sta
 /// Why the workbook's own statements have none.
 const OWN: &str = "the workbook's own statement about its methods (no printed number of the document): the mutation reverses it";
 
+use super::claims;
+use super::evidence::{gather, Evidence};
 use super::statements::Statements;
-use crate::report::{DocEdit, Mutation};
+use crate::chapters::Context;
+use crate::report::{Claim, DocEdit, Falsifiable};
+
+/// The chapter's document for the generic judge (`crate::report::falsify`): the
+/// evidence of the default flags in quick mode (the tests' context: g = 9.81 m/s^2 for
+/// the block, the authors' 10 for the stick).
+pub struct Document;
+
+impl Falsifiable for Document {
+    type Statements = Statements;
+    type Evidence = Evidence;
+    fn printed() -> Statements {
+        Statements::PRINTED
+    }
+    fn quick_evidence() -> Evidence {
+        let ctx = Context::headless(true);
+        gather(&super::Args::default(), ctx.g(), super::stick_g_mps2(&ctx), true)
+    }
+    fn claims(st: &Statements, ev: &Evidence) -> Vec<Claim> {
+        claims::all(st, ev)
+    }
+    const EDITS: &'static [DocEdit<Statements>] = &EDITS;
+    const WITHOUT_TEN_PERCENT: &'static [(&'static str, &'static str)] = NO_TEN_PERCENT;
+}
 
 /// The edits of the statements: a neighbouring order, a reversed inequality, a limit
 /// or coefficient off by 10 % or more, one per claim at least (a data table).
-const EDITS: [DocEdit<Statements>; 21] = [
+const EDITS: [DocEdit<Statements>; 27] = [
     (
         "reference-converged",
         "checked against DP5 at 1e-12 -> at 1e-4",
@@ -171,14 +198,32 @@ const EDITS: [DocEdit<Statements>; 21] = [
         "derived c = 2 mu m g/(pi V) -> 1.1 x",
         |d| d.viscous_factor = 1.1,
     ),
+    (
+        "stick-no-missed-event",
+        "event search without certification (signs at step ends only)",
+        |d| d.certified_search = false,
+    ),
+    (
+        "stick-methods-moreau-jean-order",
+        "Moreau-Jean order 1 -> 2",
+        |d| d.mj_order = 2.0,
+    ),
+    (
+        "stick-methods-moreau-jean-gap-within-estimate",
+        "Richardson estimate with order 2 instead of 1",
+        |d| d.mj_order = 2.0,
+    ),
+    ("soft-contact-order", "soft contact order 1 -> 2", |d| {
+        d.soft_order = 2.0
+    }),
+    (
+        "soft-contact-order",
+        "soft contact with friction smoothing v_ε = 0.1 ε (m/s) instead of v₀ ε²",
+        |d| d.soft_friction_quadratic = false,
+    ),
+    (
+        "soft-contact-richardson-gap",
+        "soft contact's Richardson estimate with order 2 instead of 1",
+        |d| d.soft_order = 2.0,
+    ),
 ];
-
-/// The falsification mutations of this chapter's claims (see [`Mutation`]).
-pub fn all() -> Vec<Mutation> {
-    let mut all = Mutation::from_edits(Statements::PRINTED, EDITS, |id, d| {
-        crate::chapters::quick_claim(id, d, super::run_with)
-    });
-    all.push(super::missed_event::mutation());
-    all.extend(super::stick_methods_report::mutations());
-    all
-}

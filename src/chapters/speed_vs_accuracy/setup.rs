@@ -1,9 +1,8 @@
-//! What every section of the chapter's report shares: the sizes of the quick and full
-//! runs, the scene, the flags and the statements.
+//! What every run of the chapter's evidence shares: the sizes of the quick and full
+//! runs, the scene and the flags.
 
 use super::block_scene::BlockScene;
 use super::measure::{drift_block_model, Measured};
-use super::statements::Statements;
 use super::work_precision::WpPoint;
 use super::Args;
 use crate::numerics::hybrid::Options;
@@ -51,8 +50,8 @@ impl Plan {
 pub fn envelope(points: &[WpPoint], label: &str, p: f64) -> (f64, usize) {
     let pts: Vec<(f64, f64)> = points
         .iter()
-        .filter(|q| q.solver.label() == label && q.completed)
-        .map(|q| (q.solver.knob(), q.error))
+        .filter(|q| q.setting.label() == label && q.completed)
+        .map(|q| (q.setting.knob(), q.error))
         .collect();
     let Some(&(h0, e0)) = pts.iter().max_by(|a, b| a.0.total_cmp(&b.0)) else {
         return (f64::NAN, 0);
@@ -64,10 +63,9 @@ pub fn envelope(points: &[WpPoint], label: &str, p: f64) -> (f64, usize) {
     (worst, pts.len())
 }
 
-/// The scene, the flags, the statements and the sizes every section of the report uses.
+/// The scene, the flags and the sizes every run of the evidence uses.
 pub(super) struct Setup<'a> {
     pub(super) args: &'a Args,
-    pub(super) doc: &'a Statements,
     pub(super) plan: Plan,
     /// g of the block scene (m/s^2).
     pub(super) g: f64,

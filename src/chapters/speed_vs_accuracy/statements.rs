@@ -31,6 +31,16 @@ pub struct Statements {
     pub flight_map_factor: f64,
     /// The viscous law's c = 2 mu m g/(pi V), scaled (1).
     pub viscous_factor: f64,
+    /// Moreau-Jean's order in the step h on the stick (1).
+    pub mj_order: f64,
+    /// Soft contact's order in the regularisation eps (1).
+    pub soft_order: f64,
+    /// Soft contact's friction smoothing is `v_eps = v_0 eps^2` (`true`); `false`: the
+    /// first family's `v_eps = 0.1 eps` m/s.
+    pub soft_friction_quadratic: bool,
+    /// The event search that misses no short lift-off is the certified one (`true`);
+    /// `false`: comparing signs at step ends suffices.
+    pub certified_search: bool,
 }
 
 impl Statements {
@@ -49,5 +59,9 @@ impl Statements {
         dop853_cheaper: true,
         flight_map_factor: 1.0,
         viscous_factor: 1.0,
+        mj_order: 1.0,
+        soft_order: 1.0,
+        soft_friction_quadratic: true,
+        certified_search: true,
     };
 }

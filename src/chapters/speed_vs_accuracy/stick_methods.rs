@@ -7,30 +7,20 @@
 //! [`super::measure::stick_speed`]), [`simulate_stick_mj`] and
 //! [`crate::physics::stick::soft::run::simulate_soft`] (its family given one by one).
 
-use super::measure::{stick_speed, timed};
+use super::measure::stick_speed;
+use crate::ladder::{relative_to, Run, Timing};
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
 use crate::physics::stick::soft::run::{simulate_soft_with, SoftOutcome};
 use crate::physics::stick::soft::SoftParams;
 use crate::physics::stick::timestepping::simulate_stick_mj;
 use crate::physics::stick::{StickModel, StickParams};
-use crate::report::{Check, Claim};
 use serde_json::{json, Value};
 
-/// One run of a ladder.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Rung {
-    /// The setting: rtol (event-driven), step h (s, Moreau-Jean) or eps (soft contact).
-    pub knob: f64,
-    /// Mean speed of C (m/s); NaN when the run failed.
-    pub value: f64,
-    /// Relative difference from the reference.
-    pub rel: f64,
-    /// Force (right-hand-side) evaluations.
-    pub evals: u64,
-    /// Wall time (s).
-    pub wall_s: f64,
-}
+/// One run of a ladder: its setting (the knob: rtol, step h in s, or eps), the mean
+/// speed of C (m/s; NaN when the run failed), its relative difference from the
+/// reference (`error`) and its cost (force evaluations, steps, wall time).
+pub type Rung = crate::ladder::Rung<f64>;
 
 /// One method's ladder, coarse to fine.
 #[derive(Debug, Clone, PartialEq)]
@@ -113,14 +103,10 @@ impl Plan {
     }
 }
 
-fn rung(knob: f64, value: f64, evals: u64, wall_s: f64, reference: f64) -> Rung {
-    Rung {
-        knob,
-        value,
-        rel: ((value - reference) / reference).abs(), // formula: |v - v_ref| / |v_ref|
-        evals,
-        wall_s,
-    }
+/// Climbs `knobs` once each (wall time of one run); the error is relative to
+/// `reference`.
+fn climb(knobs: &[f64], reference: f64, run: impl FnMut(&f64) -> Run) -> Vec<Rung> {
+    crate::ladder::climb(knobs.iter().copied(), Timing::MinOf(1), relative_to(reference), run)
 }
 
 /// Runs the four ladders on scene `p`.
@@ -133,56 +119,26 @@ pub fn measure_scene(p: &StickParams, plan: &Plan) -> SceneMethods {
             control: StepControl::tol(tol, tol),
             ..Options::default()
         };
-        timed(1, || stick_speed(&model, cycles, &opts).0)
+        let m = stick_speed(&model, cycles, &opts).0;
+        Run {
+            value: if m.completed { m.value } else { f64::NAN },
+            ..m.run()
+        }
     };
-    let reference = event(Method::Dop853, 1e-13).0.value;
+    let reference = event(Method::Dop853, 1e-13).value;
     let mut ladders = Vec::new();
     for (key, method) in [
         ("event_dop853", Method::Dop853),
         ("event_dopri5", Method::Dopri5),
     ] {
-        let rungs = plan
-            .tols
-            .iter()
-            .map(|&tol| {
-                let (m, wall) = event(method, tol);
-                let v = if m.completed { m.value } else { f64::NAN };
-                rung(tol, v, m.rhs_evals, wall, reference)
-            })
-            .collect();
         ladders.push(Ladder {
             method: key,
             knob_name: "rtol",
-            rungs,
+            rungs: climb(&plan.tols, reference, |&tol| event(method, tol)),
             note: None,
         });
     }
-    let period = p.period_s();
-    let (mut ambiguous, mut contact) = (0, 0);
-    let rungs = plan
-        .mj_steps
-        .iter()
-        .map(|&n| {
-            // diagnose: every local problem's solutions are listed (Painleve-like cases)
-            let (r, wall) = timed(1, || simulate_stick_mj(p, cycles, n, true));
-            ambiguous += r.ambiguous_steps;
-            contact += r.stats.contact_steps;
-            let v = if r.completed {
-                r.mean_velocity_mps
-            } else {
-                f64::NAN
-            };
-            rung(period / f64::from(n), v, r.stats.rhs_evals, wall, reference)
-        })
-        .collect();
-    ladders.push(Ladder {
-        method: "moreau_jean",
-        knob_name: "h_s",
-        rungs,
-        note: Some(format!(
-            "{ambiguous} of {contact} contact steps over the ladder had more than one solution of the local problem"
-        )),
-    });
+    ladders.push(mj_ladder(p, plan, reference));
     ladders.push(soft_ladder(p, plan, reference));
     SceneMethods {
         reference_mps: reference,
@@ -191,39 +147,79 @@ pub fn measure_scene(p: &StickParams, plan: &Plan) -> SceneMethods {
     }
 }
 
+/// The Moreau-Jean ladder of `plan` on scene `p` (steps per period; the knob is the
+/// step h in s).
+fn mj_ladder(p: &StickParams, plan: &Plan, reference: f64) -> Ladder {
+    let period = p.period_s();
+    let (mut ambiguous, mut contact) = (0, 0);
+    let steps: Vec<f64> = plan
+        .mj_steps
+        .iter()
+        .map(|&n| period / f64::from(n))
+        .collect();
+    let rungs = climb(&steps, reference, |&h| {
+        let n = (period / h).round() as u32; // the steps per period of this rung
+        // diagnose: every local problem's solutions are listed (Painleve-like cases)
+        let r = simulate_stick_mj(p, plan.cycles, n, true);
+        ambiguous += r.ambiguous_steps;
+        contact += r.stats.contact_steps;
+        Run {
+            value: if r.completed {
+                r.mean_velocity_mps
+            } else {
+                f64::NAN
+            },
+            rhs_evals: r.stats.rhs_evals,
+            steps: r.stats.steps,
+            completed: r.completed,
+        }
+    });
+    Ladder {
+        method: "moreau_jean",
+        knob_name: "h_s",
+        rungs,
+        note: Some(format!(
+            "{ambiguous} of {contact} contact steps over the ladder had more than one solution of the local problem"
+        )),
+    }
+}
+
 /// The soft-contact ladder of `plan` on scene `p` (Rosenbrock 2(3) at [`SOFT_RTOL`]).
 pub fn soft_ladder(p: &StickParams, plan: &Plan, reference: f64) -> Ladder {
     let control = StepControl::tol(SOFT_RTOL, SOFT_RTOL);
     let mut note = None;
-    let rungs = plan
-        .eps
-        .iter()
-        .map(|&eps| {
-            let soft = (plan.soft_family)(p, eps);
-            let (r, wall) = timed(1, || {
-                simulate_soft_with(
-                    p,
-                    soft,
-                    plan.cycles,
-                    Method::Rosenbrock23,
-                    control,
-                    SOFT_BUDGET,
-                )
-            });
-            let v = match r.outcome {
-                SoftOutcome::Completed => r.mean_velocity_mps,
-                SoftOutcome::Failed(e) => {
-                    note = Some(format!("ε = {eps}: {e}"));
-                    f64::NAN
-                }
-                SoftOutcome::Budget { t_s } => {
-                    note = Some(format!("ε = {eps}: step budget spent at t = {t_s:.4} s"));
-                    f64::NAN
-                }
-            };
-            rung(eps, v, r.stats.rhs_evals, wall, reference)
-        })
-        .collect();
+    let rungs = climb(&plan.eps, reference, |&eps| {
+        let soft = (plan.soft_family)(p, eps);
+        let r = simulate_soft_with(
+            p,
+            soft,
+            plan.cycles,
+            Method::Rosenbrock23,
+            control,
+            SOFT_BUDGET,
+        );
+        let completed = match r.outcome {
+            SoftOutcome::Completed => true,
+            SoftOutcome::Failed(e) => {
+                note = Some(format!("ε = {eps}: {e}"));
+                false
+            }
+            SoftOutcome::Budget { t_s } => {
+                note = Some(format!("ε = {eps}: step budget spent at t = {t_s:.4} s"));
+                false
+            }
+        };
+        Run {
+            value: if completed {
+                r.mean_velocity_mps
+            } else {
+                f64::NAN
+            },
+            rhs_evals: r.stats.rhs_evals,
+            steps: r.stats.accepted,
+            completed,
+        }
+    });
     Ladder {
         method: "soft_contact",
         knob_name: "eps",
@@ -256,20 +252,20 @@ impl SceneMethods {
                 .rungs
                 .iter()
                 .map(|r| {
-                    let mut o = json!({l.knob_name: r.knob, "cost_evaluations": r.evals, "wall_s": r.wall_s});
-                    put_finite(&mut o, "relative_difference", r.rel);
+                    let mut o = json!({l.knob_name: r.setting, "cost_evaluations": r.cost.rhs_evals, "wall_s": r.cost.wall_s});
+                    put_finite(&mut o, "relative_difference", r.error);
                     o
                 })
                 .collect();
             let mut o = json!({
-                "finest_setting": {l.knob_name: f.knob},
-                "cost_evaluations": f.evals,
-                "wall_s": f.wall_s,
+                "finest_setting": {l.knob_name: f.setting},
+                "cost_evaluations": f.cost.rhs_evals,
+                "wall_s": f.cost.wall_s,
                 "completed": l.rungs.iter().all(|r| r.value.is_finite()),
                 "ladder": ladder,
             });
             put_finite(&mut o, "mean_velocity_mps", f.value);
-            put_finite(&mut o, "relative_difference", f.rel);
+            put_finite(&mut o, "relative_difference", f.error);
             if let Some(n) = &l.note {
                 o["note"] = json!(n);
             }
@@ -287,15 +283,9 @@ fn put_finite(o: &mut Value, key: &str, x: f64) {
     }
 }
 
-/// Least-squares slope of ln(rel) against ln(knob) over the rungs: the observed order.
+/// Least-squares slope of ln(error) against ln(knob) over the rungs: the observed order.
 pub fn fitted_order(l: &Ladder) -> f64 {
-    let pts: Vec<(f64, f64)> = l
-        .rungs
-        .iter()
-        .filter(|r| r.rel.is_finite() && r.rel > 0.0)
-        .map(|r| (r.knob.ln(), r.rel.ln()))
-        .collect();
-    crate::numerics::fit::slope(&pts) // formula: order = cov(ln knob, ln err) / var(ln knob)
+    crate::ladder::observed_order(&l.rungs, |&knob| knob, |_| true)
 }
 
 /// The gap at the finest setting over its Richardson estimate for a method of order
@@ -307,36 +297,7 @@ pub fn gap_over_estimate(l: &Ladder, reference: f64, p: f64) -> f64 {
     if n < 2 {
         return f64::NAN;
     }
-    let (f, c) = (l.rungs[n - 1], l.rungs[n - 2]);
+    let (f, c) = (&l.rungs[n - 1], &l.rungs[n - 2]);
     let estimate = (f.value - c.value).abs() / (2f64.powf(p) - 1.0); // formula: Richardson |v_h - v_2h| / (2^p - 1)
     (f.value - reference).abs() / estimate
-}
-
-/// The claims on the default scene, with the order the statements assert (`mj_order`:
-/// 1; a mutation passes another).
-pub fn claims(s: &SceneMethods, mj_order: f64) -> Vec<Claim> {
-    let mj = s.ladder("moreau_jean");
-    vec![
-        // Moreau-Jean is first order (derivation in the chapter); the fit over the
-        // ladder scatters by the event-phase term (measured 0.99 to 1.01 over T/2000 ..
-        // T/8000): +-0.3 as for the block's first-order methods.
-        Claim::draft(
-            Check::Convergence,
-            "stick-methods-moreau-jean-order",
-            "4, 5",
-            "Moreau-Jean time-stepping of the stick (the massless rod's balance implicit over each step) converges to the event-driven mean speed at order 1 in the step h (least-squares slope over the ladder)",
-        )
-        .close(mj_order, fitted_order(mj), 0.3),
-        // The finest rung's gap from the reference against its own Richardson estimate:
-        // ratio 1 in the asymptotic range; +-0.5 for the O(h) change of the error
-        // constant between the last two rungs (a wrong order p changes the ratio by the
-        // factor 2^p - 1, 3 for p = 2).
-        Claim::draft(
-            Check::Convergence,
-            "stick-methods-moreau-jean-gap-within-estimate",
-            "4, 5",
-            "Moreau-Jean's gap from the event-driven speed at its finest step equals its own Richardson error estimate |v_h - v_2h| / (2^p - 1), p = 1 (ratio)",
-        )
-        .close(1.0, gap_over_estimate(mj, s.reference_mps, mj_order), 0.5),
-    ]
 }

@@ -8,7 +8,6 @@
 //! worst).
 
 use super::stick_methods::{fitted_order, gap_over_estimate, Ladder, SceneMethods};
-use crate::report::{Check, Claim};
 use serde_json::{json, Value};
 
 /// The order the soft family converges at (module doc of `physics::stick::soft`).
@@ -37,7 +36,7 @@ pub fn local_orders(l: &Ladder, reference: f64) -> Vec<f64> {
         .map(|i| {
             let (a, b) = (e[i - 1], e[i]);
             if a.is_finite() && b.is_finite() && a * b > 0.0 {
-                (a / b).ln() / (l.rungs[i - 1].knob / l.rungs[i].knob).ln() // formula: local order
+                (a / b).ln() / (l.rungs[i - 1].setting / l.rungs[i].setting).ln() // formula: local order
             } else {
                 f64::NAN
             }
@@ -64,43 +63,6 @@ pub fn asymptotic_range(l: &Ladder, reference: f64) -> Ladder {
     }
 }
 
-/// The soft-contact claims on scene `s`, asserting the order `order` (1; a mutation
-/// passes another).
-pub fn soft_claims(s: &SceneMethods, order: f64) -> Vec<Claim> {
-    let range = asymptotic_range(s.ladder("soft_contact"), s.reference_mps);
-    // A fit needs three rungs (two local orders that agree); fewer: NaN, failed.
-    let fitted = if range.rungs.len() >= 3 {
-        fitted_order(&range)
-    } else {
-        f64::NAN
-    };
-    vec![
-        // Tolerance: the fitted order is 1 + (r - 1) phi for an error A ε + B ε^r with
-        // the friction term's share phi (measured <= 0.25 of the error over the range:
-        // the friction part is what stays after the normal part 0.0207 ε measured with
-        // v_eps = 1e-6 m/s) and r - 1 <= 0.6 (its local orders in v_eps, <= 0.8, doubled
-        // by v_eps ∝ ε², minus 1): 0.15, plus the range's own spread of local orders
-        // 0.1: ±0.25. Order 2 is off by 0.9; the first family (v_eps ∝ ε) gives 0.4.
-        Claim::draft(
-            Check::Convergence,
-            "soft-contact-order",
-            "4, 5",
-            "Soft contact (normal spring k_n = m/(ε τ₀²) and damper c_n = m/(ε τ₀), friction μ F_z tanh(ẋ_C/v_ε) with v_ε = v₀ ε²) converges to the event-driven mean speed at order 1 in ε (least-squares slope over the asymptotic range: the finest rungs whose local orders agree within 0.15)",
-        )
-        .close(order, fitted, 0.25),
-        // Ratio 1 in the asymptotic range; a true local order p' between 0.58 and 1.32
-        // gives (2^p' - 1)/(2^1 - 1) in [0.5, 1.5]: ±0.5, as for Moreau-Jean (an assumed
-        // order 2 divides the estimate by 3).
-        Claim::draft(
-            Check::Convergence,
-            "soft-contact-richardson-gap",
-            "4, 5",
-            "Soft contact's gap from the event-driven speed at its finest ε equals its own Richardson error estimate |v_ε - v_2ε| / (2^p - 1), p = 1 (ratio)",
-        )
-        .close(1.0, gap_over_estimate(&range, s.reference_mps, order), 0.5),
-    ]
-}
-
 /// The convergence study of the soft ladder for the results: local orders (finite
 /// ones), the asymptotic range, the order fitted there and the finest gap over its
 /// Richardson estimate at order 1.
@@ -111,12 +73,12 @@ pub fn soft_json(s: &SceneMethods) -> Value {
         .iter()
         .enumerate()
         .filter(|(_, x)| x.is_finite())
-        .map(|(i, x)| json!({"eps_coarse": l.rungs[i].knob, "eps_fine": l.rungs[i + 1].knob, "order": x}))
+        .map(|(i, x)| json!({"eps_coarse": l.rungs[i].setting, "eps_fine": l.rungs[i + 1].setting, "order": x}))
         .collect();
     let range = asymptotic_range(l, s.reference_mps);
     let mut o = json!({ "local_orders": local, "asymptotic_range_rungs": range.rungs.len() });
     if let (Some(a), Some(b)) = (range.rungs.first(), range.rungs.last()) {
-        o["asymptotic_range_eps"] = json!([a.knob, b.knob]);
+        o["asymptotic_range_eps"] = json!([a.setting, b.setting]);
     }
     let fitted = fitted_order(&range);
     if range.rungs.len() >= 3 && fitted.is_finite() {

@@ -8,18 +8,26 @@ use super::work_precision::WpPoint;
 use crate::report::{fmt_num, ChapterReport};
 use std::fmt::Write as _;
 
-/// Adds the tables `work_precision`, `failures`, `economy` and `results_stable`.
-pub fn tables(r: &mut ChapterReport, points: &[WpPoint], fails: &[Failure], sweep: &[SweepRow]) {
+/// Adds the tables `work_precision` (the block's points, then the stick's),
+/// `failures`, `economy` and `results_stable` (the results so far).
+pub fn tables(
+    r: &mut ChapterReport,
+    block: &[WpPoint],
+    stick: &[WpPoint],
+    fails: &[Failure],
+    sweep: &[SweepRow],
+) {
     let mut t = String::from("| problem | method | step (s) or tolerance | relative error | rhs evaluations |\n|---|---|---|---|---|\n");
-    for p in points {
+    let rows = block.iter().map(|p| ("block-drift", p));
+    for (problem, p) in rows.chain(stick.iter().map(|p| ("stick-speed", p))) {
         let _ = writeln!(
             t,
             "| {} | {} | {:.3e} | {} | {} |",
-            p.problem,
-            p.solver.label(),
-            p.solver.knob(),
+            problem,
+            p.setting.label(),
+            p.setting.knob(),
             fmt_err(p.error),
-            p.rhs_evals
+            p.cost.rhs_evals
         );
     }
     r.table("work_precision", t);

@@ -1,7 +1,8 @@
 //! Work-precision ladders: every method at a ladder of steps or tolerances, its error
 //! against a reference and its cost (right-hand-side evaluations, wall time).
 
-use super::measure::{timed, Measured};
+use super::measure::Measured;
+use crate::ladder::{relative_to, Rung, Timing};
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Method, StepControl};
 use serde_json::{json, Value};
@@ -135,85 +136,53 @@ pub fn ladder(period_s: f64, steps: &[u32], tols: &[f64], mj_steps: &[u32]) -> V
     out
 }
 
-/// One point of a work-precision diagram.
-#[derive(Debug, Clone, PartialEq)]
-pub struct WpPoint {
-    /// Problem name (`block-drift`, `stick-speed`).
-    pub problem: &'static str,
-    /// The configuration.
-    pub solver: Solver,
-    /// The observable (m/s).
-    pub value: f64,
-    /// Relative error against the reference (NaN if the run failed).
-    pub error: f64,
-    /// Minimum wall time over the repeats (s).
-    pub wall_s: f64,
-    /// Right-hand-side evaluations.
-    pub rhs_evals: u64,
-    /// Did the run complete?
-    pub completed: bool,
+/// One point of a work-precision diagram: a rung of [`crate::ladder`] whose setting is
+/// the solver configuration; its error is relative to the reference (NaN if the run
+/// failed), its wall time the minimum over the repeats.
+pub type WpPoint = Rung<Solver>;
+
+/// The JSON row of `work_precision`: {problem, method, tolerance_or_step, error, wall_s,
+/// rhs_evals}.
+pub fn json(p: &WpPoint, problem: &str) -> Value {
+    json!({
+        "problem": problem,
+        "method": p.setting.label(),
+        "tolerance_or_step": p.setting.knob(),
+        "error": if p.error.is_finite() { json!(p.error) } else { json!("failed") },
+        "wall_s": p.cost.wall_s,
+        "rhs_evals": p.cost.rhs_evals,
+    })
 }
 
-impl WpPoint {
-    /// The JSON row of `work_precision`: {method, tolerance_or_step, error, wall_s, rhs_evals}
-    /// (plus the problem name).
-    pub fn json(&self) -> Value {
-        json!({
-            "problem": self.problem,
-            "method": self.solver.label(),
-            "tolerance_or_step": self.solver.knob(),
-            "error": if self.error.is_finite() { json!(self.error) } else { json!("failed") },
-            "wall_s": self.wall_s,
-            "rhs_evals": self.rhs_evals,
-        })
-    }
-}
-
-/// Runs every solver of `ladder` on `run` (repeated `repeats` times for the wall time)
-/// and measures the relative error against `reference`.
+/// Runs every solver of `ladder` on `run` (the minimum wall time of `repeats`) and
+/// measures the relative error against `reference`.
 pub fn measure(
-    problem: &'static str,
     ladder: &[Solver],
     reference: f64,
     repeats: u32,
-    run: impl Fn(&Solver) -> Measured + Sync,
+    run: impl Fn(&Solver) -> Measured,
 ) -> Vec<WpPoint> {
-    // Sequential on purpose: wall times of parallel runs would measure the contention.
-    ladder
-        .iter()
-        .map(|s| {
-            let (m, wall_s) = timed(repeats, || run(s));
-            let error = if m.completed {
-                ((m.value - reference) / reference).abs()
-            } else {
-                f64::NAN
-            }; // formula: relative error
-            WpPoint {
-                problem,
-                solver: *s,
-                value: m.value,
-                error,
-                wall_s,
-                rhs_evals: m.rhs_evals,
-                completed: m.completed,
-            }
-        })
-        .collect()
+    crate::ladder::climb(
+        ladder.iter().copied(),
+        Timing::MinOf(repeats),
+        relative_to(reference),
+        |s| run(s).run(),
+    )
 }
 
 /// The cheapest point (fewest rhs evaluations) of `label` whose error is below `target`.
 pub fn cheapest_below<'a>(points: &'a [WpPoint], label: &str, target: f64) -> Option<&'a WpPoint> {
     points
         .iter()
-        .filter(|p| p.solver.label() == label && p.completed && p.error <= target)
-        .min_by_key(|p| p.rhs_evals)
+        .filter(|p| p.setting.label() == label && p.completed && p.error <= target)
+        .min_by_key(|p| p.cost.rhs_evals)
 }
 
 /// The error of the run of `label` at `knob` (step or tolerance), NaN if none.
 pub fn error_at(points: &[WpPoint], label: &str, knob: f64) -> f64 {
     points
         .iter()
-        .find(|p| p.solver.label() == label && p.solver.knob() == knob)
+        .find(|p| p.setting.label() == label && p.setting.knob() == knob)
         .map_or(f64::NAN, |p| p.error)
 }
 
@@ -240,8 +209,8 @@ pub const EVENT_DRIVEN_LABELS: [&str; 7] = [
 pub fn rhs_evals_at(points: &[WpPoint], label: &str, knob: f64) -> u64 {
     points
         .iter()
-        .find(|p| p.solver.label() == label && p.solver.knob() == knob)
-        .map_or(0, |p| p.rhs_evals)
+        .find(|p| p.setting.label() == label && p.setting.knob() == knob)
+        .map_or(0, |p| p.cost.rhs_evals)
 }
 
 /// `{label: rhs evaluations of the cheapest run within target, or "not reached"}`.
@@ -251,7 +220,7 @@ pub fn cheapest_json(points: &[WpPoint], labels: &[&str], target: f64) -> serde_
         .map(|&label| {
             let v = cheapest_below(points, label, target)
                 .map_or(serde_json::json!("not reached"), |p| {
-                    serde_json::json!(p.rhs_evals)
+                    serde_json::json!(p.cost.rhs_evals)
                 });
             (label.to_string(), v)
         })
@@ -259,15 +228,12 @@ pub fn cheapest_json(points: &[WpPoint], labels: &[&str], target: f64) -> serde_
     serde_json::Value::Object(map)
 }
 
-/// Least-squares slope of ln(error) against ln(step) over the points of `label` whose
-/// error lies above the round-off floor `floor`: the observed order.
+/// Least-squares slope of ln(error) against ln(step) over the completed points of
+/// `label` whose error lies above the round-off floor `floor`: the observed order.
 pub fn observed_order(points: &[WpPoint], label: &str, floor: f64) -> f64 {
-    let pts: Vec<(f64, f64)> = points
-        .iter()
-        .filter(|p| p.solver.label() == label && p.completed && p.error > floor)
-        .map(|p| (p.solver.knob().ln(), p.error.ln()))
-        .collect();
-    crate::numerics::fit::slope(&pts) // formula: order = cov(ln h, ln err) / var(ln h)
+    crate::ladder::observed_order(points, Solver::knob, |p| {
+        p.setting.label() == label && p.completed && p.error > floor
+    })
 }
 
 /// Formats an error coarsely for tables (two significant digits).

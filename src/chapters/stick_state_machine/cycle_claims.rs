@@ -13,27 +13,7 @@ use serde_json::json;
 /// The section of the course the claims belong to (not a section of the document).
 const SECTION: &str = "course: limit cycle";
 
-/// What the claims state (the workbook's statements; the mutations change one field).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Statements {
-    /// The convergence claim reads central differences (true) or forward ones.
-    pub central: bool,
-    /// The order of convergence stated for it.
-    pub order: f64,
-    /// The second method multiplies the saltation matrices in (true) or only the
-    /// resets' Jacobians.
-    pub saltation: bool,
-    /// Factor on the stated rate of approach (1: the largest multiplier modulus).
-    pub rate_factor: f64,
-}
-
-/// The workbook's statements.
-pub const WORKBOOK: Statements = Statements {
-    central: true,
-    order: 2.0,
-    saltation: true,
-    rate_factor: 1.0,
-};
+pub use super::statements::{CycleStatements as Statements, WORKBOOK_CYCLE as WORKBOOK};
 
 /// The two scenes analysed: (name, analysis).
 pub type Scenes<'a> = [(&'a str, &'a Analysis); 2];

@@ -1,6 +1,6 @@
 //! The section "The gait as a limit cycle" in the chapter's report: its claims (on the
-//! two evidence scenes), its results (for this run's parameters), its figure and its
-//! falsification mutations.
+//! two evidence scenes), its results (for this run's parameters) and its figure (its
+//! falsification mutations are edits of `statements::CycleStatements` in `mutations.rs`).
 
 use super::cycle_claims::{self, Scenes, Statements, WORKBOOK};
 use super::evidence::Evidence;
@@ -11,10 +11,9 @@ use crate::chapters::Context;
 use crate::error::Result;
 use crate::numerics::hybrid::Options;
 use crate::physics::stick::StickParams;
-use crate::report::{ChapterReport, Claim, Mutation};
+use crate::report::{ChapterReport, Claim};
 use serde_json::{json, Value};
 use std::path::Path;
-use std::sync::OnceLock;
 
 /// The analyses of the authors' and the self-locking scene (in that order).
 pub fn scenes(ev: &Evidence) -> [Analysis; 2] {
@@ -149,77 +148,4 @@ pub fn results(a: &Analysis) -> Vec<(&'static str, Value)> {
 /// The gait map figure around the self-locking scene.
 pub fn figure(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
     Ok(super::gait_map::draw(dir, &ev.params[1], opts, ctx.quick)?.0)
-}
-
-/// The analyses of the evidence scenes, computed once per process for the mutations.
-fn evidence_analyses() -> &'static [Analysis; 2] {
-    static A: OnceLock<[Analysis; 2]> = OnceLock::new();
-    A.get_or_init(|| {
-        [
-            analyse(&super::scene_params(super::Scene::Authors, None)),
-            analyse(&super::scene_params(super::Scene::Jamming, None)),
-        ]
-    })
-}
-
-fn mutation(id: &'static str, what: &'static str, st: Statements) -> Mutation {
-    Mutation::new(id, what, move || {
-        claims(&st, evidence_analyses())
-            .into_iter()
-            .find(|c| c.id == id)
-            .expect("the mutated claim exists")
-    })
-}
-
-/// Claims of the section whose printed number a 10 % change does not move past the
-/// derived tolerance, with the reason (their mutations change it by more).
-pub const COARSER_THAN_10_PERCENT: &[(&str, &str)] = &[(
-    "floquet-difference-order",
-    "the observed order's tolerance is derived from the runs' noise carried into log2 of a ratio of differences (0.66 for the authors' unstable gait, 0.22 for the self-locking one): order 2 -> 2.2 lies inside it; the stated order is moved to 3 instead, and the claim states its tolerance",
-)];
-
-/// The falsification mutations of the section's claims.
-pub fn mutations() -> Vec<Mutation> {
-    vec![
-        mutation(
-            "floquet-difference-order",
-            "central differences -> forward differences (still stated at order 2)",
-            Statements {
-                central: false,
-                ..WORKBOOK
-            },
-        ),
-        mutation(
-            "floquet-difference-order",
-            "stated order 2 -> 3 (as if the differences were Richardson-extrapolated)",
-            Statements {
-                order: 3.0,
-                ..WORKBOOK
-            },
-        ),
-        mutation(
-            "floquet-saltation",
-            "saltation matrices left out (variational flows and the resets' Jacobians only)",
-            Statements {
-                saltation: false,
-                ..WORKBOOK
-            },
-        ),
-        mutation(
-            "gait-stability",
-            "stated rate |λ|max -> 1.1 |λ|max (10 %)",
-            Statements {
-                rate_factor: 1.1,
-                ..WORKBOOK
-            },
-        ),
-        mutation(
-            "gait-stability",
-            "stated rate |λ|max -> 0.9 |λ|max (10 %)",
-            Statements {
-                rate_factor: 0.9,
-                ..WORKBOOK
-            },
-        ),
-    ]
 }

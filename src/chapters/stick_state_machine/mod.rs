@@ -36,9 +36,8 @@ mod slide_rules;
 mod statements;
 mod table1_claims;
 
-pub use cycle_report::COARSER_THAN_10_PERCENT;
 pub use events::{events_csv, EVENTS_CAP};
-pub use mutations::NO_PRINTED_NUMBER;
+pub use mutations::Document;
 
 use super::Context;
 use crate::error::{check, Result};
@@ -463,9 +462,3 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     Ok(r)
 }
 
-/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
-pub fn mutations() -> Vec<crate::report::Mutation> {
-    let mut v = mutations::all();
-    v.extend(cycle_report::mutations());
-    v
-}

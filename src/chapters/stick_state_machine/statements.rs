@@ -148,6 +148,8 @@ pub struct Statements {
     pub sequence_rtols: [f64; 2],
     /// Events located on the dense output (true) or taken at step ends.
     pub sequence_located: bool,
+    /// The workbook's statements of the limit-cycle section (`cycle_claims.rs`).
+    pub cycle: CycleStatements,
 }
 
 /// The statements as printed.
@@ -217,4 +219,29 @@ pub const PRINTED: Statements = Statements {
     edge_rule_printed: false,
     sequence_rtols: [1e-10, 1e-8],
     sequence_located: true,
+    cycle: WORKBOOK_CYCLE,
+};
+
+/// What the claims of the section "The gait as a limit cycle" state (the workbook's
+/// statements, not the document's: it makes none about a limit cycle; the mutations
+/// change one field).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CycleStatements {
+    /// The convergence claim reads central differences (true) or forward ones.
+    pub central: bool,
+    /// The order of convergence stated for it.
+    pub order: f64,
+    /// The second method multiplies the saltation matrices in (true) or only the
+    /// resets' Jacobians.
+    pub saltation: bool,
+    /// Factor on the stated rate of approach (1: the largest multiplier modulus).
+    pub rate_factor: f64,
+}
+
+/// The workbook's statements of the limit-cycle section.
+pub const WORKBOOK_CYCLE: CycleStatements = CycleStatements {
+    central: true,
+    order: 2.0,
+    saltation: true,
+    rate_factor: 1.0,
 };

@@ -14,6 +14,7 @@ mod evidence;
 mod figures;
 mod gif;
 mod mutations;
+pub use mutations::Document;
 mod statements;
 
 pub use statements::{Statements, PRINTED};
@@ -27,7 +28,7 @@ use crate::physics::stick::{authors_scene, jamming_scene};
 use crate::physics::stick_inertia::limit;
 use crate::physics::stick_inertia::run::{InertiaOutcome, InertiaRun};
 use crate::physics::stick_inertia::InertiaParams;
-use crate::report::{ChapterReport, Mutation};
+use crate::report::ChapterReport;
 use serde_json::json;
 
 /// Chapter id.
@@ -361,10 +362,6 @@ fn answer_results(r: &mut ChapterReport, ctx: &Context) {
     r.table("toothpick", answers::toothpick_table(&tooth));
 }
 
-/// Falsification: each statement's printed number off by 10 % ([`mutations`]).
-pub fn mutations() -> Vec<Mutation> {
-    mutations::all()
-}
 
 /// `inertia_ratio` = I_P k / gamma^2 (dimensionless), or a text when there is no damper
 /// (gamma = 0: the massless model has no flight law to be the limit of, the ratio is

@@ -29,7 +29,7 @@ pub mod evidence;
 mod figures;
 pub mod landing;
 mod mutations;
-pub use mutations::PRINTS_NO_NUMBER;
+pub use mutations::Document;
 pub mod regimes;
 pub mod scene;
 pub mod statements;
@@ -176,7 +176,3 @@ fn report_results(r: &mut ChapterReport, ev: &evidence::Evidence) {
     r.table("regime-boundaries", tables::regime_boundaries(&ev.bounds));
 }
 
-/// The falsification mutations of this chapter's claims (see [`crate::report::Mutation`]).
-pub fn mutations() -> Vec<crate::report::Mutation> {
-    mutations::mutations()
-}

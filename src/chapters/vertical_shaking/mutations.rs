@@ -6,8 +6,7 @@ use super::claims;
 use super::evidence::{gather, Evidence};
 use super::scene::Scene;
 use super::statements::{Statements, PRINTED};
-use crate::report::{Claim, DocEdit, Mutation};
-use std::sync::OnceLock;
+use crate::report::{Claim, DocEdit, Falsifiable};
 
 /// The chapter's default scene (its flags' defaults, g = 9.81 m/s^2).
 fn scene() -> Scene {
@@ -20,18 +19,24 @@ fn scene() -> Scene {
     }
 }
 
-/// The default scene's evidence in quick mode, computed once per process.
-fn evidence() -> &'static Evidence {
-    static EV: OnceLock<Evidence> = OnceLock::new();
-    EV.get_or_init(|| gather(&scene(), true))
-}
+/// The chapter's document for the generic judge (`crate::report::falsify`): the
+/// default scene's evidence in quick mode.
+pub struct Document;
 
-/// The claim `id` judged under the statements `doc`.
-fn judge(id: &str, doc: &Statements) -> Claim {
-    claims::all(doc, evidence())
-        .into_iter()
-        .find(|c| c.id == id)
-        .unwrap_or_else(|| panic!("no claim {id} in this chapter"))
+impl Falsifiable for Document {
+    type Statements = Statements;
+    type Evidence = Evidence;
+    fn printed() -> Statements {
+        PRINTED
+    }
+    fn quick_evidence() -> Evidence {
+        gather(&scene(), true)
+    }
+    fn claims(st: &Statements, ev: &Evidence) -> Vec<Claim> {
+        claims::all(st, ev)
+    }
+    const EDITS: &'static [DocEdit<Statements>] = EDITS;
+    const WITHOUT_TEN_PERCENT: &'static [(&'static str, &'static str)] = PRINTS_NO_NUMBER;
 }
 
 /// The claims of the chapter that print no number a 10 % change could move, with the
@@ -146,8 +151,3 @@ const EDITS: &[DocEdit<Statements>] = &[
         |d| d.gamma_n_factor = 0.9,
     ),
 ];
-
-/// The falsification mutations (see [`EDITS`]).
-pub fn mutations() -> Vec<Mutation> {
-    Mutation::from_edits(PRINTED, EDITS.iter().copied(), judge)
-}

@@ -1,0 +1,428 @@
+//! The chapter's claims, as pure functions of the statements and the evidence: the
+//! falsification mutations (`mutations.rs`) judge edited statements on the same
+//! evidence.
+
+use super::evidence::Evidence;
+use super::setup::envelope;
+use super::statements::Statements;
+use super::stick_methods::{fitted_order, gap_over_estimate, SceneMethods};
+use super::stick_methods_soft::asymptotic_range;
+use super::stick_part::AUTHORS_G_MPS2;
+use super::work_precision::{dopri5_errors_at, observed_order, WpPoint};
+use crate::numerics::ode::Method;
+use crate::report::{Check, Claim};
+use serde_json::json;
+
+/// Every claim of the chapter, in the order of the report.
+pub fn all(doc: &Statements, ev: &Evidence) -> Vec<Claim> {
+    let mut out = vec![reference_converged(doc, ev), reference_study(doc, ev)];
+    out.extend(first_order_envelopes(doc, ev));
+    out.extend([
+        unlocated_stall(doc, ev),
+        stiff_blowup(doc, ev),
+        zeno_ball(doc, ev),
+        zeno_ball_mj(doc, ev),
+        zeno_plate(doc, ev),
+        stick_reference(doc, ev),
+        stick_rk4_order(doc, ev),
+        stick_euler_order(doc, ev),
+        stick_unlocated_stall(doc, ev),
+        stick_dop853(doc, ev),
+        missed_event(doc, ev),
+        flight_map(doc, ev),
+        viscous_law(doc, ev),
+    ]);
+    out.extend(stick_methods(&ev.methods_default, doc.mj_order));
+    if doc.soft_friction_quadratic {
+        out.extend(soft_contact(&ev.methods_default, doc.soft_order));
+    } else {
+        let mut s = ev.methods_default.clone();
+        for l in s.ladders.iter_mut().filter(|l| l.method == "soft_contact") {
+            *l = ev.soft_first_family.clone();
+        }
+        out.extend(soft_contact(&s, doc.soft_order));
+    }
+    out
+}
+
+/// The closed-form event-driven drift against integrated Dormand-Prince.
+fn reference_converged(doc: &Statements, ev: &Evidence) -> Claim {
+    let b = &ev.block;
+    let reference = b.reference.value;
+    let d_ref = b.dopri5_at(doc.reference_tol);
+    let rel = |v: f64| ((v - reference) / reference).abs();
+    // DP5 at 1e-12 over <= 50 periods with events located to a few ulps: its error on
+    // the drift is a few local errors of the velocities, whose scale is the plate's
+    // peak speed v_p = Gamma g / omega, not the drift (which vanishes at the onset of
+    // motion, where a relative difference blows up: 1.03e-8 of a drift of 3.8e-4 m/s at
+    // Gamma 2.186, mu 0.074, only 3.4e-11 v_p). Measured 3e-11 v_p on both scenes;
+    // 1e-9 v_p leaves a factor 30 and still tests far beyond any method of the ladder.
+    let diff_vp = (d_ref - reference).abs() / b.v_p_mps;
+    Claim::draft(
+        Check::SecondMethod,
+        "reference-converged",
+        "numerics",
+        &format!("The closed-form event-driven drift (the reference) agrees with integrated Dormand-Prince at rtol = atol = {:e}: difference in units of the plate's peak speed v_p = Γ g/ω (relative to the drift: {:.1e})", doc.reference_tol, rel(d_ref)),
+    )
+    .close(0.0, diff_vp, 1e-9)
+}
+
+/// Two decades of tolerance buy at least one decade of accuracy.
+fn reference_study(doc: &Statements, ev: &Evidence) -> Claim {
+    let b = &ev.block;
+    let rel = |v: f64| ((v - b.reference.value) / b.reference.value).abs();
+    let (d10, d11, d12) = (b.dopri5[0].1, b.dopri5[1].1, b.dopri5[2].1);
+    let (floor, floor_run) = (b.rounding_floor_rel, b.next_decade_rel);
+    // Budget: with local error control the global error of a pair of order p = 5 scales
+    // as tol^(p/(p+1)): 100^(5/6) = 46 over two decades (measured 40 on the default
+    // scene); the claim asks for 10. The floor has two parts, both from the runs
+    // themselves: F, the rounding of the event times (evidence), and |d(1e-12) -
+    // d(1e-13)|, the change one more decade makes: where DP5 has reached its floor its
+    // error no longer shrinks with the tolerance and this change is of the floor's size
+    // (measured at --frequency-hz 100 --mu 0.01 --bias 0.45: errors 3.6e-9, 4.5e-9,
+    // 9.2e-9, 4.8e-9 relative from 1e-10 to 1e-13, i.e. 6e-13 .. 1.5e-12 m/s, while F
+    // is 1.8e-9), where tolerance-proportional control makes it about the error itself.
+    // The 1e-11 middle point is reported, not ordered: the signed error is a sum of
+    // event terms of both signs, and one decade can land on a cancellation (--bias 0.9:
+    // 9.8e-11, 1.3e-9, 5.4e-11).
+    let holds = if doc.tightening_helps {
+        rel(d12) <= rel(d10) / 10.0 + floor + floor_run
+    } else {
+        rel(d12).min(rel(d11)) >= rel(d10) + floor
+    };
+    Claim::draft(
+        Check::Convergence,
+        "reference-convergence-study",
+        "numerics",
+        "Integrated Dormand-Prince approaches the reference as the tolerance tightens: err(1e-12) <= err(1e-10)/10 + F + |d(1e-12) - d(1e-13)|/|d|: two decades of tolerance buy at least one decade of accuracy (a 5(4) pair under local error control: 100^(5/6) = 46), down to the run's own floor, F the rounding of the event times (256 ulps of t per event times the relative-velocity jump 2 Γ g / ω, over the window) and the change one more decade makes (at the floor it is the floor's size)",
+    )
+    .exact(true, holds)
+}
+
+/// What the block's data supports for the first-order methods: an envelope
+/// e(h) <= 2 e(h0) (h/h0)^p over the whole ladder (h0 = T/20), with p = 1. A method of
+/// order 0 (no convergence) or 1/2 fails it over the ladder's range of h (a factor 64
+/// in quick mode, 256 and more in full); order 2 fails it too (tested). The observed
+/// slopes are reported, not claimed as orders (the signed error changes sign with h).
+fn first_order_envelopes(doc: &Statements, ev: &Evidence) -> Vec<Claim> {
+    [
+        ("euler-located", "Explicit Euler with located events"),
+        ("moreau-jean", "Moreau-Jean"),
+    ]
+    .into_iter()
+    .map(|(label, name)| {
+        let (worst, n) = envelope(&ev.block.order_points, label, doc.first_order);
+        Claim::draft(
+            Check::Convergence,
+            &format!("{label}-order"),
+            "numerics",
+            &format!("{name} converges on the block drift of the default scene (Γ = 2.5, b = 0.05, μ = 0.4) at least at first order: every error of the ladder is below 2 e(h0) (h/h0)^1, h0 = T/20 (computed: the largest ratio e(h) / (e(h0) (h/h0))). A lower bound only: the signed error changes sign and course with h on this observable (chapter 7's text), so no order is fitted here; the orders are fitted on the stick."),
+        )
+        .values(format!("<= 2 ({n} step sizes)"), worst, "factor 2 on a first-order envelope")
+        .confirmed_if(n >= 3 && worst <= 2.0)
+    })
+    .collect()
+}
+
+/// Does the unlocated run stall at the tightest tolerance (over 100 times the located
+/// error, or broken down)?
+fn stalls(points: &[WpPoint], tight: f64) -> bool {
+    let (loc, unloc) = dopri5_errors_at(points, tight);
+    unloc.is_nan() || unloc > 100.0 * loc.max(1e-15)
+}
+
+/// Without event location DP5's error on the block drift stalls.
+fn unlocated_stall(doc: &Statements, ev: &Evidence) -> Claim {
+    let (loc, unloc) = dopri5_errors_at(&ev.block.points, ev.block.tightest_tol);
+    Claim::draft(
+        Check::Simulation,
+        "unlocated-events-stall",
+        "numerics",
+        "Without event location Dormand-Prince's error stalls: at the tightest tolerance it is over 100 times the located error (events are taken at step ends)",
+    )
+    .exact(true, (unloc > 100.0 * loc.max(1e-15)) == doc.unlocated_stalls)
+}
+
+/// Each fixed-step method blows up where h/tau exceeds its stability limit on the
+/// linear decay (Euler: |1 - z| < 1 -> z < 2; RK4: z < 2.785), and the limits are sharp:
+/// 5 % beyond each it blows up, 5 % inside it does not (a limit stated 10 % off puts one
+/// of the two on the wrong side): the measured threshold lies within 5 % of the limit.
+fn stiff_blowup(doc: &Statements, ev: &Evidence) -> Claim {
+    let st = &ev.stiff;
+    let limit = |m: Method| match m {
+        Method::Euler => doc.euler_limit,
+        _ => doc.rk4_limit,
+    };
+    let blew_at_tenth = st.outcome.fixed.iter().all(|(m, e)| {
+        e.is_none_or(|e| e > 1e3) == (st.outcome.h_over_tau > limit(*m))
+    });
+    let sharp = st
+        .thresholds
+        .iter()
+        .all(|&(m, (a, b))| 0.95 * limit(m) <= a && b <= 1.05 * limit(m));
+    Claim::draft(
+        Check::ClosedForm,
+        "stiff-relaxation-explicit-blowup",
+        "4 (C.3)",
+        "On the flight relaxation θ' = -(k/γ)(θ - θ₀) (k/γ = 1000/s), fixed steps of T/10 blow up for Euler and RK4 (h/τ beyond 2 and 2.785) while adaptive Dormand-Prince stays within 1e-6 rad of the closed form; the limits are sharp: at 1.05 times each limit the fixed step blows up within 400 steps, at 0.95 times it does not",
+    )
+    .exact(true, blew_at_tenth && sharp && st.outcome.dopri5_error < 1e-6)
+}
+
+/// The driver stops when 100 events fall within 1 us or time stops advancing: the
+/// flights still to come then sum to less than the window, 1e-6 s.
+fn zeno_ball(doc: &Statements, ev: &Evidence) -> Claim {
+    let z = &ev.zeno.outcome;
+    Claim::draft(
+        Check::ClosedForm,
+        "zeno-ball-stops-at-accumulation",
+        "numerics",
+        "The event-driven driver stops a ball bouncing with 0 < e < 1 (dropped from 1 m) with a Zeno outcome at the accumulation time t_inf = t1 (1 + e)/(1 - e) (s)",
+    )
+    .close(doc.zeno_factor * z.ball_t_inf_s, z.ball_zeno_at_s.unwrap_or(f64::NAN), 1e-6)
+}
+
+/// Moreau-Jean at h = 1 ms loses bounces shorter than a step: it settles within a few
+/// steps of the last resolved bounce, itself within ~2 v_min/(g (1-e)) of t_inf with
+/// v_min ~ g h, i.e. ~2 h/(1 - e): a few ms at e = 0.5; the bound is 10 h/(1 - e), at
+/// least 0.05 s.
+fn zeno_ball_mj(doc: &Statements, ev: &Evidence) -> Claim {
+    let z = &ev.zeno.outcome;
+    let tol = (10.0 * 1e-3 / (1.0 - ev.zeno.restitution)).max(0.05);
+    Claim::draft(
+        Check::ClosedForm,
+        "zeno-ball-moreau-jean-rest",
+        "numerics",
+        "Moreau-Jean (h = 1 ms) passes through the same accumulation and keeps the ball at rest from about t_inf on (s)",
+    )
+    .close(doc.zeno_factor * z.ball_t_inf_s, z.ball_mj_rest_s, tol)
+}
+
+/// Moreau-Jean at T/1000..T/4000 is first order with an error of ~1e-3 relative on the
+/// drift (the ladder); the sticking threshold of 0.1 mm/s changes the drift by less
+/// than that. 2 % allows both.
+fn zeno_plate(doc: &Statements, ev: &Evidence) -> Claim {
+    let z = &ev.zeno.outcome;
+    let diff =
+        ((z.drift_mj_mps - doc.zeno_plate_factor * z.drift_sticking_mps) / z.drift_sticking_mps)
+            .abs();
+    Claim::draft(
+        Check::SecondMethod,
+        "zeno-plate-resolved-two-ways",
+        "3.1.2",
+        "On the chattering plate (Γ = 1.2), the sticking transition (event-driven) and Moreau-Jean give the same drift (relative difference)",
+    )
+    .close(0.0, diff, 0.02)
+}
+
+/// The stick's flows are smooth between events located to ulps: DP5's global error
+/// scales with the tolerance (measured ~1e-11 relative at 1e-11 and 1e-12), so the two
+/// tightest runs agree with the reference to well under 1e-8.
+fn stick_reference(doc: &Statements, ev: &Evidence) -> Claim {
+    let st = &ev.stick;
+    let rel = |v: f64| ((v - st.reference_mps) / st.reference_mps).abs();
+    let (d11, d12) = if doc.reference_tol == 1e-12 {
+        st.dopri5_11_12
+    } else {
+        let d = st.dopri5_at(doc.reference_tol);
+        (d, d)
+    };
+    Claim::draft(
+        Check::Convergence,
+        "stick-reference-converged",
+        "4, 5",
+        "The stick's mean speed at rtol = atol = 1e-13 (the reference) agrees with the runs at 1e-11 and 1e-12 (largest relative difference)",
+    )
+    .close(0.0, rel(d11).max(rel(d12)), 1e-8)
+}
+
+/// RK4's order over every step whose error is above 1e-10 (100 x the round-off floor of
+/// ~1e-12; already asymptotic at T/32: the error falls 16-fold per halving).
+pub fn stick_rk4_observed(ev: &Evidence) -> f64 {
+    observed_order(&ev.stick.points, "rk4-located", 1e-10)
+}
+
+/// Euler's order over h <= T/128 (at T/32 and T/64 the error has not yet begun to
+/// halve: 8.6e-4 and 9.0e-4 in the full ladder).
+pub fn stick_euler_observed(ev: &Evidence) -> f64 {
+    let h_asym = ev.stick.period_s / 128.0 * (1.0 + 1e-9);
+    let asym: Vec<WpPoint> = ev
+        .stick
+        .points
+        .iter()
+        .filter(|p| p.setting.knob() <= h_asym)
+        .cloned()
+        .collect();
+    observed_order(&asym, "euler-located", 1e-10)
+}
+
+/// RK4's order with located events, |p - 4| <= 0.4 (the neighbouring orders fail).
+fn stick_rk4_order(doc: &Statements, ev: &Evidence) -> Claim {
+    let range = "every step with error above 1e-10";
+    order_claim("stick-rk4-located-order", "RK4", doc.rk4_order, stick_rk4_observed(ev), 0.4, range)
+}
+
+/// Euler's order with located events, |p - 1| <= 0.3.
+fn stick_euler_order(doc: &Statements, ev: &Evidence) -> Claim {
+    let observed = stick_euler_observed(ev);
+    order_claim("stick-euler-located-order", "Explicit Euler", doc.euler_order, observed, 0.3, "h <= T/128")
+}
+
+/// An order claim: the fitted slope `observed` within `band` of the order `order`.
+fn order_claim(id: &str, name: &str, order: f64, observed: f64, band: f64, range: &str) -> Claim {
+    Claim::draft(
+        Check::Convergence,
+        id,
+        "4, 5",
+        &format!("{name} with located events converges at order {order} on the stick's mean speed (authors' scene): least-squares slope of log error against log step over the asymptotic range ({range}); band +-{band}, which the neighbouring orders fail"),
+    )
+    .values(order, observed, band).confirmed_if((observed - order).abs() <= band)
+}
+
+/// Without event location DP5's error on the stick stalls (or the run breaks down).
+fn stick_unlocated_stall(doc: &Statements, ev: &Evidence) -> Claim {
+    let tight = *ev.stick.tols.last().expect("tolerances");
+    Claim::draft(
+        Check::Simulation,
+        "stick-unlocated-events-stall",
+        "4, 5",
+        "Without event location Dormand-Prince's error on the stick's mean speed stalls: at the tightest tolerance it is over 100 times the located error, or the run breaks down",
+    )
+    .exact(true, stalls(&ev.stick.points, tight) == doc.unlocated_stalls)
+}
+
+/// The stick chapter's choice of DOP853: at rtol 1e-10 both pairs must land within 1e-9
+/// of the DP5 reference at 1e-13 (an independent method: DOP853 shares no stage with
+/// it), and DOP853 must do so with fewer right-hand sides; on the authors' scene at
+/// g = 10 m/s^2 whatever --g-mps2.
+fn stick_dop853(doc: &Statements, ev: &Evidence) -> Claim {
+    let ((e5, e8), (n5, n8)) = ev.stick.dop853_vs_dopri5;
+    let cycles = ev.stick.cycles;
+    let cheaper = if doc.dop853_cheaper { n8 < n5 } else { n5 < n8 };
+    Claim::draft(
+        Check::SecondMethod,
+        "stick-dop853-cheaper-at-1e-10",
+        "4, 5",
+        &format!("On the authors' scene (main_rod.m of toshankarghosh/toothpicks) with g = {AUTHORS_G_MPS2} m/s² and {cycles} drive cycles from the static angle, and on it only (measured on this scene whatever --g-mps2): at rtol = atol = 1e-10 Dormand-Prince 8(5,3) reaches the stick's mean speed within 1e-9 of the reference with fewer right-hand-side evaluations than Dormand-Prince 5(4) (the stick chapter's default integrator rests on this)"),
+    )
+    .exact(true, e5 <= 1e-9 && e8 <= 1e-9 && cheaper)
+}
+
+/// Every run of the missed-event ladder has the reference's phase sequence, with the
+/// event search the statements name.
+fn missed_event(doc: &Statements, ev: &Evidence) -> Claim {
+    let search = if doc.certified_search {
+        "certified"
+    } else {
+        "uncertified"
+    };
+    Claim::draft(
+        Check::SecondMethod,
+        "stick-no-missed-event",
+        "4, 5",
+        &format!(
+            "With the {search} event search, both Dormand-Prince pairs at every rtol from 1e-8 to 1e-12 give the phase sequence of the reference (DP5 at 1e-13, certified) on the authors' stick at g = 9.81 m/s² over 0.4 s, whose ninth hop starts with a lift-off shorter than one step; the computed value lists the runs that differ"
+        ),
+    )
+    .exact(json!([]), json!(ev.missed.differing(doc.certified_search)))
+}
+
+/// Checked inside the limit it names, whatever the flags: Gamma = 2.5 (a period-one
+/// sticking orbit) and b = 1/80. The flight map neglects the slip before takeoff, whose
+/// share of the drift scales with b = F/(mu m g) (measured 0.4 % at b = 1/20): at
+/// b = 1/80 it is well under 1 %.
+fn flight_map(doc: &Statements, ev: &Evidence) -> Claim {
+    let (exact, map) = ev.economy.limit;
+    let err = map.map_or(f64::NAN, |m| {
+        ((doc.flight_map_factor * m - exact) / exact).abs()
+    });
+    Claim::draft(
+        Check::SecondMethod,
+        "flight-map-economy",
+        "3.1.2",
+        "Approximation: the flight-map law v_ave = b μ g t_f²/(2 n T) (sticking landings, no slip before takeoff) reproduces the exact drift within 1 % in the limit b << 1 of period-n sticking orbits; at Γ = 2.5, b = 1/80 (relative error)",
+    )
+    .values(0.0, err, 0.01).approximation_if(err < 0.01)
+}
+
+/// Checked inside the limit it names, whatever the flags: K = 100 and b = 0.05. The
+/// viscous law neglects the block's velocity fluctuation (relative size ~ 1/K^2) and
+/// linearises arcsin (relative size ~ b^2 pi^2/24 = 1e-3 at b = 0.05): both are well
+/// under 1 % there.
+fn viscous_law(doc: &Statements, ev: &Evidence) -> Claim {
+    let (exact, viscous) = ev.horizontal.limit;
+    let err = ((viscous / doc.viscous_factor - exact) / exact).abs(); // formula: v = F/c, c scaled by the statement's factor
+    Claim::draft(
+        Check::SecondMethod,
+        "viscous-law-economy",
+        "3.1.1",
+        "Approximation: under horizontal dither the effective viscous law F = c v, c = 2 μ m g/(π V), reproduces the exact drift within 1 % in the limit Γₓ = δₓ ω²/(μ g) >> 1 and small bias; at Γₓ = 100, b = 0.05 (relative error)",
+    )
+    .values(0.0, err, 0.01).approximation_if(err < 0.01)
+}
+
+/// The claims on the stick by three methods (the self-locking scene), with the order
+/// the statements assert (`mj_order`: 1).
+pub fn stick_methods(s: &SceneMethods, mj_order: f64) -> Vec<Claim> {
+    let mj = s.ladder("moreau_jean");
+    vec![
+        // Moreau-Jean is first order (derivation in the chapter); the fit over the
+        // ladder scatters by the event-phase term (measured 0.99 to 1.01 over T/2000 ..
+        // T/8000): +-0.3 as for the block's first-order methods.
+        Claim::draft(
+            Check::Convergence,
+            "stick-methods-moreau-jean-order",
+            "4, 5",
+            "Moreau-Jean time-stepping of the stick (the massless rod's balance implicit over each step) converges to the event-driven mean speed at order 1 in the step h (least-squares slope over the ladder)",
+        )
+        .close(mj_order, fitted_order(mj), 0.3),
+        // The finest rung's gap from the reference against its own Richardson estimate:
+        // ratio 1 in the asymptotic range; +-0.5 for the O(h) change of the error
+        // constant between the last two rungs (a wrong order p changes the ratio by the
+        // factor 2^p - 1, 3 for p = 2).
+        Claim::draft(
+            Check::Convergence,
+            "stick-methods-moreau-jean-gap-within-estimate",
+            "4, 5",
+            "Moreau-Jean's gap from the event-driven speed at its finest step equals its own Richardson error estimate |v_h - v_2h| / (2^p - 1), p = 1 (ratio)",
+        )
+        .close(1.0, gap_over_estimate(mj, s.reference_mps, mj_order), 0.5),
+    ]
+}
+
+/// The soft-contact claims on scene `s`, asserting the order `order` (1; a mutation
+/// passes another).
+pub fn soft_contact(s: &SceneMethods, order: f64) -> Vec<Claim> {
+    let range = asymptotic_range(s.ladder("soft_contact"), s.reference_mps);
+    // A fit needs three rungs (two local orders that agree); fewer: NaN, failed.
+    let fitted = if range.rungs.len() >= 3 {
+        fitted_order(&range)
+    } else {
+        f64::NAN
+    };
+    vec![
+        // Tolerance: the fitted order is 1 + (r - 1) phi for an error A ε + B ε^r with
+        // the friction term's share phi (measured <= 0.25 of the error over the range:
+        // the friction part is what stays after the normal part 0.0207 ε measured with
+        // v_eps = 1e-6 m/s) and r - 1 <= 0.6 (its local orders in v_eps, <= 0.8, doubled
+        // by v_eps ∝ ε², minus 1): 0.15, plus the range's own spread of local orders
+        // 0.1: ±0.25. Order 2 is off by 0.9; the first family (v_eps ∝ ε) gives 0.4.
+        Claim::draft(
+            Check::Convergence,
+            "soft-contact-order",
+            "4, 5",
+            "Soft contact (normal spring k_n = m/(ε τ₀²) and damper c_n = m/(ε τ₀), friction μ F_z tanh(ẋ_C/v_ε) with v_ε = v₀ ε²) converges to the event-driven mean speed at order 1 in ε (least-squares slope over the asymptotic range: the finest rungs whose local orders agree within 0.15)",
+        )
+        .close(order, fitted, 0.25),
+        // Ratio 1 in the asymptotic range; a true local order p' between 0.58 and 1.32
+        // gives (2^p' - 1)/(2^1 - 1) in [0.5, 1.5]: ±0.5, as for Moreau-Jean (an assumed
+        // order 2 divides the estimate by 3).
+        Claim::draft(
+            Check::Convergence,
+            "soft-contact-richardson-gap",
+            "4, 5",
+            "Soft contact's gap from the event-driven speed at its finest ε equals its own Richardson error estimate |v_ε - v_2ε| / (2^p - 1), p = 1 (ratio)",
+        )
+        .close(1.0, gap_over_estimate(&range, s.reference_mps, order), 0.5),
+    ]
+}
