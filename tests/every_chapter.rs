@@ -1,12 +1,27 @@
 //! What every chapter of the registry (`chapters::CHAPTERS`) gets without a test file of
-//! its own: its quick run with default flags, no failed claim in it, the 10 % rule of its
-//! mutations, and a snapshot of its quick summary named by its id
+//! its own: its quick run with default flags, an answer in it, no failed claim, the 10 %
+//! rule of its mutations, and a snapshot of its quick summary named by its id
 //! (`snapshots/suite__every_chapter__<id>.snap`). A chapter's own `tests/<id>.rs` holds
 //! only what is particular to it. This file names no chapter.
 
 use crate::common::quick_reports;
 use locomotion_workbook::chapters::CHAPTERS;
+use locomotion_workbook::cli::answer;
 use locomotion_workbook::report::{Check, Verdict};
+
+/// `workbook all` and a chapter's run open with its answer: a sentence that a rule of
+/// `src/cli/lead.rs` says from its results (a text result `reason` is said as it is).
+#[test]
+fn every_chapter_has_an_answer() {
+    for (c, r) in CHAPTERS.iter().zip(quick_reports()) {
+        assert!(
+            !answer(r).is_empty(),
+            "chapter {} ({}): its quick report gives no answer: add a text result `reason` (the answer in one sentence) or a rule to src/cli/lead.rs that reads its results",
+            c.number,
+            c.id
+        );
+    }
+}
 
 #[test]
 fn every_chapter_runs_quick_with_no_failed_claim() {
