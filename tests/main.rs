@@ -12,6 +12,7 @@ mod chapter_completeness;
 mod cli;
 mod common;
 mod effective_mass;
+mod every_chapter;
 mod falsification;
 mod fuzz;
 mod horizontal_shaking;

@@ -8,7 +8,7 @@ use locomotion_workbook::physics::stick::{authors_scene, jamming_scene, StickPar
 use locomotion_workbook::physics::stick_inertia::painleve::{painleve_min, painleve_min_angle};
 use locomotion_workbook::physics::stick_inertia::run::run_from_rest;
 use locomotion_workbook::physics::stick_inertia::{InertiaModel, InertiaParams, MassGeometry};
-use locomotion_workbook::report::{Check, Verdict};
+use locomotion_workbook::report::Verdict;
 
 fn opts() -> Options {
     Options {
@@ -18,21 +18,14 @@ fn opts() -> Options {
     }
 }
 
+/// Stronger than the generic falsification test (a changed verdict): every mutation of
+/// this chapter makes its claim fail (the quick run, its no-failed-claim check and the
+/// 10 % rule are `every_chapter.rs`'s).
 #[test]
-fn claims_pass_and_falsification_mutations_flip_every_claim() {
+fn every_falsification_mutation_fails_its_claim() {
     let r = chapters::run_default("stick-with-inertia", &Context::headless(true)).unwrap();
-    assert!(!r.has_failures(), "{:?}", r.claims);
     assert_eq!(r.claims.len(), 10);
-    let muts = chapters::mutations("stick-with-inertia");
-    for c in r.claims.iter().filter(|c| c.check != Check::Consistency) {
-        assert!(
-            muts.iter()
-                .any(|m| m.claim_id == c.id && m.description.contains("10 %")),
-            "no 10 % mutation for {}",
-            c.id
-        );
-    }
-    for m in muts {
+    for m in chapters::mutations("stick-with-inertia") {
         let c = (m.run)();
         assert_eq!(
             c.verdict,

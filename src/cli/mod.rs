@@ -15,6 +15,7 @@ use std::path::{Path, PathBuf};
 
 mod lead;
 mod screen;
+pub use lead::answer;
 pub use screen::WIDTH;
 
 /// Parses `args` and runs; returns the process exit code. Output goes to the given

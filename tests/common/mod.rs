@@ -36,6 +36,23 @@ pub fn assert_bad_input(args: &[&str], flag: &str) {
     assert!(err.contains(flag), "{args:?}: {err} should name {flag}");
 }
 
+/// Every registered chapter's quick report (default flags, headless, the document's
+/// statements), in registry order, run once per test process.
+pub fn quick_reports() -> &'static [locomotion_workbook::report::ChapterReport] {
+    use locomotion_workbook::chapters::{run_default, Context, CHAPTERS};
+    static R: std::sync::OnceLock<Vec<locomotion_workbook::report::ChapterReport>> =
+        std::sync::OnceLock::new();
+    R.get_or_init(|| {
+        CHAPTERS
+            .iter()
+            .map(|c| {
+                run_default(c.id, &Context::headless(true))
+                    .unwrap_or_else(|e| panic!("{}: the quick run with default flags: {e}", c.id))
+            })
+            .collect()
+    })
+}
+
 /// `workbook <chapter> --quick --json --no-figures`, parsed (asserts exit code 0).
 pub fn quick_json(chapter: &str) -> serde_json::Value {
     let (code, out, err) = run(&[chapter, "--quick", "--json", "--no-figures"]);

@@ -46,7 +46,7 @@ fn equations(d: &Statements, c: &Ctx) -> Vec<Claim> {
     // amplification), so 1e-9 m holds it 1e4 times over. Both sides are written from
     // the same equations, so a wrong document would pass: a consistency check; the
     // document's C.3 and C.5 are judged by `c3-c5-flight-lagrange`.
-    let fe = flight_error(pa, d.flight_rate, d.flight_gravity);
+    let fe = flight_error(pa, &ev.flight, d.flight_rate, d.flight_gravity);
     v.push(Claim::draft(Check::Consistency, "c3-c5-flight-closed-form", "C.3, C.5", "In flight P is ballistic (C.5) and θ relaxes as θ' = -(k/γ)(θ - θ₀) (C.3): the workbook's closed form equals a Dormand-Prince integration (rtol 1e-12) of the same equations, every 0.5 ms over 20 ms (m or rad). Consistency: both sides come from the same equations (the document's are judged against the Euler-Lagrange equations in c3-c5-flight-lagrange).").close(0.0, fe, 1e-9));
     v.push(flight_lagrange(d, c));
     // C.3's third row in contact: the spring-damper torque balances a contact moment

@@ -19,6 +19,13 @@ pub struct Evidence {
     pub authors_reset: RunSummary,
     /// Phase sequences of the authors' and the jamming scene at rtol 1e-8.
     pub loose_sequences: [String; 2],
+    /// Phase sequences of the authors' and the jamming scene with events taken at step
+    /// ends (not located), at each rtol of [`SEQUENCE_RTOLS`] (for the mutation of
+    /// `phase-sequence-tolerance`).
+    pub unlocated_sequences: [[String; 2]; 2],
+    /// The model's closed-form flight of the authors' stick from a state in the air,
+    /// which `c3-c5-flight-closed-form` integrates the document's C.3 and C.5 against.
+    pub flight: FlightReference,
     /// Pivot on a still plate from `theta_f + eps` and `theta_f + 2 eps` (eps = 1e-4 rad):
     /// samples `(t s, theta - theta_f rad)` every millisecond for 1 s.
     pub pendulum: [Vec<(f64, f64)>; 2],
@@ -42,6 +49,34 @@ pub struct Evidence {
 
 /// Relative (= absolute) tolerance of the traced evidence runs.
 pub const EVIDENCE_RTOL: f64 = 1e-10;
+
+/// The two tolerances at which the phase sequences are compared (the traced runs' and
+/// the loose ones').
+pub const SEQUENCE_RTOLS: [f64; 2] = [EVIDENCE_RTOL, 1e-8];
+
+/// The phase sequences of the runs of both scenes (`params`, `duration_s` s) with
+/// events at step ends, at each of [`SEQUENCE_RTOLS`].
+fn unlocated_sequences(params: &[StickParams; 2], duration_s: f64) -> [[String; 2]; 2] {
+    let rec = Recording {
+        sequence_cap: 100_000,
+        trace_dt_s: 0.0,
+        check_invariants: false,
+        grid_only: false,
+        list_cap: None,
+    };
+    let jobs = [(0usize, 0usize), (0, 1), (1, 0), (1, 1)];
+    let seqs = crate::sweep::par_map(&jobs, "stick sequences at step ends", |&(k, i)| {
+        let opts = Options {
+            control: StepControl::tol(SEQUENCE_RTOLS[k], SEQUENCE_RTOLS[k]),
+            locate_events: false,
+            ..Options::default()
+        };
+        run_scene(&params[i], duration_s, &opts, rec).sequence
+    });
+    let mut it = seqs.into_iter();
+    let mut next = || it.next().expect("four runs");
+    [[next(), next()], [next(), next()]]
+}
 
 /// Runs the evidence (a few tenths of a second in release).
 pub fn collect(ctx: &Context, opts: &Options) -> Evidence {
@@ -105,6 +140,8 @@ pub fn collect(ctx: &Context, opts: &Options) -> Evidence {
         jamming,
         authors_reset,
         loose_sequences,
+        unlocated_sequences: unlocated_sequences(&[pa, pj], dur),
+        flight: flight_reference(&pa),
         pendulum,
         start_fz_n,
         start_liftoff_hdot_mps,
@@ -174,11 +211,21 @@ pub fn pendulum_error(base: &StickParams, trace: &[(f64, f64)], eps: f64, spring
         .fold(0.0, f64::max)
 }
 
-/// The closed-form flight against Dormand-Prince at rtol 1e-12 on `(x_p, z_p, xdot_p,
-/// zdot_p, theta)` with the document's C.3 and C.5, `theta' = -rate (k/gamma)(theta -
-/// theta_0)`, `zddot_p = -gravity g` (1 and 1 as printed): largest difference in C's
-/// position (m) or angle (rad) every 0.5 ms over 20 ms from a state in the air.
-pub fn flight_error(p: &StickParams, rate_factor: f64, gravity: f64) -> f64 {
+/// A flight by the model's closed form: its start `(x_p, z_p, x_p', z_p', θ)` from a
+/// state in the air, the model's rate k/γ (1/s), and every 0.5 ms over 20 ms C's
+/// position and the angle `(t s, [x_c m, z_c m, θ rad])`.
+pub struct FlightReference {
+    /// `(x_p, z_p, x_p', z_p', θ)` at t = 0 (m, m/s, rad).
+    pub start: [f64; 5],
+    /// k/γ (1/s).
+    pub rate_per_s: f64,
+    /// The closed form's samples.
+    pub at: Vec<(f64, [f64; 3])>,
+}
+
+/// The model's closed-form flight of `p` from a state in the air (θ₀ + 0.05 rad, C 2 cm
+/// up, moving): the angle relaxes within a few γ/k = 1 ms, so samples every 0.5 ms.
+pub fn flight_reference(p: &StickParams) -> FlightReference {
     let model = StickModel::new(*p);
     let mut y0 = [0.0; NSTATE];
     y0[TH] = p.theta0_rad + 0.05;
@@ -187,30 +234,46 @@ pub fn flight_error(p: &StickParams, rate_factor: f64, gravity: f64) -> f64 {
     y0[VZC] = 0.8;
     y0[OM] = -model.rate * 0.05;
     let [xp, zp, vxp, vzp] = model.tip(&y0);
+    let at = (1..=40)
+        .map(|k| {
+            let t1 = 0.0005 * k as f64;
+            let yc = model.flight_state(0.0, &y0, t1);
+            (t1, [yc[XC], yc[ZC], yc[TH]])
+        })
+        .collect();
+    FlightReference {
+        start: [xp, zp, vxp, vzp, y0[TH]],
+        rate_per_s: model.rate,
+        at,
+    }
+}
+
+/// The closed-form flight `f` against Dormand-Prince at rtol 1e-12 on `(x_p, z_p,
+/// xdot_p, zdot_p, theta)` with the document's C.3 and C.5, `theta' = -rate (k/gamma)
+/// (theta - theta_0)`, `zddot_p = -gravity g` (1 and 1 as printed): largest difference in
+/// C's position (m) or angle (rad) at the samples of `f`.
+pub fn flight_error(p: &StickParams, f: &FlightReference, rate_factor: f64, gravity: f64) -> f64 {
     let (g, rate, th0, l) = (
         gravity * p.g_mps2,
-        rate_factor * model.rate,
+        rate_factor * f.rate_per_s,
         p.theta0_rad,
         p.length_m,
     );
     let sys = move |_t: f64, u: &[f64; 5]| [u[2], u[3], 0.0, -g, -rate * (u[4] - th0)];
     let mut integ = Integrator::<5>::new(Method::Dopri5, StepControl::tol(1e-12, 1e-12));
-    // compared every 0.5 ms: the angle relaxes within a few gamma/k = 1 ms
-    let (mut t, mut u, mut worst) = (0.0, [xp, zp, vxp, vzp, y0[TH]], 0.0f64);
-    for k in 1..=40 {
-        let t1 = 0.0005 * k as f64;
+    let (mut t, mut u, mut worst) = (0.0, f.start, 0.0f64);
+    for &(t1, [xc_ref, zc_ref, th_ref]) in &f.at {
         u = match integ.integrate(&sys, t, u, t1, |_| {}) {
             Ok(u) => u,
             Err(_) => return f64::INFINITY,
         };
         t = t1;
-        let yc = model.flight_state(0.0, &y0, t1);
         let xc = u[0] - l * u[4].sin();
         let zc = u[1] - l * u[4].cos();
         worst = worst
-            .max((xc - yc[XC]).abs())
-            .max((zc - yc[ZC]).abs())
-            .max((u[4] - yc[TH]).abs());
+            .max((xc - xc_ref).abs())
+            .max((zc - zc_ref).abs())
+            .max((u[4] - th_ref).abs());
     }
     worst
 }
