@@ -34,45 +34,48 @@ mod statements;
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Coulomb friction coefficient mu between block and plate, [`MU`].
-    #[arg(long, default_value_t = 0.36)]
+    #[arg(long, default_value_t = MU.default_value())]
     pub mu: f64,
     /// Plate displacement amplitude delta_x (m), [`AMPLITUDE_M`].
-    #[arg(long = "amplitude-m", default_value_t = 0.02)]
+    #[arg(long = "amplitude-m", default_value_t = AMPLITUDE_M.default_value())]
     pub amplitude_m: f64,
     /// Plate frequency f (Hz), [`FREQUENCY_HZ`].
-    #[arg(long = "frequency-hz", default_value_t = 5.0)]
+    #[arg(long = "frequency-hz", default_value_t = FREQUENCY_HZ.default_value())]
     pub frequency_hz: f64,
     /// Bias force F as a fraction of mu m g, [`BIAS`].
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = BIAS.default_value())]
     pub bias: f64,
 }
 
 /// `--mu`.
 pub const MU: Flag = Flag::new(
     "--mu",
-    "Coulomb friction coefficient mu between block and plate; default 0.36, so that arctan(mu) = 19.8 deg, the document's \"about 20 deg\"",
+    "Coulomb friction coefficient mu between block and plate; the default makes arctan(mu) = 19.8 deg, the document's \"about 20 deg\"",
     "dimensionless",
     Interval::closed(0.01, 2.0).open_above(),
 )
-.why("dry friction between block and plate; with amplitude, frequency and g it must give 2e-3 <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= 1e6 1/s, see the error line");
+.why("dry friction between block and plate; with amplitude, frequency and g it must give 2e-3 <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= 1e6 1/s, see the error line")
+.default_value_is(0.36);
 
 /// `--amplitude-m`.
 pub const AMPLITUDE_M: Flag = Flag::new(
     "--amplitude-m",
-    "Plate displacement amplitude delta_x; default 0.02 m, a hand-shaken book",
+    "Plate displacement amplitude delta_x; the default is a hand-shaken book's",
     "m",
     Interval::closed(1e-6, 10.0),
 )
-.why("a micrometre to a 10 m stroke; Gamma_x is bounded too");
+.why("a micrometre to a 10 m stroke; Gamma_x is bounded too")
+.default_value_is(0.02);
 
 /// `--frequency-hz`.
 pub const FREQUENCY_HZ: Flag = Flag::new(
     "--frequency-hz",
-    "Plate frequency f = omega/(2 pi); default 5 Hz, the document's \"say 5 oscillations/s\"",
+    "Plate frequency f = omega/(2 pi); the default is the document's \"say 5 oscillations/s\"",
     "Hz",
     Interval::closed(0.01, 1000.0),
 )
-.why("a hand-shaken book to an ultrasonic-free shaker; Gamma_x is bounded too");
+.why("a hand-shaken book to an ultrasonic-free shaker; Gamma_x is bounded too")
+.default_value_is(5.0);
 
 /// `--bias`.
 pub const BIAS: Flag = Flag::new(
@@ -82,7 +85,8 @@ pub const BIAS: Flag = Flag::new(
     Interval::closed(0.0, 1.0).open_above(),
 )
 .shown_as("0, or 1e-6 <= bias < 1")
-.why("below 1e-6 the drift is within the rounding of the exact periodic solution");
+.why("below 1e-6 the drift is within the rounding of the exact periodic solution")
+.default_value_is(0.5);
 
 /// The table of the chapter's physical flags.
 pub const FLAGS: &[Flag] = &[MU, AMPLITUDE_M, FREQUENCY_HZ, BIAS, crate::flags::G];

@@ -51,8 +51,10 @@ const fn pair(name: &'static str, about: &'static str) -> Flag {
 /// The table of the chapter's flags. No `--g-mps2`: the chapter is kinematics and
 /// refuses the flag.
 pub const FLAGS: &[Flag] = &[
-    pair("--object-velocity", "Average velocity of the object as X,Y (horizontal plane; negative parts are fine: --object-velocity -2,0); default 1,3: a boat reaching across the wind"),
-    pair("--medium-velocity", "Average velocity of one medium as X,Y; repeat the flag for several media; default: wind 5,0 and still water 0,0 (the document's sailing scene)"),
+    pair("--object-velocity", "Average velocity of the object as X,Y (horizontal plane; negative parts are fine: --object-velocity -2,0)")
+        .default_is("default: 1,3, a boat reaching across the wind"),
+    pair("--medium-velocity", "Average velocity of one medium as X,Y; repeat the flag for several media")
+        .default_is("default: wind 5,0 and still water 0,0, the document's sailing scene"),
 ];
 
 fn validate(flag: &str, v: V2) -> Result<V2> {
