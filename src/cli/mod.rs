@@ -331,7 +331,7 @@ mod tests {
         print_notes(&r, Some("a-chapter"), &mut err);
         assert_eq!(
             String::from_utf8(err).unwrap(),
-            "note: first\nnote: second\nnote: stick-state-machine: first\nnote: stick-state-machine: second\n"
+            "note: first\nnote: second\nnote: a-chapter: first\nnote: a-chapter: second\n"
         );
     }
 }

@@ -163,7 +163,7 @@ impl Flag {
     }
 
     /// `value` if it satisfies `holds`, the range that the other flags' values leave this
-    /// [`Flag::coupled`] entry; else the one-line bad-input error (exit 2) in the format of
+    /// [`Flag::coupled`] entry (or a range its interval cannot hold: `0, or 1e-6 <= b`); else the one-line bad-input error (exit 2) in the format of
     /// [`Flag::check`]: the flag, the value, `range` (as text, with the other flags' values
     /// worked in) and, with the entry's unit, `reason`. Every coupled check of every
     /// chapter goes through here, so that their lines have one form.
@@ -300,6 +300,18 @@ pub fn choice<T: Choice>() -> impl clap::builder::TypedValueParser<Value = T> {
     })
 }
 
+/// The flag a coupled condition blames: of `values` (entry, value, default), the first
+/// whose value is not its default (the flag the user typed), else the first; with its
+/// value. `values` is never empty (a condition couples at least one flag).
+pub fn blame<'a>(values: &[(&'a Flag, f64, f64)]) -> (&'a Flag, f64) {
+    let (f, v, _) = values
+        .iter()
+        .find(|(_, v, d)| v != d)
+        .copied()
+        .unwrap_or(values[0]);
+    (f, v)
+}
+
 /// Finds the entry of `name` (as typed, `--mu`) in `table`.
 pub fn find<'a>(table: &'a [Flag], name: &str) -> Option<&'a Flag> {
     table.iter().find(|f| f.name == name)
@@ -348,4 +360,75 @@ pub fn stick_params(base: &StickParams, v: &stick::Values, mass_kg: f64) -> Resu
         v.frequency_hz,
     )
     .map_err(model_error)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const A: Flag = Flag::new("--a", "a", "m", Interval::closed(0.0, 1.0)).why("because");
+    const B: Flag = Flag::new("--b", "b", "s", Interval::closed(0.0, 1.0)).why("since");
+
+    #[test]
+    fn a_coupled_condition_blames_the_flag_the_user_set() {
+        assert_eq!(blame(&[(&A, 1.0, 1.0), (&B, 2.0, 3.0)]), (&B, 2.0));
+        assert_eq!(blame(&[(&A, 1.0, 1.0), (&B, 3.0, 3.0)]), (&A, 1.0));
+    }
+
+    #[test]
+    fn a_coupled_check_has_the_one_error_format() {
+        // flag, value, range, (unit; reason), exit 2, one line: as a range check
+        let plain = A.check(2.0).unwrap_err();
+        let coupled = B
+            .check_coupled(
+                0.5,
+                |v| v > 0.7,
+                "0.7 < value <= 1 at these flags",
+                "a reason",
+            )
+            .unwrap_err();
+        assert_eq!(
+            coupled.to_string(),
+            "error: invalid value 0.5 for --b: valid range is 0.7 < value <= 1 at these flags (s; a reason)"
+        );
+        assert_eq!(
+            plain.to_string(),
+            "error: invalid value 2 for --a: valid range is 0 <= value <= 1 (m; because)"
+        );
+        assert_eq!((plain.exit_code(), coupled.exit_code()), (2, 2));
+        assert!(B.check_coupled(f64::NAN, |_| true, "r", "w").is_err());
+        assert_eq!(B.check_coupled(0.8, |v| v > 0.7, "r", "w").ok(), Some(0.8));
+    }
+
+    #[test]
+    fn every_numeric_default_comes_from_its_entry_and_is_printed_once() {
+        for c in crate::chapters::CHAPTERS {
+            let cmd = c.subcommand();
+            for a in cmd.get_arguments() {
+                let Some(long) = a.get_long() else { continue };
+                let Some(f) = find(c.flags, &format!("--{long}")) else {
+                    continue;
+                };
+                let clap_default: Vec<String> = a
+                    .get_default_values()
+                    .iter()
+                    .map(|v| v.to_string_lossy().to_string())
+                    .collect();
+                if let DefaultValue::Value(v) = f.default {
+                    // clap parses the entry's default: the same number
+                    let parsed: f64 = clap_default[0].parse().expect("a number");
+                    assert_eq!(parsed, v, "{}: --{long}", c.id);
+                }
+                assert!(a.is_hide_default_value_set(), "{}: --{long}", c.id);
+                let help = a.get_help().map(|h| h.to_string()).unwrap_or_default();
+                let shown = help.matches("[default").count() + help.matches("[scene").count();
+                assert!(shown <= 1, "{}: --{long}: {help}", c.id);
+            }
+            // and the whole --help: no option prints `[default: ` twice
+            let text = c.subcommand().render_long_help().to_string();
+            for block in text.split("\n\n") {
+                assert!(block.matches("[default:").count() <= 1, "{}: {block}", c.id);
+            }
+        }
+    }
 }

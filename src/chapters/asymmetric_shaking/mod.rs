@@ -19,7 +19,7 @@ pub mod statements;
 pub mod work;
 
 use super::{info, Context};
-use crate::error::{blame, check, Result, WorkbookError};
+use crate::error::Result;
 use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::physics::plate::{PlateMotion, Sawtooth};
@@ -163,14 +163,11 @@ impl Scene {
 pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
     let g_mps2 = super::check_g(g_mps2)?;
     let vs = SLOW_VELOCITY_MPS.check(a.slow_velocity_mps)?;
-    let vf = check(
-        "--fast-velocity-mps",
+    let vf = FAST_VELOCITY_MPS.check_coupled(
         a.fast_velocity_mps,
         |v| v > vs && v <= MAX_SPEED_RATIO * vs,
-        &format!(
-            "{vs} < value <= {} (m/s: above the slow speed, at most 1000 times it)",
-            MAX_SPEED_RATIO * vs
-        ),
+        &format!("{vs} < value <= {}", MAX_SPEED_RATIO * vs),
+        FAST_VELOCITY_MPS.reason,
     )?;
     let ts = SLOW_DURATION_S.check(a.slow_duration_s)?;
     let saw = Sawtooth {
@@ -181,11 +178,11 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
     let tf = saw.fast_duration_s();
     if let Some(given) = a.fast_duration_s {
         // Zero net displacement: v_s t_s = v_f t_f, to 1e-9 relative (typed decimals).
-        check(
-            "--fast-duration-s",
+        FAST_DURATION_S.check_coupled(
             given,
             |t| t > 0.0 && (t - tf).abs() <= 1e-9 * tf,
-            &format!("{tf} s = slow speed x slow duration / fast speed (zero net displacement)"),
+            &format!("value = {tf} = slow speed x slow duration / fast speed"),
+            FAST_DURATION_S.reason,
         )?;
     }
     let mu_min = mu_min_for_lock(&saw, g_mps2, MAX_LOCK_PERIODS);
@@ -193,28 +190,27 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
     if mu < mu_min {
         // The lock condition combines five flags: name the one the user set.
         let d: Args = super::default_args();
-        let flags = [
-            ("--mu", mu, d.mu),
-            ("--slow-duration-s", ts, d.slow_duration_s),
-            ("--slow-velocity-mps", vs, d.slow_velocity_mps),
-            ("--fast-velocity-mps", vf, d.fast_velocity_mps),
-            ("--g-mps2", g_mps2, super::Context::G_DEFAULT_MPS2),
-        ];
-        let who = blame(&flags);
-        let value = flags.iter().find(|f| f.0 == who).map_or(mu, |f| f.1);
-        return Err(WorkbookError::bad_input(
-            who,
+        let (who, value) = crate::flags::blame(&[
+            (&MU, mu, d.mu),
+            (&SLOW_DURATION_S, ts, d.slow_duration_s),
+            (&SLOW_VELOCITY_MPS, vs, d.slow_velocity_mps),
+            (&FAST_VELOCITY_MPS, vf, d.fast_velocity_mps),
+            (&crate::flags::G, g_mps2, super::Context::G_DEFAULT_MPS2),
+        ]);
+        who.check_coupled(
             value,
-            &format!("values with mu >= a/(g (T_s + 1e4 (T_s - T_f))), here {mu_min:.3e} > mu = {mu} (dimensionless): the block must reach its steady state within 1e4 periods of the slow speed a, slow duration T_s, fast duration T_f"),
-        ));
+            |_| false,
+            &format!("values with mu >= a/(g (T_s + 1e4 (T_s - T_f))), here {mu_min:.3e} > mu = {mu}"),
+            "the block must reach its steady state within 1e4 periods of the slow speed a, slow duration T_s, fast duration T_f",
+        )?;
     }
     let period = saw.period_s();
     let (c_lo, c_hi) = (0.01 / period, 1e4 / period);
-    let c = check(
-        "--viscous-c",
+    let c = VISCOUS_C.check_coupled(
         a.viscous_c,
         |c| c >= c_lo && c <= c_hi,
-        &format!("{c_lo:.4} <= c <= {c_hi:.4e} (1/s; 0.01/T to 1e4/T, T = {period} s)"),
+        &format!("{c_lo:.4} <= c <= {c_hi:.4e} (0.01/T to 1e4/T, T = {period} s)"),
+        VISCOUS_C.reason,
     )?;
     Ok(Scene {
         saw,

@@ -14,7 +14,7 @@
 //! orchestration.
 
 use super::{report_with_g, Context};
-use crate::error::{blame, check, num, Result};
+use crate::error::{num, Result};
 use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
@@ -114,11 +114,11 @@ pub fn validate(args: &Args, ctx: &Context) -> Result<Scene> {
     // 1.8e-3 at b = 1e-9 and Gamma_x = 1000); the arcsin-law claim's tolerance 1e-5
     // needs the drift V sin(pi b/2) above a few 1e-7 V: b >= 1e-6 (b = 0: the checks
     // use b = 0.01).
-    let bias = check(
-        "--bias",
+    let bias = BIAS.check_coupled(
         bias,
         |b| b == 0.0 || b >= BIAS_MIN,
-        "0 or 1e-6 <= value < 1 (fraction of mu m g): below 1e-6 the drift is within the rounding of the exact periodic solution",
+        &BIAS.range_text(),
+        BIAS.reason,
     )?;
     let g = super::check_g(ctx.g())?;
     let scene = Scene {
@@ -129,20 +129,27 @@ pub fn validate(args: &Args, ctx: &Context) -> Result<Scene> {
         bias,
     };
     let d: Args = super::default_args();
-    let flags = [
-        ("--amplitude-m", amp, d.amplitude_m),
-        ("--frequency-hz", freq, d.frequency_hz),
-        ("--mu", mu, d.mu),
-        ("--g-mps2", g, Context::G_DEFAULT_MPS2),
-    ];
-    let who = blame(&flags); // the condition couples four flags: name the one set
-    let value = flags.iter().find(|f| f.0 == who).map_or(amp, |f| f.1);
+    // the condition couples four flags: it names the one the user set
+    let (who, value) = crate::flags::blame(&[
+        (&AMPLITUDE_M, amp, d.amplitude_m),
+        (&FREQUENCY_HZ, freq, d.frequency_hz),
+        (&MU, mu, d.mu),
+        (&crate::flags::G, g, Context::G_DEFAULT_MPS2),
+    ]);
     let omega = 2.0 * std::f64::consts::PI * freq;
     let gx = scene.gamma_x(); // formula: Gamma_x = delta_x omega^2 / (mu g)
-    check(who, value, |_| gx >= GAMMA_X_MIN && gx * omega <= GAMMA_X_OMEGA_MAX, &format!(
-        "values giving {} <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= {} 1/s (here Gamma_x = {:.3e} and Gamma_x omega = {:.3e} 1/s): the fast-shaking claim needs sliding at 900 Gamma_x, the located stick-slip switches need Gamma_x omega x 1e-15 s <= 1e-9",
-        num(GAMMA_X_MIN), num(GAMMA_X_OMEGA_MAX), gx, gx * omega
-    ))?;
+    who.check_coupled(
+        value,
+        |_| gx >= GAMMA_X_MIN && gx * omega <= GAMMA_X_OMEGA_MAX,
+        &format!(
+            "values giving {} <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= {} 1/s (here Gamma_x = {:.3e} and Gamma_x omega = {:.3e} 1/s)",
+            num(GAMMA_X_MIN),
+            num(GAMMA_X_OMEGA_MAX),
+            gx,
+            gx * omega
+        ),
+        "the fast-shaking claim needs sliding at 900 Gamma_x, the located stick-slip switches need Gamma_x omega x 1e-15 s <= 1e-9",
+    )?;
     Ok(scene)
 }
 

@@ -31,7 +31,7 @@ pub mod work_precision;
 use super::Context;
 // the block's benchmark scene and the timed runs (`crate::scenes`), as `super::...` here
 use crate::scenes::{block as block_scene, measure};
-use crate::error::{check, Result};
+use crate::error::Result;
 use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
@@ -130,14 +130,14 @@ fn validate(a: &Args) -> Result<()> {
     FREQUENCY_HZ.check(a.frequency_hz)?;
     GAMMA.check(a.gamma)?;
     MU.check(a.mu)?;
-    check(
-        "--bias",
+    BIAS.check_coupled(
         a.bias,
         |b| b >= BIAS_MIN_TIMES_MU / a.mu && b <= BIAS_MAX,
         &format!(
-            "3e-3/mu = {:.3e} <= value <= 0.99 (dimensionless, F/(mu m g): the drift, ~0.12 m/s per unit F/(m g) = b mu here, must stay above the reference check's rounding floor, ~3e-15 m/s against its 1e-11 relative floor, so b mu >= 3e-3; closer to 1 the block sticks only in a sliver of each period, where rounding decides stick or slip and the runs part: 1.2e-3 at 0.999)",
+            "3e-3/mu = {:.3e} <= value <= 0.99",
             BIAS_MIN_TIMES_MU / a.mu
         ),
+        "F/(mu m g): the drift, ~0.12 m/s per unit F/(m g) = b mu here, must stay above the reference check's rounding floor, ~3e-15 m/s against its 1e-11 relative floor, so b mu >= 3e-3; closer to 1 the block sticks only in a sliver of each period, where rounding decides stick or slip and the runs part: 1.2e-3 at 0.999",
     )?;
     RESTITUTION.check(a.restitution)?;
     Ok(())

@@ -19,7 +19,7 @@ mod statements;
 pub use statements::{Statements, PRINTED};
 
 use super::Context;
-use crate::error::{Result, WorkbookError};
+use crate::error::Result;
 use crate::flags::stick::{self as stick_flags, StickFlags};
 use crate::flags::Flag;
 use crate::physics::domain::Interval;
@@ -114,16 +114,18 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
     let v = args.stick.resolve(&base)?;
     let m = TIP_MASS_KG.check(args.tip_mass_kg)?;
     let m_r = stick_flags::ROD_MASS_KG.check(args.rod_mass_kg)?;
-    if m + m_r < 1e-3 {
-        return Err(WorkbookError::bad_input(
-            "--rod-mass-kg",
-            m_r,
-            "m + m_r >= 1e-3 kg (kg): a lighter stick makes the pivot's time scale I_C/gamma shorter than the explicit integrator can follow at the drive's step",
-        ));
-    }
-    if m_r == 0.0 && v.damping == 0.0 && v.stiffness > 0.0 {
-        return Err(WorkbookError::bad_input("--damping", v.damping, "above 0 (N m s/rad) when --rod-mass-kg is 0: the massless rod's angle in flight needs the damper"));
-    }
+    stick_flags::ROD_MASS_KG.check_coupled(
+        m_r,
+        |m_r| m + m_r >= 1e-3,
+        "m + m_r >= 1e-3 kg",
+        "a lighter stick makes the pivot's time scale I_C/gamma shorter than the explicit integrator can follow at the drive's step",
+    )?;
+    stick_flags::DAMPING.check_coupled(
+        v.damping,
+        |d| d > 0.0 || m_r > 0.0 || v.stiffness == 0.0,
+        "above 0 when --rod-mass-kg is 0 and --stiffness above 0",
+        "the massless rod's angle in flight needs the damper",
+    )?;
     let dur = DURATION_S.check(
         args.duration_s
             .unwrap_or(if ctx.quick { 2.0 } else { 10.0 }),
@@ -135,13 +137,13 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
         rod_mass_kg: m_r,
         restitution: e,
     };
-    if m_r > 0.0 && v.damping == 0.0 && p.geometry().alpha() >= limit::ALPHA_SWITCH {
-        return Err(WorkbookError::bad_input(
-            "--damping",
-            v.damping,
-            "above 0 (N m s/rad) for a rod this light (alpha = M l_G^2/I_G >= 1e9): its impacts lose 9 digits, and without a damper chapter 6's model is no limit to replace them",
-        ));
-    }
+    let light = m_r > 0.0 && p.geometry().alpha() >= limit::ALPHA_SWITCH;
+    stick_flags::DAMPING.check_coupled(
+        v.damping,
+        |d| d > 0.0 || !light,
+        "above 0 for a rod this light (alpha = M l_G^2/I_G >= 1e9)",
+        "its impacts lose 9 digits, and without a damper chapter 6's model is no limit to replace them",
+    )?;
     Ok((p, dur))
 }
 
