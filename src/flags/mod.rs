@@ -1,18 +1,23 @@
 //! The declarative table of the chapters' physical flags: for each flag its name, what
-//! it sets, its unit, its accepted range, the reason for that range and its default per
-//! scene. One table drives
+//! it sets, its unit, its accepted range, the reason for that range, its default and,
+//! where the lab shows it, its control. One table drives
 //!
 //! - `--help`: the registry writes each table flag's help line from its entry
-//!   ([`Flag::help`]: what, unit, range, reason, default);
-//! - validation: a chapter checks a value with [`Flag::check`] (one line naming the
-//!   flag, the value, the range and the reason; exit 2);
-//! - `tests/fuzz.rs`: it draws values inside, at the ends of and just outside each range
-//!   from the registry's tables ([`crate::chapters::ChapterInfo::flags`]);
-//! - the lab: its sliders take their ends from chapter 6's entries (`/api/scenes`).
+//!   ([`with_help`], [`Flag::help`]: what, unit, range, reason, default), clap's own
+//!   default hidden: the default is printed once;
+//! - the defaults: `Args` takes a number from its entry ([`Flag::default_value`]);
+//! - validation: a chapter checks a value with [`Flag::check`], a range that depends on
+//!   other flags with [`Flag::check_coupled`] (one line naming the flag, the value, the
+//!   range and the reason; exit 2);
+//! - `tests/fuzz.rs` and `tests/cli.rs`: they draw values inside, at the ends of and
+//!   just outside each range, and run each chapter at its table's corners, from the
+//!   registry's tables (`crate::chapters::ChapterInfo::flags`);
+//! - the lab: its controls, their order, ends, scales and defaults ([`Control`],
+//!   [`main_run::LAB`], `/api/scenes`).
 //!
-//! Each chapter lists its table as `FLAGS` beside its `Args`; entries two chapters share
-//! live here ([`stick`], [`G`]), so that a second chapter reuses them instead of copying
-//! (no chapter imports another).
+//! Each chapter lists its table as `FLAGS` beside its `Args`; entries two users share
+//! live here ([`stick`], [`main_run`], [`G`]), so that a second chapter, or the lab,
+//! reuses them instead of copying (no chapter imports another).
 
 use crate::error::{Result, WorkbookError};
 use crate::physics::domain::Interval;
