@@ -7,10 +7,10 @@
 //! `cargo bench --bench numerics` (add `-- --quick` for a short run).
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use locomotion_workbook::chapters::speed_vs_accuracy::block_scene::BlockScene;
-use locomotion_workbook::chapters::speed_vs_accuracy::measure::{drift_block_model, drift_mj};
 use locomotion_workbook::numerics::hybrid::Options;
 use locomotion_workbook::numerics::ode::{Method, StepControl};
+use locomotion_workbook::scenes::block::BlockScene;
+use locomotion_workbook::scenes::measure::{drift_block_model, drift_mj};
 use std::hint::black_box;
 
 fn scene() -> BlockScene {
@@ -54,8 +54,8 @@ fn block(c: &mut Criterion) {
 }
 
 fn stick(c: &mut Criterion) {
-    use locomotion_workbook::chapters::speed_vs_accuracy::measure::stick_speed;
     use locomotion_workbook::physics::stick::{authors_scene, StickModel};
+    use locomotion_workbook::scenes::measure::stick_speed;
     let m = StickModel::new(authors_scene(10.0));
     let mut g = c.benchmark_group("stick_10_cycles");
     for tol in [1e-6, 1e-10] {

@@ -30,14 +30,12 @@
 //! Prints the wall times (minimum of repeats), their ratio and the difference of the
 //! mean speeds.
 
-use locomotion_workbook::chapters::speed_vs_accuracy::block_scene::BlockScene;
-use locomotion_workbook::chapters::speed_vs_accuracy::measure::{
-    drift_block_model, stick_speed, timed,
-};
 use locomotion_workbook::numerics::hybrid::Options;
 use locomotion_workbook::numerics::ode::{Method, StepControl};
 use locomotion_workbook::physics::stick::soft::run::{simulate_soft, SoftOutcome};
 use locomotion_workbook::physics::stick::{authors_scene, jamming_scene, StickModel, StickParams};
+use locomotion_workbook::scenes::block::BlockScene;
+use locomotion_workbook::scenes::measure::{drift_block_model, stick_speed, timed};
 use std::process::Command;
 
 #[path = "peers/soft_states.rs"]

@@ -193,13 +193,13 @@ async function main() {
       if (a0[2] === a1[2]) fail("the animation canvas did not change");
     });
 
-    // 4. one palette: the book's mode colours (src/plot PALETTE indexed by chapter 6's
+    // 4. one palette: the book's mode colours (src/plot PALETTE indexed by the scenes'
     // MODE_COLOUR), read from the source text, on the page and in the drawn timeline
     await section("palette", async () => {
       const plot = readFileSync("src/plot/mod.rs", "utf8");
       const pal = [...plot.slice(plot.indexOf("pub const PALETTE")).matchAll(/RGBColor\((\d+), (\d+), (\d+)\)/g)].slice(0, 8)
         .map((m) => `#${[m[1], m[2], m[3]].map((v) => Number(v).toString(16).padStart(2, "0")).join("")}`);
-      const gait = readFileSync("src/chapters/stick_state_machine/gait.rs", "utf8");
+      const gait = readFileSync("src/scenes/stick/mod.rs", "utf8");
       const idx = /MODE_COLOUR: \[usize; 4\] = \[(\d+), (\d+), (\d+), (\d+)\]/.exec(gait).slice(1).map(Number);
       const want = { F: pal[idx[0]], P: pal[idx[1]], L: pal[idx[2]], R: pal[idx[3]] };
       const got = await ev(`Object.fromEntries(Object.entries(MODES).map(([k, m]) => [k, m.color]))`);

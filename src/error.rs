@@ -170,17 +170,6 @@ pub fn num(x: f64) -> String {
     }
 }
 
-/// The flag to name in the error of a condition that combines several flags: the
-/// first one the user set (its value differs from the default), else the first.
-/// Each entry is `(flag, value, default)`.
-pub fn blame<'a>(flags: &[(&'a str, f64, f64)]) -> &'a str {
-    flags
-        .iter()
-        .find(|(_, v, d)| v != d)
-        .or(flags.first())
-        .map_or("<flags>", |f| f.0)
-}
-
 /// Parses a velocity pair `X,Y` (m/s) for clap; both parts must be finite numbers.
 pub fn parse_pair(s: &str) -> std::result::Result<[f64; 2], String> {
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
@@ -245,8 +234,6 @@ mod tests {
         assert!(b.to_string().contains("--duration-s") && !b.to_string().contains('\n'));
         let pipe: WorkbookError = std::io::Error::from(std::io::ErrorKind::BrokenPipe).into();
         assert_eq!((pipe.exit_code(), pipe.to_string()), (0, String::new()));
-        assert_eq!(blame(&[("--a", 1.0, 1.0), ("--b", 2.0, 3.0)]), "--b");
-        assert_eq!(blame(&[("--a", 1.0, 1.0), ("--b", 3.0, 3.0)]), "--a");
     }
 
     #[test]

@@ -10,7 +10,9 @@
 //! - [`numerics`]: integrators, event location, the hybrid driver. Knows nothing of
 //!   sticks or plates.
 //! - [`physics`]: models only (plates, friction, blocks, the stick). No I/O.
-//! - [`chapters`]: one file per chapter; composes physics and numerics into a report.
+//! - [`scenes`]: the document's scenes, the default and the authors' ones, and their
+//!   standard runs, below the chapters (used by chapters, lab, benchmarks and tests).
+//! - [`chapters`]: one folder per chapter; composes scenes, physics and numerics into a report.
 //! - [`report`], [`plot`], [`render`], [`cli`]: output.
 #![warn(missing_docs)]
 
@@ -27,4 +29,5 @@ pub mod physics;
 pub mod plot;
 pub mod render;
 pub mod report;
+pub mod scenes;
 pub mod sweep;

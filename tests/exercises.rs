@@ -368,10 +368,10 @@ fn chapter_6_limit_cycle() {
     use locomotion_workbook::chapters::stick_state_machine::limit_cycle::{
         options, H_FINE, NEWTON_TOL,
     };
-    use locomotion_workbook::chapters::stick_state_machine::poincare::{
+    use locomotion_workbook::physics::stick::{jamming_scene, Mode, StickModel};
+    use locomotion_workbook::scenes::stick::poincare::{
         jacobian, moduli, multipliers, newton, Difference, Point,
     };
-    use locomotion_workbook::physics::stick::{jamming_scene, Mode, StickModel};
 
     // LC.1: iterate the integrated stride map to its fixed point, difference it there.
     let (alpha, psi, l) = (18f64.to_radians(), 0.1, 1.0);

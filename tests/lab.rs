@@ -24,9 +24,10 @@ fn body(over: Value) -> Value {
 fn flags(b: &Value) -> Vec<String> {
     let mut argv = vec!["workbook".to_string(), "stick-state-machine".to_string()];
     for (k, v) in b.as_object().expect("an object") {
-        let (_, flag, _) = api::FIELDS.iter().find(|f| f.0 == k).expect("a field");
+        let fields = api::fields();
+        let f = fields.iter().find(|f| f.key == *k).expect("a field");
         let text = v.as_str().map_or(v.to_string(), str::to_string);
-        argv.push(flag.to_string());
+        argv.push(f.flag.clone());
         argv.push(text);
     }
     argv.extend(["--json", "--no-figures"].map(String::from));
@@ -339,9 +340,10 @@ fn no_request_body_panics_the_endpoint() {
         json!(u64::MAX),
         json!(i64::MIN),
     ];
-    let keys: Vec<&str> = api::FIELDS
+    let fields = api::fields();
+    let keys: Vec<&str> = fields
         .iter()
-        .map(|f| f.0)
+        .map(|f| f.key.as_str())
         .chain(["seq", "x", "a\nb"])
         .collect();
     let mut rng = Lcg(23);
@@ -421,17 +423,42 @@ fn the_events_download_is_the_clis_events_file() {
 }
 
 #[test]
-fn the_sliders_ends_are_the_flag_tables_ranges() {
-    // the page's sliders take their ends from /api/scenes `ranges`: chapter 6's table
-    let r = api::scenes()["ranges"].clone();
-    for f in locomotion_workbook::chapters::stick_state_machine::FLAGS {
-        let Some((key, _, _)) = api::FIELDS.iter().find(|(_, flag, _)| *flag == f.name) else {
-            continue;
-        };
-        assert_eq!(r[key]["min"].as_f64(), Some(f.range.lo), "{key}");
-        assert_eq!(r[key]["max"].as_f64(), Some(f.range.hi), "{key}");
-        assert_eq!(r[key]["max_open"].as_bool(), Some(f.range.hi_open), "{key}");
+fn the_pages_controls_are_the_flag_tables_entries() {
+    // the page builds its sliders and menus from /api/scenes `controls`: the flag
+    // table's lab entries, with their ranges (or the lab's own ends) and reasons
+    use locomotion_workbook::flags::{main_run, Scale};
+    let controls = api::scenes()["controls"].clone();
+    let controls = controls.as_array().expect("a list");
+    let shown: Vec<_> = main_run::LAB
+        .iter()
+        .filter(|f| f.control.is_some())
+        .collect();
+    assert_eq!(controls.len(), shown.len());
+    let fields = api::fields();
+    for (c, f) in controls.iter().zip(shown) {
+        let ctl = f.control.expect("a control");
+        let key = c["key"].as_str().expect("a key");
+        assert_eq!(c["flag"], f.name, "{key}");
+        let (lo, hi) = ctl.ends.unwrap_or((f.range.lo, f.range.hi));
+        assert_eq!(c["min"].as_f64(), Some(lo), "{key}");
+        assert_eq!(c["max"].as_f64(), Some(hi), "{key}");
+        assert_eq!(c["reason"], f.reason, "{key}");
+        // every control but the rod's is a field of a request, required as it is shown
+        if key != api::ROD_MASS_FIELD {
+            let field = fields.iter().find(|x| x.key == key).expect("a field");
+            assert_eq!(
+                api::required(field),
+                !matches!(ctl.scale, Scale::Menu(_)),
+                "{key}"
+            );
+        }
     }
-    assert_eq!(r["mu"]["max"].as_f64(), Some(2.0));
-    assert_eq!(r["theta0_rad"]["min_open"].as_bool(), Some(true));
+    let by = |k: &str| controls.iter().find(|c| c["key"] == k).expect(k).clone();
+    assert_eq!(by("mu")["max"].as_f64(), Some(2.0));
+    assert_eq!(by("theta0_rad")["min_open"].as_bool(), Some(true));
+    assert_eq!(by("rtol")["default"].as_f64(), Some(1e-10));
+    assert_eq!(by("duration_s")["own"].as_bool(), Some(true));
+    // the menus' choices are the scenes' own
+    let m = &api::scenes()["choices"]["method"];
+    assert_eq!(m[0]["name"], "dop853");
 }

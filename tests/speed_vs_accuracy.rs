@@ -15,15 +15,13 @@
 
 use crate::common;
 
-use locomotion_workbook::chapters::speed_vs_accuracy::block_scene::BlockScene;
 use locomotion_workbook::chapters::speed_vs_accuracy::economy::flight_map_drift;
-use locomotion_workbook::chapters::speed_vs_accuracy::measure::{
-    drift_block_model, drift_mj, window, Measured,
-};
 use locomotion_workbook::numerics::hybrid::{Options, Transition};
 use locomotion_workbook::numerics::ode::StepControl;
 use locomotion_workbook::physics::block::{BlockMode, BlockSystem};
 use locomotion_workbook::physics::plate::PlateMotion;
+use locomotion_workbook::scenes::block::BlockScene;
+use locomotion_workbook::scenes::measure::{drift_block_model, drift_mj, window, Measured};
 use serde_json::Value;
 
 fn run(args: &[&str]) -> (i32, String, String) {

@@ -626,10 +626,10 @@ use locomotion_workbook::chapters::stick_state_machine::cycle_claims::{
 use locomotion_workbook::chapters::stick_state_machine::limit_cycle::{
     analyse, max_difference, spectral_radius, Analysis, H_FINE,
 };
-use locomotion_workbook::chapters::stick_state_machine::poincare::{
+use locomotion_workbook::report::Verdict;
+use locomotion_workbook::scenes::stick::poincare::{
     distance, jacobian, multipliers, newton, settle, static_start, strobe, Difference, Gait,
 };
-use locomotion_workbook::report::Verdict;
 
 /// The analyses of the authors' and the self-locking scene, computed once.
 fn limit_cycles() -> &'static [Analysis; 2] {

@@ -147,23 +147,15 @@ impl ChapterInfo {
             s if s.contains(',') => format!("sections {s}"),
             s => format!("section {s}"),
         };
-        let table = self.flags;
-        self.chapter
+        let cmd = self
+            .chapter
             .args(clap::Command::new(self.id))
             .about(format!(
                 "Ch. {} ({sections}): {}",
                 self.number, self.question
             ))
-            .long_about(None)
-            .mut_args(move |a| {
-                let entry = a
-                    .get_long()
-                    .and_then(|l| crate::flags::find(table, &format!("--{l}")));
-                match entry {
-                    Some(f) => a.help(f.help()),
-                    None => a,
-                }
-            })
+            .long_about(None);
+        crate::flags::with_help(cmd, self.flags)
     }
 
     /// Runs it with its default flags.

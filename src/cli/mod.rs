@@ -206,15 +206,13 @@ fn dispatch(cli: &Cli, out: &mut dyn Write, err: &mut dyn Write) -> error::Resul
     }
     let (info, report) = match &cli.command {
         Command::List => return list(cli.json, out),
-        Command::All => return run_all(cli, &ctx, out),
+        Command::All => return run_all(cli, &ctx, out, err),
         Command::Render { check, dir } => return render::render(dir, *check, out),
         Command::Lab(a) => return crate::lab::run(a, out),
         Command::Chapter(c) => (c.chapter, c.chapter.chapter.run(&c.matches, &ctx)?),
     };
     let report = checked(&report)?;
-    for note in &report.notes {
-        let _ = writeln!(err, "note: {note}");
-    }
+    print_notes(report, None, err);
     if cli.json {
         writeln!(out, "{}", report.to_json())?;
     } else {
@@ -261,7 +259,23 @@ fn check_all_g(g: f64) -> error::Result<()> {
     }
 }
 
-fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> {
+/// A report's notes for the reader, one `note: ` line each on stderr (under `all`,
+/// each line names its chapter: `note: stick-state-machine: ...`).
+fn print_notes(report: &ChapterReport, chapter: Option<&str>, err: &mut dyn Write) {
+    for note in &report.notes {
+        let _ = match chapter {
+            Some(id) => writeln!(err, "note: {id}: {note}"),
+            None => writeln!(err, "note: {note}"),
+        };
+    }
+}
+
+fn run_all(
+    cli: &Cli,
+    ctx: &Context,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> error::Result<i32> {
     if let Some(g) = ctx.g_mps2 {
         check_all_g(g)?;
     }
@@ -276,6 +290,7 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
         }
         let r = c.run_default(&c_ctx)?;
         checked(&r)?;
+        print_notes(&r, Some(c.id), err); // the notes of each chapter, as its own command prints them
         if !cli.json {
             writeln!(out, "{}", screen::lead(&r, c))?;
             if cli.claims {
@@ -300,5 +315,24 @@ fn run_all(cli: &Cli, ctx: &Context, out: &mut dyn Write) -> error::Result<i32> 
 impl From<std::fmt::Error> for WorkbookError {
     fn from(e: std::fmt::Error) -> Self {
         WorkbookError::Io(e.to_string())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn notes_are_printed_one_line_each_and_under_all_with_their_chapter() {
+        let mut r = ChapterReport::new("a-chapter", "t", "4");
+        r.note("first");
+        r.note("second");
+        let mut err = Vec::new();
+        print_notes(&r, None, &mut err);
+        print_notes(&r, Some("a-chapter"), &mut err);
+        assert_eq!(
+            String::from_utf8(err).unwrap(),
+            "note: first\nnote: second\nnote: a-chapter: first\nnote: a-chapter: second\n"
+        );
     }
 }

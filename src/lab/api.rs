@@ -1,18 +1,21 @@
 //! The lab's request: a JSON object of parameters, turned into the flags of
-//! `workbook stick-state-machine` and validated by the CLI's own clap definitions and
-//! range checks ([`crate::chapters::stick_state_machine::setup`]), so that a value the
+//! `workbook stick-state-machine` (the registered chapter whose flag table is the main
+//! run's, [`crate::flags::main_run`]) and validated by the CLI's own clap definitions
+//! and range checks ([`RunFlags::setup`]), so that a value the
 //! CLI refuses is refused here with the CLI's own one-line reason. Anything else wrong
 //! with a request (malformed JSON, a missing or unknown field, a value of the wrong
 //! type, a body too large) is an [`ApiError`] with HTTP status 400 or 413 and one line
 //! saying why; nothing here panics on any input.
 
 use super::http::clip;
-use crate::chapters::stick_state_machine::{self as ssm, main_run};
+use crate::chapters::{ChapterInfo, CHAPTERS};
+use crate::flags::main_run::{RunFlags, FLAGS};
+use crate::flags::stick::ROD_MASS_KG;
 use crate::flags::Flag;
 use crate::grammar::{Cli, Command};
 use crate::numerics::hybrid::Options;
-use crate::physics::domain::Interval;
 use crate::physics::stick::StickParams;
+use crate::scenes::stick::main_run::{self, Settings};
 use clap::FromArgMatches;
 use serde_json::Value;
 
@@ -29,27 +32,58 @@ const MAX_FIELD_CHARS: usize = 64;
 /// second of work at the default rtol. Longer runs: the CLI.
 pub const MAX_CYCLES: f64 = 1000.0;
 
-/// The request's fields: JSON key, the CLI flag it becomes, and whether it is required.
-/// Every physical parameter is required, so that a page never runs on a value it did
-/// not show; the run's options may be left to the CLI's defaults.
-pub const FIELDS: [(&str, &str, bool); 16] = [
-    ("scene", "--scene", true),
-    ("theta0_rad", "--theta0-rad", true),
-    ("mu", "--mu", true),
-    ("gamma", "--gamma", true),
-    ("frequency_hz", "--frequency-hz", true),
-    ("stiffness", "--stiffness", true),
-    ("damping", "--damping", true),
-    ("length_m", "--length-m", true),
-    ("mass_kg", "--mass-kg", true),
-    ("duration_s", "--duration-s", true),
-    ("rtol", "--rtol", false),
-    ("method", "--method", false),
-    ("collision_angle", "--collision-angle", false),
-    ("rules", "--rules", false),
-    ("start", "--start", false),
-    ("g_mps2", "--g-mps2", false),
-];
+/// The chapter the lab is a browser for: the registered chapter whose flag table is the
+/// stick's main run's ([`FLAGS`]), found in the registry (the lab names no chapter).
+pub fn chapter() -> Result<&'static ChapterInfo, ApiError> {
+    CHAPTERS
+        .iter()
+        .find(|c| c.flags == FLAGS)
+        .ok_or_else(|| internal("no registered chapter runs the stick's main run"))
+}
+
+/// One field of a request: its JSON key, the CLI flag it becomes, and whether it is
+/// required.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Field {
+    /// The JSON key: the flag's name without `--`, `_` for `-` (`theta0_rad`).
+    pub key: String,
+    /// The flag as typed (`--theta0-rad`).
+    pub flag: String,
+}
+
+/// The request's fields, from the chapter's own flags (its subcommand, clap's view of
+/// [`RunFlags`]): every flag that takes a value except files, and `--g-mps2`.
+/// [`required`] says which a request must carry.
+pub fn fields() -> Vec<Field> {
+    let Ok(c) = chapter() else {
+        return Vec::new();
+    };
+    let cmd = c.subcommand();
+    let mut out: Vec<Field> = cmd
+        .get_arguments()
+        .filter(|a| a.get_action().takes_values())
+        .filter(|a| a.get_value_hint() != clap::ValueHint::FilePath)
+        .filter_map(|a| a.get_long())
+        .map(|l| Field {
+            key: l.replace('-', "_"),
+            flag: format!("--{l}"),
+        })
+        .collect();
+    out.push(Field {
+        key: "g_mps2".into(),
+        flag: "--g-mps2".into(),
+    });
+    out
+}
+
+/// Whether a request must carry `field`: the scene and every physical flag the page shows
+/// as a control (the table's entries with a lab control), so that a page never runs on
+/// a value it did not show; the run's options may be left to the CLI's defaults.
+pub fn required(field: &Field) -> bool {
+    field.flag == "--scene"
+        || crate::flags::find(FLAGS, &field.flag)
+            .is_some_and(|f| f.control.is_some_and(|c| c.required))
+}
 
 /// The lab's own field: a sequence number chosen by the page, echoed in the answer so
 /// that the page can drop the answer to a request it has since superseded.
@@ -57,29 +91,14 @@ pub const SEQ_FIELD: &str = "seq";
 
 /// The lab's field for chapter 8's rod: its mass (kg), optional (absent or 0: chapter
 /// 6's massless rod). Not a flag of `workbook stick-state-machine`: the lab checks it
-/// against its own entry [`ROD_MASS_KG`] and runs the rod with the physics layer
-/// ([`crate::physics::stick_inertia`]).
+/// against chapter 8's entry [`ROD_MASS_KG`] (shared in the flag table) and runs the
+/// rod with the physics layer ([`crate::physics::stick_inertia`]).
 pub const ROD_MASS_FIELD: &str = "rod_mass_kg";
 
-/// The rod's mass in the lab: chapter 8's flag `--rod-mass-kg` (the same range and
-/// reason, so that the lab's line for a value out of it is the CLI's), with the lab's
-/// own lower end above 0, [`ROD_MASS_MIN_KG`].
-pub const ROD_MASS_KG: Flag = Flag::new(
-    "--rod-mass-kg",
-    "Mass of the rod, uniform along C-P (0: chapter 6's massless rod)",
-    "kg",
-    Interval::closed(0.0, 10.0),
-)
-.why("0 allowed (a uniform stick, or chapter 6's massless rod) up to 10 x the authors' 1 kg");
-
-/// Why the lab runs no rod lighter than [`ROD_MASS_MIN_KG`] but 0: lighter rods lose
-/// `log10(alpha)` digits in their impacts (`alpha = M l_G^2/I_G ~ 3 M/m_r`), and
-/// chapter 8's CLI runs them as a singular-perturbation composite, which has no
-/// trajectory for the lab to animate.
+/// Why the lab runs no rod lighter than [`ROD_MASS_MIN_KG`] but 0 (see there).
 const WHY_ROD_MIN: &str = "0, or 1e-4 to 10 (kg) in the lab: lighter rods lose digits in their impacts and chapter 8's CLI (workbook stick-with-inertia) runs them as a composite, with no trajectory to animate";
 
-/// The smallest rod mass above 0 the lab runs (kg); see [`ROD_MASS_KG`].
-pub const ROD_MASS_MIN_KG: f64 = 1e-4;
+pub use crate::flags::stick::ROD_MASS_MIN_KG;
 
 /// A refused request: the HTTP status and one line saying why.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -108,8 +127,10 @@ impl ApiError {
 /// A validated run request.
 #[derive(Debug, Clone)]
 pub struct RunRequest {
-    /// The subcommand's flags as the CLI parsed them.
-    pub args: ssm::Args,
+    /// The chapter whose flags the request became.
+    pub chapter: &'static ChapterInfo,
+    /// The main run's settings as the CLI parsed them.
+    pub settings: Settings,
     /// The validated parameters.
     pub params: StickParams,
     /// The validated simulated time (s).
@@ -136,7 +157,8 @@ pub fn to_argv(body: &[u8]) -> Result<(Vec<String>, Option<u64>), ApiError> {
         ));
     };
     let mut seq = None;
-    let mut argv = vec!["workbook".to_string(), ssm::ID.to_string()];
+    let mut argv = vec!["workbook".to_string(), chapter()?.id.to_string()];
+    let fields = fields();
     for (key, value) in &obj {
         if key == ROD_MASS_FIELD {
             continue; // the lab's own field, read by `rod_mass`
@@ -147,8 +169,8 @@ pub fn to_argv(body: &[u8]) -> Result<(Vec<String>, Option<u64>), ApiError> {
             })?);
             continue;
         }
-        let Some((_, flag, _)) = FIELDS.iter().find(|(k, _, _)| k == key) else {
-            let known: Vec<&str> = FIELDS.iter().map(|f| f.0).collect();
+        let Some(Field { flag, .. }) = fields.iter().find(|f| f.key == *key) else {
+            let known: Vec<&str> = fields.iter().map(|f| f.key.as_str()).collect();
             return Err(ApiError::bad(format!(
                 "unknown field `{}`: the fields are {}, seq, rod_mass_kg",
                 clip(key),
@@ -157,13 +179,13 @@ pub fn to_argv(body: &[u8]) -> Result<(Vec<String>, Option<u64>), ApiError> {
         };
         argv.push(format!("{flag}={}", field_text(key, value)?));
     }
-    if let Some((key, flag, _)) = FIELDS
+    if let Some(Field { key, flag }) = fields
         .iter()
-        .find(|(k, _, req)| *req && !obj.contains_key(*k))
+        .find(|f| required(f) && !obj.contains_key(&f.key))
     {
         return Err(ApiError::bad(format!(
             "missing field `{key}` (the flag {flag} of workbook {})",
-            ssm::ID
+            chapter()?.id
         )));
     }
     Ok((argv, seq))
@@ -207,16 +229,17 @@ pub fn parse_run(body: &[u8]) -> Result<RunRequest, ApiError> {
         .try_get_matches_from(&argv)
         .map_err(|e| ApiError::bad(clap_line(&e)))?;
     let cli = Cli::from_arg_matches(&matches).map_err(|e| ApiError::bad(clap_line(&e)))?;
-    let args = match &cli.command {
-        Command::Chapter(c) if c.chapter.id == ssm::ID => {
-            ssm::Args::from_arg_matches(&c.matches).map_err(|e| ApiError::bad(clap_line(&e)))?
+    let chapter = chapter()?;
+    let flags = match &cli.command {
+        Command::Chapter(c) if c.chapter == chapter => {
+            RunFlags::from_arg_matches(&c.matches).map_err(|e| ApiError::bad(clap_line(&e)))?
         }
         _ => return Err(internal("the request did not parse as the stick's chapter")),
     };
-    let args = &args;
     let ctx = cli.context().map_err(|e| ApiError::bad(e.to_string()))?;
-    let (params, duration_s, opts) =
-        ssm::setup(args, &ctx).map_err(|e| ApiError::bad(e.to_string()))?;
+    let (params, duration_s, opts) = flags
+        .setup(ctx.g_mps2, ctx.quick)
+        .map_err(|e| ApiError::bad(e.to_string()))?;
     main_run::check_work(&params, duration_s, false).map_err(|e| ApiError::bad(e.to_string()))?;
     let cycles = duration_s * params.frequency_hz(); // formula: drive cycles f t
     if cycles > MAX_CYCLES {
@@ -226,12 +249,13 @@ pub fn parse_run(body: &[u8]) -> Result<RunRequest, ApiError> {
             crate::error::num(params.frequency_hz()),
             crate::error::num(duration_s),
             crate::error::num(cycles.round()),
-            ssm::ID
+            chapter.id
         )));
     }
     let rod_mass_kg = rod_mass(body, &params)?;
     Ok(RunRequest {
-        args: args.clone(),
+        chapter,
+        settings: flags.settings(),
         params,
         duration_s,
         opts,
@@ -293,17 +317,20 @@ pub fn internal(why: &str) -> ApiError {
 }
 
 /// The scenes' values as request fields (`{"jamming": {...}, "authors": {...}}`): the
-/// page's presets, taken from the chapter's own scenes.
+/// page's presets, taken from the scenes themselves ([`crate::scenes::stick::Scene`]);
+/// with the page's controls ([`controls`]), the choices of its menus and the modes'
+/// colours.
 pub fn scenes() -> Value {
-    use ssm::Scene;
-    let one = |scene: Scene, name: &str| {
-        let p = ssm::scene_params(scene, None);
+    use crate::scenes::stick::Scene;
+    use crate::scenes::{round, Choice};
+    let one = |scene: Scene| {
+        let p = scene.params(None);
         serde_json::json!({
-            "scene": name,
-            "theta0_rad": ssm::round(p.theta0_rad, 10),
+            "scene": scene.name(),
+            "theta0_rad": round(p.theta0_rad, 10),
             "mu": p.mu,
-            "gamma": ssm::round(p.gamma_accel(), 12),
-            "frequency_hz": ssm::round(p.frequency_hz(), 12),
+            "gamma": round(p.gamma_accel(), 12),
+            "frequency_hz": round(p.frequency_hz(), 12),
             "stiffness": p.stiffness_nm_per_rad,
             "damping": p.damping_nms_per_rad,
             "length_m": p.length_m,
@@ -311,22 +338,37 @@ pub fn scenes() -> Value {
             "g_mps2": p.g_mps2,
         })
     };
-    serde_json::json!({
-        "jamming": one(Scene::Jamming, "jamming"),
-        "authors": one(Scene::Authors, "authors"),
-        "ranges": ranges(),
-        "mode_colours": mode_colours(),
-    })
+    let mut o = serde_json::Map::new();
+    for &s in Scene::ALL {
+        o.insert(s.name().to_string(), one(s));
+    }
+    o.insert("controls".into(), controls());
+    o.insert("choices".into(), choices());
+    o.insert("mode_colours".into(), mode_colours());
+    Value::Object(o)
 }
 
-/// The modes' colours of the book's figures and GIFs (chapter 6's `gait::mode_colour`,
-/// the Okabe-Ito palette of [`crate::plot::PALETTE`]), by mode letter and name: the one
+/// The choices of the page's menus, by field: each value's name and description.
+pub fn choices() -> Value {
+    use crate::scenes::stick::{ContactMethod, Scene};
+    use crate::scenes::Choice;
+    fn list<T: Choice>() -> Value {
+        T::ALL
+            .iter()
+            .map(|c| serde_json::json!({"name": c.name(), "about": c.about()}))
+            .collect()
+    }
+    serde_json::json!({ "scene": list::<Scene>(), "method": list::<ContactMethod>() })
+}
+
+/// The modes' colours of the book's figures and GIFs (the scenes' `MODE_COLOUR`, the
+/// Okabe-Ito palette of [`crate::plot::PALETTE`]), by mode letter and name: the one
 /// palette of the book and the lab.
 pub fn mode_colours() -> Value {
     use crate::physics::stick::Mode;
     let mut o = serde_json::Map::new();
     for m in Mode::ALL {
-        let c = ssm::gait::mode_colour(m);
+        let c = crate::plot::color(crate::scenes::stick::MODE_COLOUR[m.index()]);
         o.insert(
             m.letter().to_string(),
             serde_json::json!({
@@ -338,26 +380,40 @@ pub fn mode_colours() -> Value {
     Value::Object(o)
 }
 
-/// One slider's ends as the page reads them: the flag's range, unit and reason.
-fn slider_ends(f: &Flag) -> Value {
+/// One control as the page reads it: its field, flag, symbol, unit, label, scale and
+/// ends (the flag's range, or the lab's own), the range as text with its reason, and
+/// its default where the table holds one.
+fn control_json(f: &Flag, c: &crate::flags::Control) -> Value {
+    use crate::flags::{DefaultValue, Scale};
     let r = f.range;
+    let (min, max, own) = match c.ends {
+        Some((lo, hi)) => (lo, hi, true),
+        None => (r.lo, r.hi, false),
+    };
+    let (kind, step, lo, values): (&str, Option<f64>, Option<f64>, &[f64]) = match c.scale {
+        Scale::Linear(step) => ("linear", Some(step), None, &[]),
+        Scale::Log(lo) => ("log", None, lo, &[]),
+        Scale::Menu(v) => ("menu", None, None, v),
+    };
+    let key = f.name.trim_start_matches("--").replace('-', "_");
     serde_json::json!({
-        "min": r.lo, "max": r.hi, "min_open": r.lo_open, "max_open": r.hi_open,
-        "unit": f.unit, "range": f.range_text(), "reason": f.reason,
+        "key": key, "flag": f.name, "name": c.symbol, "help": c.label,
+        "unit": if f.unit == "1" { "" } else { f.unit },
+        "scale": kind, "step": step, "lo": lo, "zero": lo.is_some(), "values": values,
+        "min": min, "max": max, "min_open": r.lo_open && !own, "max_open": r.hi_open && !own,
+        "own": own, "required": c.required, "rod": key == ROD_MASS_FIELD,
+        "range": f.range_text(), "reason": f.reason,
+        "default": match f.default { DefaultValue::Value(v) => Some(v), _ => None },
     })
 }
 
-/// The sliders' ends, per request field: chapter 6's flag table ([`ssm::FLAGS`], the
-/// CLI's ranges with their reasons).
-pub fn ranges() -> Value {
-    let mut o = serde_json::Map::new();
-    o.insert(ROD_MASS_FIELD.to_string(), slider_ends(&ROD_MASS_KG));
-    for (key, flag, _) in FIELDS {
-        if let Some(f) = crate::flags::find(ssm::FLAGS, flag) {
-            o.insert(key.to_string(), slider_ends(f));
-        }
-    }
-    Value::Object(o)
+/// The page's controls, in its order: the flag table's lab entries
+/// ([`crate::flags::main_run::LAB`]), each with its control ([`crate::flags::Control`]).
+pub fn controls() -> Value {
+    crate::flags::main_run::LAB
+        .iter()
+        .filter_map(|f| f.control.map(|c| control_json(f, &c)))
+        .collect()
 }
 
 #[cfg(test)]
@@ -411,6 +467,16 @@ mod tests {
             "{}",
             e.reason
         );
-        assert_eq!(ranges()["rod_mass_kg"]["max"], 10.0);
+        let rod = controls()
+            .as_array()
+            .expect("controls")
+            .iter()
+            .find(|c| c["key"] == "rod_mass_kg")
+            .cloned()
+            .expect("the rod's control");
+        assert_eq!(
+            (rod["max"].as_f64(), rod["lo"].as_f64()),
+            (Some(10.0), Some(ROD_MASS_MIN_KG))
+        );
     }
 }

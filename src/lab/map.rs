@@ -1,11 +1,12 @@
 //! The lab's (theta_0, mu) speed map: chapter 6's map (the late mean speed of C after a
-//! start transient, the chapter's own cell code, `main_run::map_cell_speed`) on a coarse
+//! start transient, the scene's own cell code, `main_run::map_cell_speed`) on a coarse
 //! grid over the chapter's ranges, for the scene of the request with its theta_0 and mu
 //! swept. Each map is computed once per scene and kept (the last [`KEPT`] scenes), so a
 //! click on the map or a move of the theta_0 or mu slider costs nothing.
 
 use super::api::RunRequest;
-use crate::chapters::stick_state_machine::{main_run, round};
+use crate::scenes::round;
+use crate::scenes::stick::main_run;
 use crate::sweep::linspace;
 use rayon::prelude::*;
 use serde_json::{json, Value};

@@ -3,27 +3,15 @@
 // -> animation, numbers, timeline, stroboscope, tasks; POST /api/map -> the (theta_0, mu)
 // speed map. The drawing is in page-draw.js; assets.rs joins the two and calls start().
 
-// `log`: a logarithmic slider from `lo` (with `zero`: a stop at 0 at its left end);
-// the ends otherwise come from chapter 6's flag table (/api/scenes `ranges`).
-const PARAMS = [
-  { key: "theta0_rad", name: "θ₀", unit: "rad", min: 0, max: 1.5, step: 0.005, help: "spring rest angle from the vertical" },
-  { key: "mu", name: "μ", unit: "", min: 0, max: 2, step: 0.01, help: "friction coefficient at the foot C" },
-  { key: "gamma", name: "Γ", unit: "", min: 0, max: 50, log: true, lo: 0.1, zero: true, help: "peak plate acceleration over g" },
-  { key: "frequency_hz", name: "f", unit: "Hz", min: 1, max: 1000, log: true, help: "plate frequency" },
-  { key: "stiffness", name: "k", unit: "N m/rad", min: 0, max: 100, step: 0.5, help: "hinge spring" },
-  { key: "damping", name: "γ", unit: "N m s/rad", min: 0, max: 0.1, step: 0.0005, help: "hinge damper" },
-  { key: "length_m", name: "L", unit: "m", min: 0.015, max: 1.5, log: true, help: "rod length" },
-  { key: "mass_kg", name: "m", unit: "kg", min: 0.1, max: 10, log: true, help: "tip mass at P" },
-  { key: "rod_mass_kg", name: "m_r", unit: "kg", min: 0, max: 10, log: true, lo: 1e-4, zero: true, help: "rod's own mass (chapter 8); 0: the massless rod", ch8: true },
-  { key: "duration_s", name: "duration", unit: "s", min: 0.2, max: 10, step: 0.1, help: "simulated time", own: true },
-];
+// The sliders (and their order, ends, scales, symbols and defaults) come from the flag
+// table: /api/scenes `controls` (src/flags, `Flag::shown_in_lab`); filled in start().
+// A control: `log` a logarithmic slider from `lo` (with `zero`: a stop at 0 at its left
+// end); `own` the lab's own ends; `rod` chapter 8's rod mass.
+let PARAMS = [];
 const LOG_STEPS = 1000; // positions of a logarithmic slider (0.3 % of a decade each at 3 decades)
 const ZERO_STOP = 25; // positions of the stop at 0 left of a logarithmic slider
-const FLAG_OF = {
-  theta0_rad: "--theta0-rad", mu: "--mu", gamma: "--gamma", frequency_hz: "--frequency-hz",
-  stiffness: "--stiffness", damping: "--damping", length_m: "--length-m", mass_kg: "--mass-kg",
-  rod_mass_kg: "--rod-mass-kg", duration_s: "--duration-s", rtol: "--rtol", method: "--method", scene: "--scene",
-};
+// request field -> flag as typed (from the controls, plus the menus); filled in start()
+const FLAG_OF = { method: "--method", scene: "--scene" };
 // the book's mode colours (chapter 6's gait::mode_colour, the Okabe-Ito palette of
 // src/plot), replaced at start-up by /api/scenes `mode_colours`, the one source
 const MODES = {
@@ -78,7 +66,7 @@ function buildSliders() {
   const box = $("sliders");
   for (const p of PARAMS) {
     const div = document.createElement("div");
-    div.className = p.ch8 ? "param ch8" : "param";
+    div.className = p.rod ? "param ch8" : "param";
     const [mn, mx, st] = p.log ? [p.zero ? -ZERO_STOP : 0, LOG_STEPS, 1] : [p.min, p.max, p.step];
     div.innerHTML = `<div class="top"><label for="f-${p.key}"><span class="name">${p.name}</span>` +
       `<span class="unit">${p.unit}</span>${p.log ? '<span class="scale">log scale</span>' : ""}</label>` +
@@ -86,6 +74,7 @@ function buildSliders() {
       `<input type="range" id="s-${p.key}" min="${mn}" max="${mx}" step="${st}" aria-label="${p.name}">` +
       `<div class="help">${p.help}</div>`;
     box.appendChild(div);
+    div.querySelector(`#s-${p.key}`).title = p.title;
     const field = div.querySelector(`#f-${p.key}`);
     const slider = div.querySelector(`#s-${p.key}`);
     slider.addEventListener("input", () => {
@@ -101,21 +90,32 @@ function buildSliders() {
   }
 }
 
-// The sliders' ends from the flag table; an open end stays one step inside.
-function applyRanges(ranges) {
-  for (const p of PARAMS) {
-    const r = ranges && ranges[p.key];
-    if (!r || p.own) continue;
-    const s = $(`s-${p.key}`);
-    if (p.log) {
-      p.min = r.min_open ? r.min * 1.001 : r.min;
-      p.max = r.max_open ? r.max * 0.999 : r.max;
-    } else {
-      s.min = r.min_open ? r.min + p.step : r.min;
-      s.max = r.max_open ? r.max - p.step : r.max;
+// The page's controls from the flag table: the sliders, and the menus (rtol's values,
+// the integrators); an open end stays one step inside.
+function controlsFromTable(controls, choices) {
+  PARAMS = [];
+  for (const c of controls) {
+    FLAG_OF[c.key] = c.flag;
+    if (c.scale === "menu") {
+      $(c.key).innerHTML = c.values.map((v) => `<option>${v.toExponential()}</option>`).join("");
+      $(c.key).title = `${c.range} (${c.unit || "1"}): ${c.reason}`;
+      continue;
     }
-    s.title = `${r.range} (${r.unit}): ${r.reason}`;
+    const p = { key: c.key, name: c.name, unit: c.unit, help: c.help, log: c.scale === "log", own: c.own, rod: c.rod };
+    if (p.log) {
+      p.lo = c.lo; p.zero = c.zero;
+      p.min = c.min_open ? c.min * 1.001 : c.min;
+      p.max = c.max_open ? c.max * 0.999 : c.max;
+    } else {
+      p.step = c.step;
+      p.min = c.min_open ? c.min + c.step : c.min;
+      p.max = c.max_open ? c.max - c.step : c.max;
+    }
+    p.title = `${c.range} (${c.unit || "1"}): ${c.reason}`;
+    p.default = c.default;
+    PARAMS.push(p);
   }
+  $("method").innerHTML = choices.method.map((m) => `<option value="${m.name}">${m.about.split(":")[0]}</option>`).join("");
 }
 
 function setValue(key, text) {
@@ -483,19 +483,19 @@ function applyPalette(c) {
 }
 
 async function start() {
-  buildSliders();
   buildTasks();
   try {
     lab.scenes = await (await fetch("/api/scenes")).json();
-    applyRanges(lab.scenes.ranges);
+    controlsFromTable(lab.scenes.controls, lab.scenes.choices);
     applyPalette(lab.scenes.mode_colours);
   } catch (e) {
     showError(`the lab does not answer: is \`workbook lab\` still running? (${e.message})`);
     return;
   }
+  buildSliders();
   legend();
-  lab.values.method = "dop853";
-  lab.values.rtol = "1e-10";
+  lab.values.method = lab.scenes.choices.method[0].name;
+  lab.values.rtol = String(lab.scenes.controls.find((c) => c.key === "rtol").default);
   lab.values.duration_s = "2";
   lab.values.rod_mass_kg = "0";
   readUrl();

@@ -1,5 +1,5 @@
-//! One lab run: the chapter's main run (the code of `workbook stick-state-machine`,
-//! [`crate::chapters::stick_state_machine::main_run`]) with its trajectory sampled into
+//! One lab run: the scene's main run (the code of `workbook stick-state-machine`,
+//! [`crate::scenes::stick::main_run`]) with its trajectory sampled into
 //! animation frames. The answer carries the CLI's report (`params` and `results`, the
 //! `--json` format without the claims, which judge the document's own scenes) and the
 //! CLI's `--events` CSV, so that the page's downloads are the CLI's files. Added for
@@ -7,12 +7,13 @@
 //! section and multipliers) and chapter 8's rod with its massless ghost ([`rod_view`]).
 
 use super::api::RunRequest;
-use crate::chapters::stick_state_machine::{self as ssm, main_run, poincare, round};
 use crate::physics::stick::run::{initial_state, simulate_stick, Recording, RunSummary, Sample};
 use crate::physics::stick::{StickModel, StickParams, TH, XC, ZC};
 use crate::physics::stick_inertia::limit;
 use crate::physics::stick_inertia::run::{run_from_rest, InertiaOutcome, InertiaRun};
 use crate::physics::stick_inertia::{InertiaModel, InertiaParams};
+use crate::scenes::round;
+use crate::scenes::stick::{self as scenes, main_run, poincare, Rules};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 
@@ -35,8 +36,8 @@ pub fn run(req: &RunRequest) -> Value {
     let p = &req.params;
     let dt = frame_dt_s(p, req.duration_s);
     let (mut main, fired) = reported_run(req, dt);
-    let mut report = crate::chapters::info(ssm::ID).expect("registered").report();
-    for (key, value) in main_run::params(&req.args, p, req.duration_s) {
+    let mut report = req.chapter.report();
+    for (key, value) in main_run::params(&req.settings, p, req.duration_s) {
         report.param(key, value);
     }
     for (key, value) in main_run::results(&mut main, p, &fired) {
@@ -49,7 +50,7 @@ pub fn run(req: &RunRequest) -> Value {
         // the CLI's `--json` line, for the download (the object, for the page)
         "report_text": report.to_string(),
         "report": report,
-        "events_csv": ssm::events_csv(&main),
+        "events_csv": scenes::events_csv(&main),
         "frames": frames(&model, &main, dt),
         "scene": scene_facts(&model),
         // added for issue 31: the stroboscopic view and chapter 8's rod
@@ -71,15 +72,15 @@ fn reported_run(req: &RunRequest, dt: f64) -> (RunSummary, BTreeMap<&'static str
         list_cap: Some(LIST_CAP),
         ..main_run::recording(dt)
     };
-    let (p, a) = (&req.params, &req.args);
+    let (p, a) = (&req.params, &req.settings);
     match a.rules {
-        ssm::Rules::Physical => (
-            ssm::run_scene_from(p, a.start, req.duration_s, &req.opts, rec),
+        Rules::Physical => (
+            scenes::run_scene_from(p, a.start, req.duration_s, &req.opts, rec),
             BTreeMap::new(),
         ),
-        ssm::Rules::Printed => {
+        Rules::Printed => {
             let printed = crate::physics::stick::printed::Printed::AS_PRINTED;
-            ssm::run_printed_from(p, printed, a.start, req.duration_s, &req.opts, rec)
+            scenes::run_printed_from(p, printed, a.start, req.duration_s, &req.opts, rec)
         }
     }
 }
@@ -171,7 +172,7 @@ pub fn cycle_view(req: &RunRequest) -> Value {
         fixed_point(
             &model,
             opts,
-            req.args.rtol,
+            req.settings.rtol,
             orbit.last().expect("non-empty"),
         )
     } else {

@@ -19,7 +19,7 @@ pub mod statements;
 pub mod work;
 
 use super::{info, Context};
-use crate::error::{blame, check, Result, WorkbookError};
+use crate::error::Result;
 use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::physics::plate::{PlateMotion, Sawtooth};
@@ -44,67 +44,71 @@ pub const MAX_SPEED_RATIO: f64 = 1e3;
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Coulomb friction coefficient mu between block and plate, [`MU`].
-    #[arg(long, default_value_t = 0.3)]
+    #[arg(long, default_value_t = MU.default_value())]
     pub mu: f64,
     /// Plate speed of the slow stroke (m/s), [`SLOW_VELOCITY_MPS`].
-    #[arg(long, default_value_t = 0.1)]
+    #[arg(long, default_value_t = SLOW_VELOCITY_MPS.default_value())]
     pub slow_velocity_mps: f64,
     /// Plate speed of the fast stroke back (m/s), [`FAST_VELOCITY_MPS`].
-    #[arg(long, default_value_t = 0.3)]
+    #[arg(long, default_value_t = FAST_VELOCITY_MPS.default_value())]
     pub fast_velocity_mps: f64,
     /// Duration of the slow stroke (s), [`SLOW_DURATION_S`].
-    #[arg(long, default_value_t = 0.03)]
+    #[arg(long, default_value_t = SLOW_DURATION_S.default_value())]
     pub slow_duration_s: f64,
     /// Duration of the fast stroke (s), optional, [`FAST_DURATION_S`].
     #[arg(long)]
     pub fast_duration_s: Option<f64>,
     /// Linear viscous friction coefficient per unit mass c (1/s), [`VISCOUS_C`].
-    #[arg(long, default_value_t = 30.0)]
+    #[arg(long, default_value_t = VISCOUS_C.default_value())]
     pub viscous_c: f64,
 }
 
 /// `--mu`.
 pub const MU: Flag = Flag::new(
     "--mu",
-    "Coulomb friction coefficient mu between block and plate; default 0.3",
+    "Coulomb friction coefficient mu between block and plate",
     "dimensionless",
     Interval::closed(0.0, MU_MAX).open_below(),
 )
-.why("dry friction; it must also let the block reach its steady state within 1e4 periods: mu >= a/(g (T_s + 1e4 (T_s - T_f)))");
+.why("dry friction; it must also let the block reach its steady state within 1e4 periods: mu >= a/(g (T_s + 1e4 (T_s - T_f)))")
+.default_value_is(0.3);
 
 /// `--slow-velocity-mps`.
 pub const SLOW_VELOCITY_MPS: Flag = Flag::new(
     "--slow-velocity-mps",
-    "Plate speed of the slow stroke, towards +x; default 0.1",
+    "Plate speed of the slow stroke, towards +x",
     "m/s",
     Interval::closed(1e-4, 10.0),
 )
-.why("0.1 mm/s to 10 m/s; with --slow-duration-s it sets the stroke, bounded with --mu below");
+.why("0.1 mm/s to 10 m/s; with --slow-duration-s it sets the stroke, bounded with --mu below")
+.default_value_is(0.1);
 
 /// `--fast-velocity-mps`: its range is relative to the slow speed (here at its default).
 pub const FAST_VELOCITY_MPS: Flag = Flag::new(
     "--fast-velocity-mps",
-    "Plate speed of the fast stroke back, towards -x; default 0.3",
+    "Plate speed of the fast stroke back, towards -x",
     "m/s",
     Interval::closed(0.1, 100.0).open_below(),
 )
 .shown_as("slow speed < value <= 1000 x slow speed")
 .why("above the slow speed and at most 1000 times it")
-.coupled();
+.coupled()
+.default_value_is(0.3);
 
 /// `--slow-duration-s`.
 pub const SLOW_DURATION_S: Flag = Flag::new(
     "--slow-duration-s",
-    "Duration of the slow stroke; the fast stroke lasts slow speed x slow duration / fast speed (zero net displacement); default 0.03",
+    "Duration of the slow stroke; the fast stroke lasts slow speed x slow duration / fast speed (zero net displacement)",
     "s",
     Interval::closed(1e-4, 10.0),
 )
-.why("0.1 ms to 10 s; with the speeds and --mu it must let the block lock within 1e4 periods");
+.why("0.1 ms to 10 s; with the speeds and --mu it must let the block lock within 1e4 periods")
+.default_value_is(0.03);
 
 /// `--fast-duration-s`: set by the other strokes (here at their defaults).
 pub const FAST_DURATION_S: Flag = Flag::new(
     "--fast-duration-s",
-    "Duration of the fast stroke, optional (default: computed, 0.01 s)",
+    "Duration of the fast stroke, optional (unset: computed from the slow stroke, 0.01 s at the defaults)",
     "s",
     Interval::closed(0.01, 0.01),
 )
@@ -115,13 +119,14 @@ pub const FAST_DURATION_S: Flag = Flag::new(
 /// `--viscous-c`: its range is relative to the period (here at the default strokes).
 pub const VISCOUS_C: Flag = Flag::new(
     "--viscous-c",
-    "Linear viscous friction coefficient per unit mass c for the linear law F = -m c v_rel; default 30",
+    "Linear viscous friction coefficient per unit mass c for the linear law F = -m c v_rel",
     "1/s",
     Interval::closed(0.25, 2.5e5),
 )
 .shown_as("0.01/T <= c <= 1e4/T with T the period")
 .why("six decades scaled by the period T of the sawtooth")
-.coupled();
+.coupled()
+.default_value_is(30.0);
 
 /// The table of the chapter's physical flags.
 pub const FLAGS: &[Flag] = &[
@@ -158,14 +163,11 @@ impl Scene {
 pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
     let g_mps2 = super::check_g(g_mps2)?;
     let vs = SLOW_VELOCITY_MPS.check(a.slow_velocity_mps)?;
-    let vf = check(
-        "--fast-velocity-mps",
+    let vf = FAST_VELOCITY_MPS.check_coupled(
         a.fast_velocity_mps,
         |v| v > vs && v <= MAX_SPEED_RATIO * vs,
-        &format!(
-            "{vs} < value <= {} (m/s: above the slow speed, at most 1000 times it)",
-            MAX_SPEED_RATIO * vs
-        ),
+        &format!("{vs} < value <= {}", MAX_SPEED_RATIO * vs),
+        FAST_VELOCITY_MPS.reason,
     )?;
     let ts = SLOW_DURATION_S.check(a.slow_duration_s)?;
     let saw = Sawtooth {
@@ -176,11 +178,11 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
     let tf = saw.fast_duration_s();
     if let Some(given) = a.fast_duration_s {
         // Zero net displacement: v_s t_s = v_f t_f, to 1e-9 relative (typed decimals).
-        check(
-            "--fast-duration-s",
+        FAST_DURATION_S.check_coupled(
             given,
             |t| t > 0.0 && (t - tf).abs() <= 1e-9 * tf,
-            &format!("{tf} s = slow speed x slow duration / fast speed (zero net displacement)"),
+            &format!("value = {tf} = slow speed x slow duration / fast speed"),
+            FAST_DURATION_S.reason,
         )?;
     }
     let mu_min = mu_min_for_lock(&saw, g_mps2, MAX_LOCK_PERIODS);
@@ -188,28 +190,27 @@ pub fn validate(a: &Args, g_mps2: f64) -> Result<Scene> {
     if mu < mu_min {
         // The lock condition combines five flags: name the one the user set.
         let d: Args = super::default_args();
-        let flags = [
-            ("--mu", mu, d.mu),
-            ("--slow-duration-s", ts, d.slow_duration_s),
-            ("--slow-velocity-mps", vs, d.slow_velocity_mps),
-            ("--fast-velocity-mps", vf, d.fast_velocity_mps),
-            ("--g-mps2", g_mps2, super::Context::G_DEFAULT_MPS2),
-        ];
-        let who = blame(&flags);
-        let value = flags.iter().find(|f| f.0 == who).map_or(mu, |f| f.1);
-        return Err(WorkbookError::bad_input(
-            who,
+        let (who, value) = crate::flags::blame(&[
+            (&MU, mu, d.mu),
+            (&SLOW_DURATION_S, ts, d.slow_duration_s),
+            (&SLOW_VELOCITY_MPS, vs, d.slow_velocity_mps),
+            (&FAST_VELOCITY_MPS, vf, d.fast_velocity_mps),
+            (&crate::flags::G, g_mps2, super::Context::G_DEFAULT_MPS2),
+        ]);
+        who.check_coupled(
             value,
-            &format!("values with mu >= a/(g (T_s + 1e4 (T_s - T_f))), here {mu_min:.3e} > mu = {mu} (dimensionless): the block must reach its steady state within 1e4 periods of the slow speed a, slow duration T_s, fast duration T_f"),
-        ));
+            |_| false,
+            &format!("values with mu >= a/(g (T_s + 1e4 (T_s - T_f))), here {mu_min:.3e} > mu = {mu}"),
+            "the block must reach its steady state within 1e4 periods of the slow speed a, slow duration T_s, fast duration T_f",
+        )?;
     }
     let period = saw.period_s();
     let (c_lo, c_hi) = (0.01 / period, 1e4 / period);
-    let c = check(
-        "--viscous-c",
+    let c = VISCOUS_C.check_coupled(
         a.viscous_c,
         |c| c >= c_lo && c <= c_hi,
-        &format!("{c_lo:.4} <= c <= {c_hi:.4e} (1/s; 0.01/T to 1e4/T, T = {period} s)"),
+        &format!("{c_lo:.4} <= c <= {c_hi:.4e} (0.01/T to 1e4/T, T = {period} s)"),
+        VISCOUS_C.reason,
     )?;
     Ok(Scene {
         saw,

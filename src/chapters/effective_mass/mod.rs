@@ -31,10 +31,10 @@ pub use mutations::Document;
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Lean angle theta of the stick from the vertical (degrees), [`ANGLE_DEG`].
-    #[arg(long, default_value_t = 45.0)]
+    #[arg(long, default_value_t = ANGLE_DEG.default_value())]
     pub angle_deg: f64,
     /// Coulomb friction coefficient mu at the contact point C, [`MU`].
-    #[arg(long, default_value_t = 0.4)]
+    #[arg(long, default_value_t = MU.default_value())]
     pub mu: f64,
 }
 
@@ -44,20 +44,22 @@ pub const MU_MAX: f64 = 2.0;
 /// `--angle-deg`.
 pub const ANGLE_DEG: Flag = Flag::new(
     "--angle-deg",
-    "Lean angle theta of the stick from the vertical, positive towards +x; default 45, the document's example (q = tan(theta) = 1)",
+    "Lean angle theta of the stick from the vertical, positive towards +x; the default is the document's example (q = tan(theta) = 1)",
     "degrees",
     Interval::open(-90.0, 90.0),
 )
-.why("a stick leaning on its foot C: at 90 degrees it lies on the plate");
+.why("a stick leaning on its foot C: at 90 degrees it lies on the plate")
+.default_value_is(45.0);
 
 /// `--mu`.
 pub const MU: Flag = Flag::new(
     "--mu",
-    "Coulomb friction coefficient mu at the contact point C; default 0.4, the authors' scene",
+    "Coulomb friction coefficient mu at the contact point C; the default is the authors' scene's",
     "dimensionless",
     Interval::closed(0.0, MU_MAX),
 )
-.why("dry contacts; the point-mass-limit check at I_G = 1e-6 m L^2 (gap ~ mu^3) holds to its 1e-5 tolerance up to 2");
+.why("dry contacts; the point-mass-limit check at I_G = 1e-6 m L^2 (gap ~ mu^3) holds to its 1e-5 tolerance up to 2")
+.default_value_is(0.4);
 
 /// The table of the chapter's physical flags (no `--g-mps2`: every ratio here is
 /// independent of g, and the chapter refuses the flag).

@@ -14,7 +14,7 @@
 //! orchestration.
 
 use super::{report_with_g, Context};
-use crate::error::{blame, check, num, Result};
+use crate::error::{num, Result};
 use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
@@ -34,45 +34,48 @@ mod statements;
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Coulomb friction coefficient mu between block and plate, [`MU`].
-    #[arg(long, default_value_t = 0.36)]
+    #[arg(long, default_value_t = MU.default_value())]
     pub mu: f64,
     /// Plate displacement amplitude delta_x (m), [`AMPLITUDE_M`].
-    #[arg(long = "amplitude-m", default_value_t = 0.02)]
+    #[arg(long = "amplitude-m", default_value_t = AMPLITUDE_M.default_value())]
     pub amplitude_m: f64,
     /// Plate frequency f (Hz), [`FREQUENCY_HZ`].
-    #[arg(long = "frequency-hz", default_value_t = 5.0)]
+    #[arg(long = "frequency-hz", default_value_t = FREQUENCY_HZ.default_value())]
     pub frequency_hz: f64,
     /// Bias force F as a fraction of mu m g, [`BIAS`].
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = BIAS.default_value())]
     pub bias: f64,
 }
 
 /// `--mu`.
 pub const MU: Flag = Flag::new(
     "--mu",
-    "Coulomb friction coefficient mu between block and plate; default 0.36, so that arctan(mu) = 19.8 deg, the document's \"about 20 deg\"",
+    "Coulomb friction coefficient mu between block and plate; the default makes arctan(mu) = 19.8 deg, the document's \"about 20 deg\"",
     "dimensionless",
     Interval::closed(0.01, 2.0).open_above(),
 )
-.why("dry friction between block and plate; with amplitude, frequency and g it must give 2e-3 <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= 1e6 1/s, see the error line");
+.why("dry friction between block and plate; with amplitude, frequency and g it must give 2e-3 <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= 1e6 1/s, see the error line")
+.default_value_is(0.36);
 
 /// `--amplitude-m`.
 pub const AMPLITUDE_M: Flag = Flag::new(
     "--amplitude-m",
-    "Plate displacement amplitude delta_x; default 0.02 m, a hand-shaken book",
+    "Plate displacement amplitude delta_x; the default is a hand-shaken book's",
     "m",
     Interval::closed(1e-6, 10.0),
 )
-.why("a micrometre to a 10 m stroke; Gamma_x is bounded too");
+.why("a micrometre to a 10 m stroke; Gamma_x is bounded too")
+.default_value_is(0.02);
 
 /// `--frequency-hz`.
 pub const FREQUENCY_HZ: Flag = Flag::new(
     "--frequency-hz",
-    "Plate frequency f = omega/(2 pi); default 5 Hz, the document's \"say 5 oscillations/s\"",
+    "Plate frequency f = omega/(2 pi); the default is the document's \"say 5 oscillations/s\"",
     "Hz",
     Interval::closed(0.01, 1000.0),
 )
-.why("a hand-shaken book to an ultrasonic-free shaker; Gamma_x is bounded too");
+.why("a hand-shaken book to an ultrasonic-free shaker; Gamma_x is bounded too")
+.default_value_is(5.0);
 
 /// `--bias`.
 pub const BIAS: Flag = Flag::new(
@@ -82,7 +85,8 @@ pub const BIAS: Flag = Flag::new(
     Interval::closed(0.0, 1.0).open_above(),
 )
 .shown_as("0, or 1e-6 <= bias < 1")
-.why("below 1e-6 the drift is within the rounding of the exact periodic solution");
+.why("below 1e-6 the drift is within the rounding of the exact periodic solution")
+.default_value_is(0.5);
 
 /// The table of the chapter's physical flags.
 pub const FLAGS: &[Flag] = &[MU, AMPLITUDE_M, FREQUENCY_HZ, BIAS, crate::flags::G];
@@ -110,11 +114,11 @@ pub fn validate(args: &Args, ctx: &Context) -> Result<Scene> {
     // 1.8e-3 at b = 1e-9 and Gamma_x = 1000); the arcsin-law claim's tolerance 1e-5
     // needs the drift V sin(pi b/2) above a few 1e-7 V: b >= 1e-6 (b = 0: the checks
     // use b = 0.01).
-    let bias = check(
-        "--bias",
+    let bias = BIAS.check_coupled(
         bias,
         |b| b == 0.0 || b >= BIAS_MIN,
-        "0 or 1e-6 <= value < 1 (fraction of mu m g): below 1e-6 the drift is within the rounding of the exact periodic solution",
+        &BIAS.range_text(),
+        BIAS.reason,
     )?;
     let g = super::check_g(ctx.g())?;
     let scene = Scene {
@@ -125,20 +129,27 @@ pub fn validate(args: &Args, ctx: &Context) -> Result<Scene> {
         bias,
     };
     let d: Args = super::default_args();
-    let flags = [
-        ("--amplitude-m", amp, d.amplitude_m),
-        ("--frequency-hz", freq, d.frequency_hz),
-        ("--mu", mu, d.mu),
-        ("--g-mps2", g, Context::G_DEFAULT_MPS2),
-    ];
-    let who = blame(&flags); // the condition couples four flags: name the one set
-    let value = flags.iter().find(|f| f.0 == who).map_or(amp, |f| f.1);
+    // the condition couples four flags: it names the one the user set
+    let (who, value) = crate::flags::blame(&[
+        (&AMPLITUDE_M, amp, d.amplitude_m),
+        (&FREQUENCY_HZ, freq, d.frequency_hz),
+        (&MU, mu, d.mu),
+        (&crate::flags::G, g, Context::G_DEFAULT_MPS2),
+    ]);
     let omega = 2.0 * std::f64::consts::PI * freq;
     let gx = scene.gamma_x(); // formula: Gamma_x = delta_x omega^2 / (mu g)
-    check(who, value, |_| gx >= GAMMA_X_MIN && gx * omega <= GAMMA_X_OMEGA_MAX, &format!(
-        "values giving {} <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= {} 1/s (here Gamma_x = {:.3e} and Gamma_x omega = {:.3e} 1/s): the fast-shaking claim needs sliding at 900 Gamma_x, the located stick-slip switches need Gamma_x omega x 1e-15 s <= 1e-9",
-        num(GAMMA_X_MIN), num(GAMMA_X_OMEGA_MAX), gx, gx * omega
-    ))?;
+    who.check_coupled(
+        value,
+        |_| gx >= GAMMA_X_MIN && gx * omega <= GAMMA_X_OMEGA_MAX,
+        &format!(
+            "values giving {} <= Gamma_x = delta_x omega^2/(mu g) and Gamma_x omega <= {} 1/s (here Gamma_x = {:.3e} and Gamma_x omega = {:.3e} 1/s)",
+            num(GAMMA_X_MIN),
+            num(GAMMA_X_OMEGA_MAX),
+            gx,
+            gx * omega
+        ),
+        "the fast-shaking claim needs sliding at 900 Gamma_x, the located stick-slip switches need Gamma_x omega x 1e-15 s <= 1e-9",
+    )?;
     Ok(scene)
 }
 

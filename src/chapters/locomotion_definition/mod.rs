@@ -16,7 +16,7 @@ mod mutations;
 mod statements;
 
 use super::{info, Context};
-use crate::error::{check, parse_pair, Result};
+use crate::error::{parse_pair, Result};
 use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::physics::locomotion::{in_exact_range, is_locomotion, reason, V2};
@@ -37,9 +37,6 @@ pub struct Args {
     pub medium_velocity: Vec<V2>,
 }
 
-const VALID: &str =
-    "X,Y with each part 0 or 1e-100 <= |part| <= 1e100 (m/s), where the hull test is exact";
-
 /// A velocity pair's entry: each part 0 or `1e-100 <= |part| <= 1e100` (the range
 /// field holds the magnitudes; either sign and 0 are accepted too).
 const fn pair(name: &'static str, about: &'static str) -> Flag {
@@ -51,13 +48,16 @@ const fn pair(name: &'static str, about: &'static str) -> Flag {
 /// The table of the chapter's flags. No `--g-mps2`: the chapter is kinematics and
 /// refuses the flag.
 pub const FLAGS: &[Flag] = &[
-    pair("--object-velocity", "Average velocity of the object as X,Y (horizontal plane; negative parts are fine: --object-velocity -2,0); default 1,3: a boat reaching across the wind"),
-    pair("--medium-velocity", "Average velocity of one medium as X,Y; repeat the flag for several media; default: wind 5,0 and still water 0,0 (the document's sailing scene)"),
+    pair("--object-velocity", "Average velocity of the object as X,Y (horizontal plane; negative parts are fine: --object-velocity -2,0)")
+        .default_is("default: 1,3, a boat reaching across the wind"),
+    pair("--medium-velocity", "Average velocity of one medium as X,Y; repeat the flag for several media")
+        .default_is("default: wind 5,0 and still water 0,0, the document's sailing scene"),
 ];
 
 fn validate(flag: &str, v: V2) -> Result<V2> {
+    let entry = FLAGS.iter().find(|f| f.name == flag).unwrap_or(&FLAGS[0]);
     for x in v {
-        check(flag, x, in_exact_range, VALID)?;
+        entry.check_coupled(x, in_exact_range, &entry.range_text(), entry.reason)?;
     }
     Ok(v)
 }

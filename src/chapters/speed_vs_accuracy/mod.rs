@@ -12,13 +12,11 @@
 //!   exact simulation: where within 1 %, and how much cheaper.
 
 pub mod block_part;
-pub mod block_scene;
 pub mod claims;
 pub mod economy;
 pub mod evidence;
 pub mod failures;
 pub mod figures;
-pub mod measure;
 pub mod missed_event;
 pub mod mutations;
 pub use mutations::Document;
@@ -33,7 +31,9 @@ pub mod tables;
 pub mod work_precision;
 
 use super::Context;
-use crate::error::{check, Result};
+// the block's benchmark scene and the timed runs (`crate::scenes`), as `super::...` here
+use crate::scenes::{block as block_scene, measure};
+use crate::error::Result;
 use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
@@ -43,19 +43,19 @@ use crate::report::ChapterReport;
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Drive frequency f of the vertically vibrating plate (Hz), [`FREQUENCY_HZ`].
-    #[arg(long, default_value_t = 30.0)]
+    #[arg(long, default_value_t = FREQUENCY_HZ.default_value())]
     pub frequency_hz: f64,
     /// Peak plate acceleration over gravity, [`GAMMA`].
-    #[arg(long, default_value_t = 2.5)]
+    #[arg(long, default_value_t = GAMMA.default_value())]
     pub gamma: f64,
     /// Coulomb friction coefficient mu between block and plate, [`MU`].
-    #[arg(long, default_value_t = 0.4)]
+    #[arg(long, default_value_t = MU.default_value())]
     pub mu: f64,
     /// Bias force over the sliding friction, b = F/(mu m g), [`BIAS`].
-    #[arg(long, default_value_t = 0.05)]
+    #[arg(long, default_value_t = BIAS.default_value())]
     pub bias: f64,
     /// Restitution coefficient e of the Zeno scenes, [`RESTITUTION`].
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = RESTITUTION.default_value())]
     pub restitution: f64,
 }
 
@@ -68,49 +68,54 @@ impl Default for Args {
 /// `--frequency-hz`.
 pub const FREQUENCY_HZ: Flag = Flag::new(
     "--frequency-hz",
-    "Drive frequency f of the vertically vibrating plate; default 30 Hz, the stick scene's frequency",
+    "Drive frequency f of the vertically vibrating plate; the default is the stick scene's frequency",
     "Hz",
     Interval::closed(1.0, 100.0),
 )
-.why("above 100 Hz the plate amplitude Gamma g/omega^2 falls under the reference's resolution; below 1 Hz the fixed-step ladders (steps per period) no longer end within the chapter's budget");
+.why("above 100 Hz the plate amplitude Gamma g/omega^2 falls under the reference's resolution; below 1 Hz the fixed-step ladders (steps per period) no longer end within the chapter's budget")
+.default_value_is(30.0);
 
 /// `--gamma`.
 pub const GAMMA: Flag = Flag::new(
     "--gamma",
-    "Peak plate acceleration over gravity, Gamma = delta omega^2 / g; default 2.5: period-one bouncing",
+    "Peak plate acceleration over gravity, Gamma = delta omega^2 / g; the default gives period-one bouncing",
     "dimensionless",
     Interval::open(1.5, 50.0),
 )
-.why("flight needs Gamma > 1, and below 1.5 the flights are shorter than the guard sampling interval T/20 of the integrated runs, which then miss landings");
+.why("flight needs Gamma > 1, and below 1.5 the flights are shorter than the guard sampling interval T/20 of the integrated runs, which then miss landings")
+.default_value_is(2.5);
 
 /// `--mu`.
 pub const MU: Flag = Flag::new(
     "--mu",
-    "Coulomb friction coefficient mu between block and plate; default 0.4",
+    "Coulomb friction coefficient mu between block and plate",
     "dimensionless",
     Interval::closed(0.01, 2.0).open_above(),
 )
-.why("dry friction");
+.why("dry friction")
+.default_value_is(0.4);
 
 /// `--bias`: its lower end is relative to `--mu` (here at its default, 0.4).
 pub const BIAS: Flag = Flag::new(
     "--bias",
-    "Bias force over the sliding friction, b = F/(mu m g) as in every chapter; default 0.05: F = 0.02 m g at mu = 0.4",
+    "Bias force over the sliding friction, b = F/(mu m g) as in every chapter; the default is F = 0.02 m g at mu = 0.4",
     "dimensionless",
     Interval::closed(BIAS_MIN_TIMES_MU / 0.4, BIAS_MAX),
 )
 .shown_as("3e-3/mu <= b <= 0.99")
 .why("the drift must stay above the reference check's rounding floor, so b mu >= 3e-3; closer to 1 the block sticks only in a sliver of each period, where rounding decides stick or slip")
-.coupled();
+.coupled()
+.default_value_is(0.05);
 
 /// `--restitution`.
 pub const RESTITUTION: Flag = Flag::new(
     "--restitution",
-    "Restitution coefficient e of the Zeno scenes; default 0.5",
+    "Restitution coefficient e of the Zeno scenes",
     "dimensionless",
     Interval::closed(0.0, 0.8).open_below(),
 )
-.why("above 0.8 the bouncing block no longer chatters to rest every period and the Zeno scene's comparison loses its meaning");
+.why("above 0.8 the bouncing block no longer chatters to rest every period and the Zeno scene's comparison loses its meaning")
+.default_value_is(0.5);
 
 /// `--g-mps2` in this chapter: validated from 3 m/s^2 up.
 pub const G: Flag = Flag {
@@ -127,14 +132,14 @@ fn validate(a: &Args) -> Result<()> {
     FREQUENCY_HZ.check(a.frequency_hz)?;
     GAMMA.check(a.gamma)?;
     MU.check(a.mu)?;
-    check(
-        "--bias",
+    BIAS.check_coupled(
         a.bias,
         |b| b >= BIAS_MIN_TIMES_MU / a.mu && b <= BIAS_MAX,
         &format!(
-            "3e-3/mu = {:.3e} <= value <= 0.99 (dimensionless, F/(mu m g): the drift, ~0.12 m/s per unit F/(m g) = b mu here, must stay above the reference check's rounding floor, ~3e-15 m/s against its 1e-11 relative floor, so b mu >= 3e-3; closer to 1 the block sticks only in a sliver of each period, where rounding decides stick or slip and the runs part: 1.2e-3 at 0.999)",
+            "3e-3/mu = {:.3e} <= value <= 0.99",
             BIAS_MIN_TIMES_MU / a.mu
         ),
+        "F/(mu m g): the drift, ~0.12 m/s per unit F/(m g) = b mu here, must stay above the reference check's rounding floor, ~3e-15 m/s against its 1e-11 relative floor, so b mu >= 3e-3; closer to 1 the block sticks only in a sliver of each period, where rounding decides stick or slip and the runs part: 1.2e-3 at 0.999",
     )?;
     RESTITUTION.check(a.restitution)?;
     Ok(())

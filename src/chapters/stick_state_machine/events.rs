@@ -1,6 +1,7 @@
 //! `--events`: every mode switch of the main run written as CSV.
 
 use super::Args;
+use crate::scenes::stick::events_csv;
 use crate::physics::stick::run::RunSummary;
 
 /// The output error of `--events` (exit code 3).
@@ -40,24 +41,4 @@ pub fn write_events(
         ));
     }
     Ok(())
-}
-
-/// The CSV of `--events`: one header line, then one line per switch.
-pub fn events_csv(s: &RunSummary) -> String {
-    let mut out = String::from("t_s,from,to,theta_rad,theta_dot_rad_s,x_c_m,f_x_n,f_z_n\n");
-    for w in &s.switches {
-        let to = w.to.map_or("stop", |m| m.name());
-        out.push_str(&format!(
-            "{:.12},{},{},{:.12},{:.12},{:.12},{:.9},{:.9}\n",
-            w.t_s,
-            w.from.name(),
-            to,
-            w.theta_rad,
-            w.omega_rad_s,
-            w.x_c_m,
-            w.fx_n,
-            w.fz_n
-        ));
-    }
-    out
 }

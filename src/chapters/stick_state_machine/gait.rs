@@ -10,6 +10,7 @@
 //! and the label give the mode; the text gives the time and x_c.
 
 use super::run_scene;
+use crate::scenes::stick::MODE_COLOUR;
 use crate::error::Result;
 use crate::numerics::hybrid::Options;
 use crate::physics::stick::run::{Recording, Sample};
@@ -18,10 +19,6 @@ use crate::plot::{color, font, Drawing, GRID, LABEL_PX, TICK_PX};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
-
-/// Palette index of each mode's colour, [`Mode::ALL`] order: flight blue, pivot
-/// vermillion, slide left bluish green, slide right reddish purple (four distinct hues).
-pub const MODE_COLOUR: [usize; 4] = [0, 1, 2, 4];
 
 /// Colour of a mode.
 pub fn mode_colour(m: Mode) -> RGBColor {

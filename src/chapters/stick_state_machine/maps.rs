@@ -3,59 +3,26 @@
 //! parallel sweep ([`crate::sweep::par_map`], with its progress bar).
 //!
 //! A cell's speed is the late mean `(x_c(t_end) - x_c(t_skip)) / (t_end - t_skip)` over
-//! whole drive cycles after a start transient of `SKIP` cycles, so that the colour shows
-//! the steady gait and not the first hop from rest.
+//! whole drive cycles after a start transient ([`crate::scenes::stick::late_speed`]),
+//! so that the colour shows the steady gait and not the first hop from rest.
 
 use super::evidence::Evidence;
-use super::run_scene;
+use crate::scenes::stick::late_speed;
 use crate::chapters::Context;
 use crate::error::Result;
 use crate::numerics::hybrid::Options;
-use crate::physics::stick::run::{Recording, StickOutcome};
-use crate::physics::stick::{StickParams, XC};
 use crate::plot::{save_heatmap, HeatMap, Legend, Series};
 use crate::sweep::{linspace, par_map};
 use std::path::Path;
 
 /// Cells per side of a map (full mode, quick mode).
 const CELLS: (usize, usize) = (128, 6);
-/// Drive cycles per cell (full, quick) and the transient skipped before averaging.
-const CYCLES: (f64, f64) = (40.0, 12.0);
-/// Start-transient cycles left out of the late mean speed (full, quick).
-const SKIP: (f64, f64) = (10.0, 4.0);
 
 /// Draws both maps; returns the written paths.
 pub fn draw(dir: &Path, ev: &Evidence, opts: &Options, ctx: &Context) -> Result<Vec<String>> {
     let mut out = theta_mu(dir, ev, opts, ctx)?;
     out.extend(gamma_f(dir, ev, opts, ctx)?);
     Ok(out)
-}
-
-/// The late mean speed of C (m/s) of one run, NaN unless the run completed.
-pub(super) fn late_speed(p: &StickParams, opts: &Options, quick: bool) -> f64 {
-    let t = p.period_s();
-    let (cycles, skip) = if quick {
-        (CYCLES.1, SKIP.1)
-    } else {
-        (CYCLES.0, SKIP.0)
-    };
-    let rec = Recording {
-        sequence_cap: 0,
-        trace_dt_s: skip * t, // samples at 0, skip T, 2 skip T, ... and at segment ends
-        check_invariants: false,
-        grid_only: false,
-        list_cap: None,
-    };
-    let s = run_scene(p, cycles * t, opts, rec);
-    if s.outcome != StickOutcome::Completed {
-        return f64::NAN;
-    }
-    let t_skip = skip * t;
-    let first = s.trace.iter().find(|x| x.t_s >= t_skip * (1.0 - 1e-12));
-    match (first, s.trace.last()) {
-        (Some(a), Some(b)) if b.t_s > a.t_s => (b.y[XC] - a.y[XC]) / (b.t_s - a.t_s), // formula: late mean speed
-        _ => f64::NAN,
-    }
 }
 
 fn cells(ctx: &Context) -> usize {

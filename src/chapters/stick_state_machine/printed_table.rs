@@ -7,7 +7,7 @@ use super::run_printed;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::StepControl;
 use crate::physics::stick::printed::{Erratum, Printed, Semantics};
-use crate::physics::stick::run::{Recording, RunSummary};
+use crate::physics::stick::run::{Recording, RunSummary, StickOutcome};
 use crate::physics::stick::{Mode, StickParams};
 use crate::report::fmt_num;
 
@@ -45,10 +45,11 @@ fn cell(run: &RunSummary, reference: &RunSummary, p: &StickParams) -> String {
         None => "none".to_string(),
         Some(t) => format!("{} s", fmt_num((t * 1e4).round() / 1e4)),
     };
-    let outcome = match run.outcome.label() {
-        "completed" => "completed".to_string(),
+    let outcome = match &run.outcome {
+        StickOutcome::Completed => run.outcome.label().to_string(),
         other => format!(
-            "{other} at {} s",
+            "{} at {} s",
+            other.label(),
             fmt_num((run.end_time_s * 1e4).round() / 1e4)
         ),
     };

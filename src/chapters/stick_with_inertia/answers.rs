@@ -3,7 +3,7 @@
 
 use super::evidence::{scene_run, Rung};
 use crate::physics::stick::{authors_scene, jamming_scene};
-use crate::physics::stick_inertia::run::InertiaRun;
+use crate::physics::stick_inertia::run::{InertiaOutcome, InertiaRun};
 use crate::physics::stick_inertia::InertiaParams;
 use crate::report::fmt_num;
 
@@ -145,8 +145,11 @@ pub fn painleve_map(n: usize, duration_s: f64) -> Vec<Vec<MapCell>> {
                         theta0_rad: th0,
                         mu,
                         events: r.painleve.len(),
-                        fell: r.outcome.label() == "fell",
-                        unvouched: !matches!(r.outcome.label(), "fell" | "completed"),
+                        fell: r.outcome == InertiaOutcome::Fell,
+                        unvouched: !matches!(
+                            r.outcome,
+                            InertiaOutcome::Fell | InertiaOutcome::Completed
+                        ),
                         prone_fraction: left_fraction(&r),
                     });
                 }

@@ -20,11 +20,10 @@ mod statements;
 pub use statements::{Statements, PRINTED};
 
 use super::Context;
-use crate::error::{Result, WorkbookError};
+use crate::error::Result;
 use crate::flags::stick::{self as stick_flags, StickFlags};
 use crate::flags::Flag;
 use crate::physics::domain::Interval;
-use crate::physics::stick::{authors_scene, jamming_scene};
 use crate::physics::stick_inertia::limit;
 use crate::physics::stick_inertia::run::{InertiaOutcome, InertiaRun};
 use crate::physics::stick_inertia::InertiaParams;
@@ -34,47 +33,31 @@ use serde_json::json;
 /// Chapter id.
 pub const ID: &str = "stick-with-inertia";
 
-/// The scene whose values the flags override (chapter 6's scenes).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Scene {
-    /// Chapter 6's self-locking scene (theta_0 = 0.3 rad, Gamma = 3, g = 9.81 m/s^2).
-    Jamming,
-    /// The authors' scene (static angle 0.5 rad, Gamma = 10, g = 10 m/s^2).
-    Authors,
-}
-
 /// Flags of the chapter: chapter 6's (the same entries, [`crate::flags::stick`]) with
 /// the tip mass and the rod's mass in place of `--mass-kg`, and the restitution of
 /// impacts. The help lines of the physical flags come from [`FLAGS`].
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
-    /// Scene whose values the other flags override [default: jamming].
-    #[arg(long, value_enum, default_value_t = Scene::Jamming)]
-    pub scene: Scene,
-    /// The stick's flags, shared with chapter 6.
+    /// The stick's flags and its scene, shared with chapter 6.
     #[command(flatten)]
     pub stick: StickFlags,
     /// Point mass m at the top P (kg), [`TIP_MASS_KG`].
-    #[arg(long = "tip-mass-kg", default_value_t = 1.0)]
+    #[arg(long = "tip-mass-kg", default_value_t = TIP_MASS_KG.default_value())]
     pub tip_mass_kg: f64,
-    /// Mass of the rod (kg), [`ROD_MASS_KG`].
-    #[arg(long = "rod-mass-kg", default_value_t = 0.01)]
+    /// Mass of the rod (kg), [`crate::flags::stick::ROD_MASS_KG`] (shared with the lab).
+    #[arg(long = "rod-mass-kg", default_value_t = stick_flags::ROD_MASS_KG.default_value())]
     pub rod_mass_kg: f64,
     /// Simulated time (s), [`DURATION_S`].
     #[arg(long = "duration-s")]
     pub duration_s: Option<f64>,
     /// Relative (and absolute) tolerance in the contact modes,
     /// [`crate::flags::stick::RTOL`].
-    #[arg(long, default_value_t = 1e-10)]
+    #[arg(long, default_value_t = stick_flags::RTOL.default_value())]
     pub rtol: f64,
     /// Restitution e of impacts at C, [`RESTITUTION`].
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = RESTITUTION.default_value())]
     pub restitution: f64,
 }
-
-/// Why the masses have their range.
-const WHY_MASS: &str =
-    "0 allowed (a uniform stick, or chapter 6's massless rod) up to 10 x the authors' 1 kg";
 
 /// `--tip-mass-kg`.
 pub const TIP_MASS_KG: Flag = Flag::new(
@@ -83,18 +66,9 @@ pub const TIP_MASS_KG: Flag = Flag::new(
     "kg",
     Interval::closed(0.0, 10.0),
 )
-.why(WHY_MASS)
+.why(stick_flags::WHY_MASS)
+.default_value_is(1.0)
 .coupled(); // m + m_r >= 1e-3 kg
-
-/// `--rod-mass-kg`.
-pub const ROD_MASS_KG: Flag = Flag::new(
-    "--rod-mass-kg",
-    "Mass of the rod, uniform along C-P (0 is chapter 6's massless rod; m + m_r >= 1e-3 kg, and --damping above 0 when m_r = 0 or when alpha = M l_G^2/I_G >= 1e9, a rod lighter than about 3e-9 (m + m_r)); default 0.01: 1 % of the tip mass",
-    "kg",
-    Interval::closed(0.0, 10.0),
-)
-.why(WHY_MASS)
-.coupled();
 
 /// `--duration-s`.
 pub const DURATION_S: Flag = Flag::new(
@@ -113,13 +87,14 @@ pub const RESTITUTION: Flag = Flag::new(
     "1",
     Interval::closed(0.0, 1.0),
 )
-.why("Stronge's energetic coefficient: above 1 an impact would create energy");
+.why("Stronge's energetic coefficient: above 1 an impact would create energy")
+.default_value_is(0.0);
 
 /// The table of the chapter's physical flags: chapter 6's entries and its own.
 pub const FLAGS: &[Flag] = &[
     stick_flags::LENGTH_M,
     TIP_MASS_KG,
-    ROD_MASS_KG,
+    stick_flags::ROD_MASS_KG,
     stick_flags::STIFFNESS,
     stick_flags::DAMPING,
     stick_flags::MU,
@@ -135,24 +110,23 @@ pub const FLAGS: &[Flag] = &[
 /// Validated parameters and duration (s): each flag checked against its entry of
 /// [`FLAGS`], the couplings of the masses and the damper, then the model's constructor.
 pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
-    let base = match args.scene {
-        Scene::Authors => authors_scene(ctx.g_mps2.unwrap_or(10.0)),
-        Scene::Jamming => jamming_scene(ctx.g_mps2.unwrap_or(Context::G_DEFAULT_MPS2)),
-    };
+    let base = args.stick.scene.params(ctx.g_mps2);
     crate::chapters::check_g(base.g_mps2)?;
     let v = args.stick.resolve(&base)?;
     let m = TIP_MASS_KG.check(args.tip_mass_kg)?;
-    let m_r = ROD_MASS_KG.check(args.rod_mass_kg)?;
-    if m + m_r < 1e-3 {
-        return Err(WorkbookError::bad_input(
-            "--rod-mass-kg",
-            m_r,
-            "m + m_r >= 1e-3 kg (kg): a lighter stick makes the pivot's time scale I_C/gamma shorter than the explicit integrator can follow at the drive's step",
-        ));
-    }
-    if m_r == 0.0 && v.damping == 0.0 && v.stiffness > 0.0 {
-        return Err(WorkbookError::bad_input("--damping", v.damping, "above 0 (N m s/rad) when --rod-mass-kg is 0: the massless rod's angle in flight needs the damper"));
-    }
+    let m_r = stick_flags::ROD_MASS_KG.check(args.rod_mass_kg)?;
+    stick_flags::ROD_MASS_KG.check_coupled(
+        m_r,
+        |m_r| m + m_r >= 1e-3,
+        "m + m_r >= 1e-3 kg",
+        "a lighter stick makes the pivot's time scale I_C/gamma shorter than the explicit integrator can follow at the drive's step",
+    )?;
+    stick_flags::DAMPING.check_coupled(
+        v.damping,
+        |d| d > 0.0 || m_r > 0.0 || v.stiffness == 0.0,
+        "above 0 when --rod-mass-kg is 0 and --stiffness above 0",
+        "the massless rod's angle in flight needs the damper",
+    )?;
     let dur = DURATION_S.check(
         args.duration_s
             .unwrap_or(if ctx.quick { 2.0 } else { 10.0 }),
@@ -164,13 +138,13 @@ pub fn setup(args: &Args, ctx: &Context) -> Result<(InertiaParams, f64)> {
         rod_mass_kg: m_r,
         restitution: e,
     };
-    if m_r > 0.0 && v.damping == 0.0 && p.geometry().alpha() >= limit::ALPHA_SWITCH {
-        return Err(WorkbookError::bad_input(
-            "--damping",
-            v.damping,
-            "above 0 (N m s/rad) for a rod this light (alpha = M l_G^2/I_G >= 1e9): its impacts lose 9 digits, and without a damper chapter 6's model is no limit to replace them",
-        ));
-    }
+    let light = m_r > 0.0 && p.geometry().alpha() >= limit::ALPHA_SWITCH;
+    stick_flags::DAMPING.check_coupled(
+        v.damping,
+        |d| d > 0.0 || !light,
+        "above 0 for a rod this light (alpha = M l_G^2/I_G >= 1e9)",
+        "its impacts lose 9 digits, and without a damper chapter 6's model is no limit to replace them",
+    )?;
     Ok((p, dur))
 }
 

@@ -3,6 +3,7 @@
 
 use super::chladni::{BIAS, GAMMA0};
 use super::evidence::{Evidence, RangeStat, FAST_FACTORS};
+use super::regimes::Regime;
 use super::statements::Statements;
 use crate::report::{Check, Claim};
 use std::f64::consts::{PI, TAU};
@@ -303,11 +304,12 @@ pub fn period_doublings(doc: &Statements, ev: &Evidence) -> Claim {
     let mut ok = !ev.doublings.is_empty();
     for (k, pd, d, below, above) in &ev.doublings {
         let stated = doc.pd_scale * pd;
+        let k = *k as usize;
         let predicted = |gamma: f64| {
             if gamma < stated {
-                format!("no-rest P1/{k}T")
+                Regime::touch_and_go(1, k)
             } else {
-                format!("no-rest P2/{}T", 2 * k)
+                Regime::touch_and_go(2, 2 * k)
             }
         };
         ok &= *below == predicted(pd - d) && *above == predicted(pd + d);
@@ -331,7 +333,7 @@ pub fn flight_boundaries(doc: &Statements, ev: &Evidence) -> Claim {
         if let Some(b) = ev
             .bounds
             .iter()
-            .filter(|b| b.below.starts_with("rest") && b.above.starts_with("no-rest"))
+            .filter(|b| b.below.rests_between_flights() && b.above.never_rests())
             .min_by(|a, b| (a.gamma - gn).abs().total_cmp(&(b.gamma - gn).abs()))
         {
             worst = worst.max((b.gamma - gn).abs());

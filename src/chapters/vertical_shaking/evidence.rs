@@ -45,7 +45,7 @@ pub struct Evidence {
     pub law_range: LawRange,
     /// The multiplier-located period doublings checked by the classifier: (n, Gamma,
     /// half-gap, label below, label above).
-    pub doublings: Vec<(u32, f64, f64, String, String)>,
+    pub doublings: Vec<(u32, f64, f64, regimes::Regime, regimes::Regime)>,
     /// The Chladni demonstration.
     pub chladni: Chladni,
     /// The law b*(Gamma): the largest bias (fraction of mu m g) whose landing after a
@@ -389,15 +389,15 @@ fn law_range(scene: &Scene, quick: bool) -> LawRange {
 
 /// The multiplier-located period doublings (n = 1, 2, 3) classified after a long
 /// transient just below and above.
-fn doublings(scene: &Scene, quick: bool) -> Vec<(u32, f64, f64, String, String)> {
+fn doublings(scene: &Scene, quick: bool) -> Vec<(u32, f64, f64, regimes::Regime, regimes::Regime)> {
     // Near the doubling the multiplier falls like ~5 per unit Gamma, so at 0.01 away
     // |lambda| < 0.96 and 2000 flights-worth of transient leave < 1e-30 of a deviation.
     let (d, long) = if quick { (0.01, 2000) } else { (0.005, 4000) };
     (1..=3u32)
         .map(|k| {
             let pd = regimes::period_doubling_gamma(f64::from(k));
-            let below = regimes::regime_at(scene, pd - d, long, 60).label();
-            let above = regimes::regime_at(scene, pd + d, long, 60).label();
+            let below = regimes::regime_at(scene, pd - d, long, 60);
+            let above = regimes::regime_at(scene, pd + d, long, 60);
             (k, pd, d, below, above)
         })
         .collect()

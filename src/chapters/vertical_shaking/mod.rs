@@ -39,16 +39,16 @@ mod tables;
 #[derive(clap::Args, Debug, Clone)]
 pub struct Args {
     /// Peak plate acceleration in units of g, [`GAMMA`].
-    #[arg(long, default_value_t = 2.0)]
+    #[arg(long, default_value_t = GAMMA.default_value())]
     pub gamma: f64,
     /// Plate frequency f (Hz), [`FREQUENCY_HZ`].
-    #[arg(long = "frequency-hz", default_value_t = 30.0)]
+    #[arg(long = "frequency-hz", default_value_t = FREQUENCY_HZ.default_value())]
     pub frequency_hz: f64,
     /// Coulomb friction coefficient mu, [`MU`].
-    #[arg(long, default_value_t = 0.4)]
+    #[arg(long, default_value_t = MU.default_value())]
     pub mu: f64,
     /// Bias force F as a fraction of mu m g, [`BIAS`].
-    #[arg(long, default_value_t = 0.1)]
+    #[arg(long, default_value_t = BIAS.default_value())]
     pub bias: f64,
 }
 
@@ -72,7 +72,8 @@ pub const GAMMA: Flag = Flag::new(
     "dimensionless",
     Interval::closed(GAMMA_MIN, 100.0),
 )
-.why("at Gamma <= 1 the plate never throws the block; flights last ~ (Gamma - 1) T, and below 1 + 1e-6 they shrink under the resolution of the take-off phase and the flight-time table");
+.why("at Gamma <= 1 the plate never throws the block; flights last ~ (Gamma - 1) T, and below 1 + 1e-6 they shrink under the resolution of the take-off phase and the flight-time table")
+.default_value_is(2.0);
 
 /// `--frequency-hz`.
 pub const FREQUENCY_HZ: Flag = Flag::new(
@@ -81,7 +82,8 @@ pub const FREQUENCY_HZ: Flag = Flag::new(
     "Hz",
     Interval::closed(0.1, 1000.0),
 )
-.why("the plate amplitude Gamma g/omega^2 stays between a nanometre and kilometres, where the block model's absolute tolerances resolve a period");
+.why("the plate amplitude Gamma g/omega^2 stays between a nanometre and kilometres, where the block model's absolute tolerances resolve a period")
+.default_value_is(30.0);
 
 /// `--mu`.
 pub const MU: Flag = Flag::new(
@@ -90,7 +92,8 @@ pub const MU: Flag = Flag::new(
     "dimensionless",
     Interval::closed(0.01, 2.0).open_above(),
 )
-.why("dry friction between block and plate");
+.why("dry friction between block and plate")
+.default_value_is(0.4);
 
 /// `--bias`.
 pub const BIAS: Flag = Flag::new(
@@ -99,7 +102,8 @@ pub const BIAS: Flag = Flag::new(
     "fraction of mu m g",
     Interval::closed(0.0, 1.0).open_above(),
 )
-.why("the law is stated for F < mu m g");
+.why("the law is stated for F < mu m g")
+.default_value_is(0.1);
 
 /// The table of the chapter's physical flags.
 pub const FLAGS: &[Flag] = &[GAMMA, FREQUENCY_HZ, MU, BIAS, crate::flags::G];

@@ -23,6 +23,30 @@ pub struct Regime {
 }
 
 impl Regime {
+    /// The touch-and-go orbit (never at rest) of `flights` flights in `periods` periods.
+    pub const fn touch_and_go(flights: usize, periods: usize) -> Self {
+        Regime {
+            rests: false,
+            flights_per_cycle: flights,
+            periods_per_cycle: periods,
+        }
+    }
+
+    /// A periodic motion that rests between some flights (`rest P../..T`).
+    pub fn rests_between_flights(&self) -> bool {
+        self.flights_per_cycle > 0 && self.rests
+    }
+
+    /// A periodic motion that never rests (`no-rest P../..T`).
+    pub fn never_rests(&self) -> bool {
+        self.flights_per_cycle > 0 && !self.rests
+    }
+
+    /// Flights but no period up to 16 (`aperiodic`).
+    pub fn aperiodic(&self) -> bool {
+        self.flights_per_cycle == 0 && self.periods_per_cycle > 0
+    }
+
     /// Short label: `rest P1/1T`, `no-rest P2/2T`, `aperiodic`, `no flight`.
     pub fn label(&self) -> String {
         match (self.flights_per_cycle, self.periods_per_cycle) {
@@ -119,10 +143,10 @@ pub fn sweep(scene: &Scene, gammas: &[f64], transient: usize, observe: usize) ->
 pub struct Boundary {
     /// Gamma of the boundary (midpoint of the final bracket, transient `n`).
     pub gamma: f64,
-    /// Regime below and above.
-    pub below: String,
+    /// Regime below.
+    pub below: Regime,
     /// Regime above.
-    pub above: String,
+    pub above: Regime,
     /// Final bracket width of the bisection.
     pub bracket: f64,
     /// The same boundary located after a transient four times longer.
@@ -191,8 +215,8 @@ pub fn boundaries(
         };
         Boundary {
             gamma: g,
-            below: left.label(),
-            above: right.label(),
+            below: left,
+            above: right,
             bracket: width,
             gamma_long: g_long,
             method: "classifier",
@@ -211,22 +235,20 @@ fn merge_period_doublings(found: Vec<Boundary>) -> Vec<Boundary> {
     let mut i = 0;
     while i < found.len() {
         let b = &found[i];
-        let n = b
-            .below
-            .strip_prefix("no-rest P1/")
-            .and_then(|r| r.strip_suffix('T'))
-            .and_then(|r| r.parse::<u32>().ok());
+        // a touch-and-go orbit of one flight in n periods, period-doubling to two in 2n
+        let n = (b.below.never_rests() && b.below.flights_per_cycle == 1)
+            .then_some(b.below.periods_per_cycle);
         if let Some(n) = n {
-            let p2 = format!("no-rest P2/{}T", 2 * n);
+            let p2 = Regime::touch_and_go(2, 2 * n);
             let j = if b.above == p2 {
                 Some(i)
-            } else if b.above == "aperiodic" && found.get(i + 1).is_some_and(|c| c.above == p2) {
+            } else if b.above.aperiodic() && found.get(i + 1).is_some_and(|c| c.above == p2) {
                 Some(i + 1)
             } else {
                 None
             };
             if let Some(j) = j {
-                let pd = period_doubling_gamma(f64::from(n));
+                let pd = period_doubling_gamma(n as f64);
                 if pd.is_finite() {
                     let lo = b.gamma - b.accuracy();
                     let hi = found[j].gamma + found[j].accuracy();
@@ -234,7 +256,7 @@ fn merge_period_doublings(found: Vec<Boundary>) -> Vec<Boundary> {
                     // it falls ~5 per unit Gamma there, so Gamma to ~1e-9 (bisection 1e-12).
                     out.push(Boundary {
                         gamma: pd,
-                        below: b.below.clone(),
+                        below: b.below,
                         above: p2,
                         bracket: 1e-9,
                         gamma_long: pd,

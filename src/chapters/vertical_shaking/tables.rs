@@ -10,8 +10,8 @@ pub fn regime_boundaries(bounds: &[Boundary]) -> String {
         t.push_str(&format!(
             "| {:.6} | {} | {} | {} | {:.1e} | {:.1e} | {:.1e} |\n",
             b.gamma,
-            b.below,
-            b.above,
+            b.below.label(),
+            b.above.label(),
             match b.band {
                 Some((lo, hi)) => format!("multiplier = -1 (classifier band {lo:.3} to {hi:.3})"),
                 None => "classifier".to_string(),

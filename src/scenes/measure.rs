@@ -1,4 +1,5 @@
-//! Observables and timed runs: the block's steady drift by every method.
+//! Timed runs of the scenes and their observables: the block's steady drift by every
+//! method, the stick's mean speed (chapter 7's work-precision charts, the benchmarks).
 //!
 //! The drift is the mean horizontal velocity `(x(t_b) - x(t_a)) / (t_b - t_a)` over
 //! whole drive periods after a transient. Every run is the workbook's block model
@@ -6,7 +7,7 @@
 //! [`crate::physics::block::BlockRun`]; Moreau-Jean runs (its contact form) use a step
 //! that divides the period, so `t_a` and `t_b` are step boundaries.
 
-use super::block_scene::BlockScene;
+use super::block::BlockScene;
 use crate::numerics::hybrid::{Options, Outcome};
 use crate::numerics::timestepping::{self as mj, MjOptions};
 use crate::physics::block::contact_form::BlockContact;

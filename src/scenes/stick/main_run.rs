@@ -1,15 +1,17 @@
-//! The chapter's main run (the reader's own scene, set by the flags) and its named
-//! parameters and results: one piece of code for the CLI's `run` and for `workbook lab`,
-//! so that the lab shows the CLI's numbers (tests/lab.rs compares them).
+//! The main run of a stick scene (the reader's own scene, set by the flags of
+//! `workbook stick-state-machine` or by the lab's sliders) and its named parameters and
+//! results: one piece of code for the CLI and for `workbook lab`, so that the lab shows
+//! the CLI's numbers (tests/lab.rs compares them).
 
-use super::{event_counts, phase_fractions, round, run_printed_from, run_scene_from, Args};
-use super::{Rules, Start, SECONDS_PER_CYCLE};
+use super::{event_counts, phase_fractions, run_printed_from, run_scene_from};
+use super::{Choice as _, ContactMethod, Rules, Scene, Start, SECONDS_PER_CYCLE};
 use crate::error::Result;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::Method;
 use crate::physics::stick::printed::Printed;
 use crate::physics::stick::run::{Recording, RunSummary, StickOutcome};
 use crate::physics::stick::{InvalidReason, StickParams};
+use crate::scenes::round;
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 
@@ -39,15 +41,26 @@ pub fn check_work(p: &StickParams, duration_s: f64, allow_long_runs: bool) -> Re
     )
 }
 
+/// How the main run is run: the choices of `workbook stick-state-machine` besides the
+/// stick's parameters (which are in its [`StickParams`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Settings {
+    /// The scene whose values the flags overrode.
+    pub scene: Scene,
+    /// The starting state.
+    pub start: Start,
+    /// The transition rules.
+    pub rules: Rules,
+    /// The integrator of the contact modes.
+    pub method: ContactMethod,
+    /// Its relative (and absolute) tolerance.
+    pub rtol: f64,
+}
+
 /// The report's `params` of the main run, in the CLI's order.
-pub fn params(args: &Args, p: &StickParams, duration_s: f64) -> Vec<(&'static str, Value)> {
-    let start = if args.start == Start::Static {
-        "static"
-    } else {
-        "authors-code"
-    };
+pub fn params(s: &Settings, p: &StickParams, duration_s: f64) -> Vec<(&'static str, Value)> {
     vec![
-        ("scene", json!(format!("{:?}", args.scene).to_lowercase())),
+        ("scene", json!(s.scene.name())),
         ("length_m", json!(p.length_m)),
         ("mass_kg", json!(p.mass_kg)),
         ("stiffness_nm_per_rad", json!(p.stiffness_nm_per_rad)),
@@ -62,10 +75,10 @@ pub fn params(args: &Args, p: &StickParams, duration_s: f64) -> Vec<(&'static st
             "collision_angle",
             json!(format!("{:?}", p.collision_angle).to_lowercase()),
         ),
-        ("rtol", json!(args.rtol)),
-        ("method", json!(args.method.method().name())),
-        ("rules", json!(format!("{:?}", args.rules).to_lowercase())),
-        ("start", json!(start)),
+        ("rtol", json!(s.rtol)),
+        ("method", json!(s.method.method().name())),
+        ("rules", json!(s.rules.name())),
+        ("start", json!(s.start.name())),
     ]
 }
 
@@ -74,20 +87,18 @@ pub fn params(args: &Args, p: &StickParams, duration_s: f64) -> Vec<(&'static st
 /// the printed lines that fired).
 pub type MainRuns = (RunSummary, RunSummary, BTreeMap<&'static str, u64>);
 
-/// Runs the main run of the flags `args` with the validated `p`, `duration_s`, `opts`.
+/// Runs the main run of the settings `s` with the validated `p`, `duration_s`, `opts`.
 pub fn run_main(
-    args: &Args,
+    s: &Settings,
     p: &StickParams,
     duration_s: f64,
     opts: &Options,
     rec: Recording,
 ) -> MainRuns {
-    let physical = run_scene_from(p, args.start, duration_s, opts, rec);
-    let (main, fired) = match args.rules {
+    let physical = run_scene_from(p, s.start, duration_s, opts, rec);
+    let (main, fired) = match s.rules {
         Rules::Physical => (physical.clone(), Default::default()),
-        Rules::Printed => {
-            run_printed_from(p, Printed::AS_PRINTED, args.start, duration_s, opts, rec)
-        }
+        Rules::Printed => run_printed_from(p, Printed::AS_PRINTED, s.start, duration_s, opts, rec),
     };
     (physical, main, fired)
 }
@@ -184,10 +195,10 @@ pub fn results(
     out
 }
 
-/// The late mean speed of C (m/s) of a short run (the cells of the chapter's speed maps),
-/// NaN unless the run completed: what the lab's map shows.
+/// The late mean speed of C (m/s) of a short run (the cells of chapter 6's speed maps in
+/// quick mode), NaN unless the run completed: what the lab's map shows.
 pub fn map_cell_speed(p: &StickParams, opts: &Options) -> f64 {
-    super::maps::late_speed(p, opts, true)
+    super::late_speed(p, opts, true)
 }
 
 #[cfg(test)]
@@ -211,7 +222,7 @@ mod tests {
     fn a_nan_in_the_results_ends_the_run_invalid_and_is_never_printed() {
         // the guard of `results` (the CLI's `--theta0-rad 1e-6` no longer reaches it:
         // DOP853's NaN there is repeated with DOPRI5, see `dopri5_fallback`)
-        let p = super::super::scene_params(super::super::Scene::Jamming, None);
+        let p = Scene::Jamming.params(None);
         let (mut s, _) = short_run(&p, Method::Dop853);
         s.mean_velocity_mps = f64::NAN;
         let out = results(&mut s, &p, &BTreeMap::new());
@@ -229,7 +240,7 @@ mod tests {
 
     #[test]
     fn only_a_non_finite_dop853_run_is_repeated_with_dopri5() {
-        let p = super::super::scene_params(super::super::Scene::Jamming, None);
+        let p = Scene::Jamming.params(None);
         let (mut s, opts) = short_run(&p, Method::Dop853);
         assert!(dopri5_fallback(&s, &opts).is_none(), "a completed run");
         s.outcome = StickOutcome::Invalid(InvalidReason::NonFinite {
