@@ -398,6 +398,18 @@ pub fn charts(wp: &[WorkPoint], title: &str) -> [Chart; 2] {
     [evals, wall]
 }
 
+impl From<&crate::scenes::measure::Measured> for Run {
+    /// A scene's measured run as a rung of the ladder sees it.
+    fn from(m: &crate::scenes::measure::Measured) -> Self {
+        Run {
+            value: m.value,
+            rhs_evals: m.rhs_evals,
+            steps: m.steps,
+            completed: m.completed,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

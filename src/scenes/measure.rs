@@ -33,18 +33,6 @@ pub struct Measured {
     pub note: &'static str,
 }
 
-impl Measured {
-    /// The run as a rung of a work-precision ladder sees it.
-    pub fn run(&self) -> crate::ladder::Run {
-        crate::ladder::Run {
-            value: self.value,
-            rhs_evals: self.rhs_evals,
-            steps: self.steps,
-            completed: self.completed,
-        }
-    }
-}
-
 /// The drift window: `(t_a, t_b)` after `transient` periods, `cycles` periods long (s).
 pub fn window(scene: &BlockScene, transient: u32, cycles: u32) -> (f64, f64) {
     let t = scene.period_s();
@@ -110,10 +98,17 @@ pub fn drift_mj(scene: &BlockScene, steps_per_period: u32, (t_a, t_b): (f64, f64
     }
 }
 
-/// Runs `f` `repeats` times; returns its (last) result and the minimum wall time (s)
-/// ([`crate::ladder::timed`]).
-pub fn timed<R>(repeats: u32, f: impl FnMut() -> R) -> (R, f64) {
-    crate::ladder::timed(crate::ladder::Timing::MinOf(repeats), f)
+/// Runs `f` `repeats` times (at least once); returns its (last) result and the minimum
+/// wall time (s), the same measure as the ladder's `Timing::MinOf`.
+pub fn timed<R>(repeats: u32, mut f: impl FnMut() -> R) -> (R, f64) {
+    let mut best_s = f64::INFINITY;
+    let mut out = None;
+    for _ in 0..repeats.max(1) {
+        let start = std::time::Instant::now();
+        out = Some(f());
+        best_s = best_s.min(start.elapsed().as_secs_f64());
+    }
+    (out.expect("at least one run"), best_s)
 }
 
 /// The block's drift by the workbook's block model ([`crate::physics::block`]) with the

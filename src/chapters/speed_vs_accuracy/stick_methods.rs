@@ -122,7 +122,7 @@ pub fn measure_scene(p: &StickParams, plan: &Plan) -> SceneMethods {
         let m = stick_speed(&model, cycles, &opts).0;
         Run {
             value: if m.completed { m.value } else { f64::NAN },
-            ..m.run()
+            ..crate::ladder::Run::from(&m)
         }
     };
     let reference = event(Method::Dop853, 1e-13).value;

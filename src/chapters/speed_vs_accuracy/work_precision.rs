@@ -166,7 +166,7 @@ pub fn measure(
         ladder.iter().copied(),
         Timing::MinOf(repeats),
         relative_to(reference),
-        |s| run(s).run(),
+        |s| crate::ladder::Run::from(&run(s)),
     )
 }
 
