@@ -42,14 +42,15 @@ pub fn flight_needs_gamma(_doc: &Statements, ev: &Evidence) -> Claim {
 /// The take-off phase sin(omega t) = 1/Gamma (the workbook's derivation).
 pub fn takeoff(doc: &Statements, ev: &Evidence) -> Claim {
     // The take-off is a located guard crossing: its budget (evidence::takeoff_budget_rad)
-    // is the event's 4 ulps of time, the guard's rounding over its slope and asin's
-    // condition, 3.4e-15 rad at Gamma = 2, growing as 1/cos(phi_0) towards Gamma = 1.
+    // is the driver's event-time tolerance times omega, the guard's rounding over its
+    // slope and asin's condition, 1.3e-14 rad at the default scene, growing as
+    // 1/cos(phi_0) towards Gamma = 1.
     let tol = ev.takeoff_budget_rad;
     Claim::draft(
         Check::Consistency,
         "takeoff-phase",
         "3.1.2 (derived)",
-        "The block leaves the plate when the plate's acceleration reaches -g: sin(ω t) = 1/Γ (first take-off from rest; located event; tolerance: the rounding budget ε [5 φ₀ + 4 (1 + Γ)/(Γ cos φ₀) + tan φ₀ + 1], the event located to 4 ulps of its time, the guard's rounding over its slope, asin's condition). Consistency check: the located take-off is the zero of the model's guard g + z_s'' = 0, i.e. sin(ω t) = 1/Γ by construction; no document could fail it here, so it is not counted as confirmation.",
+        "The block leaves the plate when the plate's acceleration reaches -g: sin(ω t) = 1/Γ (first take-off from rest; located event; tolerance: the rounding budget ω t_tol + ε [2 φ₀ + 4 (1 + Γ)/(Γ cos φ₀) + tan φ₀ + 1], the event located to the driver's time tolerance t_tol (4 ulps of the run's end below 1 s, of max(t, 1 s) beyond), the guard's rounding over its slope, asin's condition). Consistency check: the located take-off is the zero of the model's guard g + z_s'' = 0, i.e. sin(ω t) = 1/Γ by construction; no document could fail it here, so it is not counted as confirmation.",
     )
     .close(
         (doc.takeoff_factor / ev.scene.gamma).asin(),
@@ -258,7 +259,7 @@ pub fn flight_time(doc: &Statements, ev: &Evidence) -> Claim {
         "flight-time-2vz-over-g",
         "3.1.2",
         &format!(
-            "As printed: each flight starts at v_z = ω δ_z and lasts t_f = 2 v_z/g. An approximation: exact in the limit of flights of n whole periods from rest, n -> infinity, where t_f g/v_z = 2 n π/Γₙ at Γₙ = sqrt(1 + (n π)²) (within 2/(2 (n π)²) of 2). Simulated t_f g/v_z just below Γₙ and the closed form: {table}; at the chapter's Γ = {:.2}: {:.3}. Where it holds: {}. Tolerance per n: twice the error estimate of the offset below Γₙ (runs at 1e-6 and 1e-5 below it) plus the rounding of the event times, 8 ε t_end/t_f relative.",
+            "As printed: each flight starts at v_z = ω δ_z and lasts t_f = 2 v_z/g. An approximation: exact in the limit of flights of n whole periods from rest, n -> infinity, where t_f g/v_z = 2 n π/Γₙ at Γₙ = sqrt(1 + (n π)²) (within 2/(2 (n π)²) of 2). Simulated t_f g/v_z just below Γₙ and the closed form: {table}; at the chapter's Γ = {:.2}: {:.3}. Where it holds: {}. Tolerance per n: twice the error estimate of the offset below Γₙ (runs at 1e-6 and 1e-5 below it) plus the rounding of the event times, 2 (4 ε max(t_end, 1 s) + ε t_end)/t_f relative.",
             ev.scene.gamma,
             ev.here.0,
             range_text(ev, &ev.law_range.flight)
@@ -292,7 +293,7 @@ pub fn bias_law(doc: &Statements, ev: &Evidence) -> Claim {
         "bias-law-mu-eff",
         "3.1.2",
         &format!(
-            "As printed: F = m g v_ave/v_z, μ_eff = v_ave/v_z for F < μ m g. An approximation: exact in the same limit, where (v_ave/v_z)/μ_eff = n π/Γₙ (take-off speed δ_z ω overestimated by Γₙ/(n π)); simulated just below Γₙ and closed form: {table_law}; at the chapter's Γ = {:.2} the ratio is {law_here}. Where it holds: {}. Tolerance per n: twice the error estimate of the offset below Γₙ plus the slip before take-off (exact against no-contact-slip runs), plus the rounding of positions and event times, ε (n_seg + 8) t_end/Δt relative.",
+            "As printed: F = m g v_ave/v_z, μ_eff = v_ave/v_z for F < μ m g. An approximation: exact in the same limit, where (v_ave/v_z)/μ_eff = n π/Γₙ (take-off speed δ_z ω overestimated by Γₙ/(n π)); simulated just below Γₙ and closed form: {table_law}; at the chapter's Γ = {:.2} the ratio is {law_here}. Where it holds: {}. Tolerance per n: twice the error estimate of the offset below Γₙ plus the slip before take-off (exact against no-contact-slip runs), plus the rounding of positions and event times, [ε (n_seg + 2) t_end + 2 (4 ε max(t_end, 1 s) + ε t_end)]/Δt relative.",
             ev.scene.gamma,
             range_text(ev, &ev.law_range.law)
         ),

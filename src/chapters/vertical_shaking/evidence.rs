@@ -8,7 +8,8 @@ use super::chladni::{demonstrate, Chladni};
 use super::regimes::{self, gamma_n, Boundary, SweepPoint};
 use super::scene::{run, Model, Scene, Stats};
 use crate::ladder::WorkPoint;
-use crate::physics::block::{simulate_block, BlockOptions, BlockParams};
+use crate::numerics::events::time_tolerance;
+use crate::physics::block::{simulate_block, time_tolerance_of_run, BlockOptions, BlockParams};
 use crate::physics::plate::PlateMotion;
 use std::f64::consts::PI;
 
@@ -134,13 +135,15 @@ pub struct NearGammaN {
 /// (v_ave/v_z)/mu_eff, both read off event times and positions of a run of `t_end`
 /// seconds in `segments` closed-form segments.
 ///
-/// - Times: each event is located to 4 ulps of its time and rounded once more, so a
-///   flight t_f = t_land - t_takeoff is off by up to 8 eps t_end, relative
-///   8 eps t_end/t_f.
+/// - Times: each event is located to the driver's tolerance (at most 4 ulps of
+///   max(t_end, 1 s), [`event_tolerance_s`]) and its time rounded once more (an ulp of
+///   t_end), so a flight t_f = t_land - t_takeoff is off by up to
+///   2 (4 eps max(t_end, 1 s) + eps t_end), relative to t_f.
 /// - Positions: every segment adds a closed-form increment to x, rounding it by eps
-///   |x| <= eps v_ave t_end (the block has moved at most that far), so over `segments`
-///   segments and the two ends the cycle's displacement over `dt` seconds carries
-///   eps (segments + 8) v_ave t_end, relative eps (segments + 8) t_end/dt.
+///   |x| <= eps v_ave t_end (the block has moved at most that far), and the two ends'
+///   times move them by v_ave times their time error: over `segments` segments the
+///   cycle's displacement over `dt` seconds carries eps v_ave [(segments + 2) t_end +
+///   2 (4 max(t_end, 1 s) + t_end)], relative to v_ave dt.
 ///
 /// Returns the `(flight, law)` budgets (absolute, in the values' units) for the values
 /// `tf`, `law` of a run of `t_end_s` in `segments` segments whose mean flight lasts
@@ -153,26 +156,36 @@ pub fn near_rounding(
     window_s: f64,
 ) -> (f64, f64) {
     let eps = f64::EPSILON;
+    let times = 2.0 * (4.0 * eps * t_end_s.max(1.0) + eps * t_end_s); // formula: 2 (4 eps max(t, 1) + eps t)
     (
-        8.0 * eps * t_end_s / flight_s * tf.abs(), // formula: 8 eps t_end/t_f x value
-        eps * (segments as f64 + 8.0) * t_end_s / window_s * law.abs(), // formula: eps (n_seg + 8) t_end/dt x value
+        times / flight_s * tf.abs(), // formula: time error / t_f x value
+        (eps * (segments as f64 + 2.0) * t_end_s + times) / window_s * law.abs(), // formula: (eps (n + 2) t_end + time error)/dt x value
     )
 }
 
-/// The rounding budget of the located take-off phase (rad) at `gamma`: the event is
-/// located to 4 ulps of its time (phase 4 eps phi_0) and the reported phase omega t is
-/// rounded once more (eps phi_0); the guard n = g (1 - Gamma sin(omega t)) is rounded by
-/// about 4 ulps of its largest term g (1 + Gamma) (a sine, a product, a difference),
-/// which moves its zero by that over its slope g Gamma cos(phi_0): 4 eps (1 + Gamma)/
-/// (Gamma cos(phi_0)); the expected asin(1/Gamma) carries the rounding of 1/Gamma times
-/// the condition of asin, eps tan(phi_0), plus an ulp. Near Gamma = 1 (cos(phi_0) ->
-/// 0) the take-off is a grazing zero and the budget grows as 1/cos(phi_0): 1.9e-12 rad
-/// at the flag's end Gamma = 1 + 1e-6, 3.4e-15 at Gamma = 2.
-pub fn takeoff_budget_rad(gamma: f64) -> f64 {
+/// The event-time tolerance of a block run that ends at `t_end_s`, for an event at
+/// `t_s` (s): 4 ulps of the run's end below 1 s, else 4 ulps of max(t, 1 s) (the
+/// driver's rule, `physics::block::time_tolerance_of_run`).
+fn event_tolerance_s(t_s: f64, t_end_s: f64) -> f64 {
+    time_tolerance_of_run(0.0, t_end_s).unwrap_or_else(|| time_tolerance(t_s))
+}
+
+/// The rounding budget of the take-off phase (rad) located at `gamma`, `omega` in a
+/// run that ends at `t_end_s`: the event is located to the driver's time tolerance
+/// t_tol (4 ulps of the run's end below 1 s, of max(t, 1 s) beyond), phase omega t_tol,
+/// and the phase omega t is rounded twice (the guard's argument and the reported
+/// value), 2 eps phi_0; the guard n = g (1 - Gamma sin(omega t)) is rounded by about 4
+/// ulps of its largest term g (1 + Gamma) (a sine, a product, a difference), which moves
+/// its zero by that over its slope g Gamma cos(phi_0): 4 eps (1 + Gamma)/(Gamma
+/// cos(phi_0)); the expected asin(1/Gamma) carries the rounding of 1/Gamma times the
+/// condition of asin, eps tan(phi_0), plus an ulp. Near Gamma = 1 (cos(phi_0) -> 0) the
+/// take-off is a grazing zero and the budget grows as 1/cos(phi_0).
+pub fn takeoff_budget_rad(gamma: f64, omega: f64, t_end_s: f64) -> f64 {
     let eps = f64::EPSILON;
     let phi0 = (1.0 / gamma).asin();
     let c = phi0.cos();
-    eps * (5.0 * phi0 + 4.0 * (1.0 + gamma) / (gamma * c) + phi0.tan() + 1.0) // formula: eps [5 phi_0 + 4 (1 + Gamma)/(Gamma cos phi_0) + tan phi_0 + 1]
+    let located = omega * event_tolerance_s(phi0 / omega, t_end_s); // formula: omega t_tol
+    located + eps * (2.0 * phi0 + 4.0 * (1.0 + gamma) / (gamma * c) + phi0.tan() + 1.0) // formula: + eps [2 phi_0 + 4 (1 + Gamma)/(Gamma cos phi_0) + tan phi_0 + 1]
 }
 
 /// The rounding budget of the sliding block's ratio <f>/(mu <N>) over a run of
@@ -257,7 +270,7 @@ pub fn gather(scene: &Scene, quick: bool) -> Evidence {
         leaves: (leaves(scene, 0.999), leaves(scene, 1.001)),
         fast: fast_limits(scene, quick),
         sliding: sliding(scene),
-        takeoff_budget_rad: takeoff_budget_rad(scene.gamma),
+        takeoff_budget_rad: takeoff_budget_rad(scene.gamma, scene.omega(), hop.run.t_end_s),
         small_force: small_force(scene),
         near_gamma_n: [1.0, 2.0, 3.0]
             .iter()
