@@ -16,8 +16,9 @@
 //! (adding a chapter shifts no other chapter's draws); `WORKBOOK_FUZZ_SEED=<u64>` draws
 //! another set and `WORKBOOK_FUZZ_CASES=<n>` changes the number of cases per chapter
 //! (default 20; vertical-shaking, 20 times slower, 40 % of it). `long_fuzz_has_no_exit_1`
-//! (ignored; `scripts/fuzz-long.sh`) runs thousands of accepted inputs on the release
-//! binary and counts the exit-1 runs.
+//! (ignored; `scripts/fuzz-long.sh`) runs thousands of accepted inputs in process,
+//! through the CLI's own entry point, and counts per chapter the accepted, refused,
+//! `invalid` and exit-1 runs.
 
 use std::io::Read;
 use std::process::{Command, Stdio};
@@ -398,23 +399,17 @@ fn env_or<T: std::str::FromStr>(name: &str, default: T) -> T {
         .unwrap_or(default)
 }
 
-/// What a batch of cases did: accepted, refused, exit 1, slowest (ms), per chapter
-/// `(accepted, exit 1)`, not run (the time budget ran out), and the violations.
+/// What a batch of cases did: accepted, refused, slowest (ms), and the violations.
 #[derive(Default)]
 struct Tally {
     accepted: usize,
     refused: usize,
-    exit_1: usize,
     slowest_ms: usize,
-    not_run: usize,
-    per_chapter: std::collections::BTreeMap<String, (usize, usize)>,
     failures: Vec<String>,
 }
 
-/// Runs `cases` on `bin` with `jobs` workers, each case under `limit`; no case starts
-/// after `budget`.
-fn run_all(bin: &str, cases: &[Case], jobs: usize, limit: Duration, budget: Duration) -> Tally {
-    let start = Instant::now();
+/// Runs `cases` on `bin` (each a subprocess) with `jobs` workers, each case under `limit`.
+fn run_all(bin: &str, cases: &[Case], jobs: usize, limit: Duration) -> Tally {
     let next = AtomicUsize::new(0);
     let tally = Mutex::new(Tally::default());
     std::thread::scope(|s| {
@@ -422,19 +417,11 @@ fn run_all(bin: &str, cases: &[Case], jobs: usize, limit: Duration, budget: Dura
             s.spawn(|| loop {
                 let i = next.fetch_add(1, Ordering::SeqCst);
                 let Some(case) = cases.get(i) else { break };
-                if start.elapsed() > budget {
-                    tally.lock().unwrap().not_run += 1;
-                    continue;
-                }
                 let (code, out, err, secs) = run_case(bin, case, limit);
                 let why = violation(case, code, &out, &err);
                 let mut t = tally.lock().unwrap();
-                let chapter = t.per_chapter.entry(case.args[0].clone()).or_default();
-                chapter.0 += usize::from(code == 0 || code == 1);
-                chapter.1 += usize::from(code == 1);
                 t.accepted += usize::from(code == 0 || code == 1);
                 t.refused += usize::from(code == 2);
-                t.exit_1 += usize::from(code == 1);
                 t.slowest_ms = t.slowest_ms.max((secs * 1e3) as usize);
                 if let Some(why) = why {
                     t.failures
@@ -455,7 +442,7 @@ fn fuzzed_inputs_keep_the_contract() {
     eprintln!("fuzz: seed {seed} ({n} cases per chapter; WORKBOOK_FUZZ_SEED to change)");
     let cases = cases(seed, n, false);
     let bin = env!("CARGO_BIN_EXE_workbook");
-    let t = run_all(bin, &cases, 2, Duration::from_secs(90), Duration::MAX);
+    let t = run_all(bin, &cases, 2, Duration::from_secs(90));
     eprintln!(
         "fuzz: {} accepted, {} refused, slowest case {} ms",
         t.accepted, t.refused, t.slowest_ms
@@ -469,47 +456,191 @@ fn fuzzed_inputs_keep_the_contract() {
     );
 }
 
-/// The long fuzz (`scripts/fuzz-long.sh` runs it on the release binary): accepted
-/// values only (inside the documented ranges and at their ends), every chapter from
-/// its own seed, interleaved, until `WORKBOOK_FUZZ_CASES` per chapter (default 400)
-/// or the budget `WORKBOOK_FUZZ_SECONDS` (default 240) runs out, on
-/// `WORKBOOK_FUZZ_JOBS` workers (default the machine's cores). Binary:
-/// `WORKBOOK_FUZZ_BIN` (default the test profile's). Prints the count of exit-1 runs
-/// per chapter; any exit 1 or other breach of the contract fails it.
+/// One chapter's share of the long fuzz: its own draws (seeded by [`chapter_seed`]),
+/// how many of them were run and the wall time they took, and the counts by outcome.
+struct Lane {
+    chapter: &'static str,
+    cases: Vec<Case>,
+    next: usize,
+    busy_s: f64,
+    accepted: usize,
+    refused: usize,
+    invalid: usize,
+    exit_1: usize,
+}
+
+/// Whether a run's JSON says that it could not vouch for its answer: an outcome (of
+/// the main run or an evidence run) whose value is the word `invalid`.
+fn says_invalid(out: &str) -> bool {
+    fn walk(v: &serde_json::Value) -> bool {
+        match v {
+            serde_json::Value::String(s) => s == "invalid",
+            serde_json::Value::Array(a) => a.iter().any(walk),
+            serde_json::Value::Object(o) => o.values().any(walk),
+            _ => false,
+        }
+    }
+    serde_json::from_str::<serde_json::Value>(out.trim()).is_ok_and(|v| walk(&v))
+}
+
+/// One case in this process: the CLI's own entry point (`cli::run_cli`, the code the
+/// binary's `main` calls), its stdout and stderr captured; a panic is caught and
+/// reported as exit 101, as the process would end. Returns (code, stdout, stderr).
+fn run_in_process(case: &Case) -> (i32, String, String) {
+    let (mut out, mut err) = (Vec::new(), Vec::new());
+    let argv = std::iter::once("workbook".to_string()).chain(case.args.iter().cloned());
+    let code = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        locomotion_workbook::cli::run_cli(argv, &mut out, &mut err)
+    }))
+    .unwrap_or(101);
+    (
+        code,
+        String::from_utf8_lossy(&out).into_owned(),
+        String::from_utf8_lossy(&err).into_owned(),
+    )
+}
+
+/// The command line of a case as a shell would take it (each argument quoted).
+fn command_line(case: &Case) -> String {
+    let quoted: Vec<String> = case.args.iter().map(|a| format!("'{a}'")).collect();
+    format!("workbook {}", quoted.join(" "))
+}
+
+/// The lane a free worker takes next: among the chapters with draws left, the one
+/// that has had the least wall time so far (so the cheap chapters run all their draws
+/// in the first seconds and the costly ones share what is left evenly).
+fn next_case(lanes: &mut [Lane]) -> Option<(usize, Case)> {
+    let i = (0..lanes.len())
+        .filter(|&i| lanes[i].next < lanes[i].cases.len())
+        .min_by(|&a, &b| lanes[a].busy_s.total_cmp(&lanes[b].busy_s))?;
+    let lane = &mut lanes[i];
+    lane.next += 1;
+    Some((i, lane.cases[lane.next - 1].clone()))
+}
+
+/// The long fuzz (`scripts/fuzz-long.sh`): accepted values only (inside the
+/// documented ranges and at their ends), every chapter from its own seed, run in this
+/// process through the CLI's entry point (`--quick`, `--json`, no figures) on
+/// `WORKBOOK_FUZZ_JOBS` threads (default 2), until each chapter has run
+/// `WORKBOOK_FUZZ_CASES` draws (default 500) or `WORKBOOK_FUZZ_SECONDS` (default 240)
+/// have passed; a free thread takes the chapter with the least wall time so far.
+/// Prints per chapter the accepted runs (exit 0 or 1), the refused ones (exit 2: a
+/// coupled range), those that ended `invalid` and the exit-1 runs, with the command
+/// line of every exit-1 run; any exit 1 or other breach of the contract fails it. A
+/// case still running 120 s after it started ends the test with its command line.
 #[test]
 #[ignore = "minutes long: scripts/fuzz-long.sh"]
 fn long_fuzz_has_no_exit_1() {
     let seed: u64 = env_or("WORKBOOK_FUZZ_SEED", 0x10c0_2026);
-    let n: usize = env_or("WORKBOOK_FUZZ_CASES", 400);
+    let n: usize = env_or("WORKBOOK_FUZZ_CASES", 500);
     let budget = Duration::from_secs(env_or("WORKBOOK_FUZZ_SECONDS", 240));
-    let bin: String = env_or(
-        "WORKBOOK_FUZZ_BIN",
-        env!("CARGO_BIN_EXE_workbook").to_string(),
-    );
-    let jobs: usize = env_or(
-        "WORKBOOK_FUZZ_JOBS",
-        std::thread::available_parallelism().map_or(2, |n| n.get()),
-    );
-    let cases = cases(seed, n, true);
+    let jobs: usize = env_or("WORKBOOK_FUZZ_JOBS", 2);
+    let lanes: Vec<Lane> = table()
+        .into_iter()
+        .filter(|(_, flags)| !flags.is_empty())
+        .map(|(chapter, flags)| {
+            let mut rng = Rng(chapter_seed(seed, chapter));
+            let cases = (0..n)
+                .map(|_| {
+                    let mut c = make_case(&mut rng, chapter, &flags, true);
+                    if !c.args.iter().any(|a| a == "--json") {
+                        c.args.push("--json".into());
+                    }
+                    c
+                })
+                .collect();
+            Lane {
+                chapter,
+                cases,
+                next: 0,
+                busy_s: 0.0,
+                accepted: 0,
+                refused: 0,
+                invalid: 0,
+                exit_1: 0,
+            }
+        })
+        .collect();
     eprintln!(
-        "long fuzz: seed {seed}, {} cases ({n} per chapter), budget {} s, binary {bin}",
-        cases.len(),
+        "long fuzz: seed {seed}, {n} draws per chapter, {} chapters, budget {} s, {jobs} threads, in process",
+        lanes.len(),
         budget.as_secs()
     );
-    let t = run_all(&bin, &cases, jobs, Duration::from_secs(120), budget);
-    for (chapter, (accepted, exit_1)) in &t.per_chapter {
-        eprintln!("long fuzz: {chapter}: {accepted} accepted, {exit_1} exit 1");
+    let start = Instant::now();
+    let lanes = Mutex::new(lanes);
+    let failures = Mutex::new(Vec::<String>::new());
+    let running: Vec<Mutex<Option<(Instant, String)>>> =
+        (0..jobs.max(1)).map(|_| Mutex::new(None)).collect();
+    let done = AtomicUsize::new(0);
+    std::thread::scope(|s| {
+        for slot in &running {
+            let (lanes, failures, done) = (&lanes, &failures, &done);
+            s.spawn(move || {
+                while start.elapsed() < budget {
+                    let Some((i, case)) = next_case(&mut lanes.lock().unwrap()) else {
+                        break;
+                    };
+                    *slot.lock().unwrap() = Some((Instant::now(), command_line(&case)));
+                    let t0 = Instant::now();
+                    let (code, out, err) = run_in_process(&case);
+                    let secs = t0.elapsed().as_secs_f64();
+                    *slot.lock().unwrap() = None;
+                    let why = violation(&case, code, &out, &err);
+                    let mut ls = lanes.lock().unwrap();
+                    let lane = &mut ls[i];
+                    lane.busy_s += secs;
+                    lane.accepted += usize::from(code == 0 || code == 1);
+                    lane.refused += usize::from(code == 2);
+                    lane.invalid += usize::from(code == 0 && says_invalid(&out));
+                    lane.exit_1 += usize::from(code == 1);
+                    if let Some(why) = why {
+                        let line = format!("{}: {why}", command_line(&case));
+                        eprintln!("long fuzz: {line}");
+                        failures.lock().unwrap().push(line);
+                    }
+                }
+                done.fetch_add(1, Ordering::SeqCst);
+            });
+        }
+        // The watchdog: a case that runs past 120 s ends the test with its command line.
+        while done.load(Ordering::SeqCst) < running.len() {
+            std::thread::sleep(Duration::from_millis(200));
+            for slot in &running {
+                if let Some((t0, line)) = slot.lock().unwrap().as_ref() {
+                    if t0.elapsed() > Duration::from_secs(120) {
+                        eprintln!("long fuzz: {line}: still running after 120 s");
+                        std::process::exit(1);
+                    }
+                }
+            }
+        }
+    });
+    let wall_s = start.elapsed().as_secs_f64();
+    let lanes = lanes.into_inner().unwrap();
+    let mut total = [0usize; 5];
+    for l in &lanes {
+        eprintln!(
+            "long fuzz: {:<22} {:>5} accepted, {:>4} refused (exit 2), {:>3} invalid, {} exit 1; {:>4} of {} draws run in {:.1} s",
+            l.chapter, l.accepted, l.refused, l.invalid, l.exit_1, l.next, l.cases.len(), l.busy_s
+        );
+        for (t, x) in total
+            .iter_mut()
+            .zip([l.accepted, l.refused, l.invalid, l.exit_1, l.next])
+        {
+            *t += x;
+        }
     }
     eprintln!(
-        "long fuzz: {} accepted, {} refused, {} exit 1, {} not run (budget), slowest case {} ms",
-        t.accepted, t.refused, t.exit_1, t.not_run, t.slowest_ms
+        "long fuzz: {} accepted, {} refused, {} invalid, {} exit 1 ({} runs) in {wall_s:.0} s wall",
+        total[0], total[1], total[2], total[3], total[4]
     );
+    let failures = failures.into_inner().unwrap();
     assert!(
-        t.failures.is_empty(),
+        failures.is_empty(),
         "seed {seed}: {} cases broke the contract ({} exit 1):\n{}",
-        t.failures.len(),
-        t.exit_1,
-        t.failures.join("\n")
+        failures.len(),
+        total[3],
+        failures.join("\n")
     );
 }
 

@@ -16,19 +16,6 @@ use crate::physics::sawtooth::{
 };
 use std::f64::consts::TAU;
 
-/// Closed forms and event-located switches in closed form: the simulated drift and
-/// times agree with the formulas to round-off accumulated over a few hundred events
-/// (~1e-15 each; largest seen 2.4e-13 m/s over a sweep of 650 scenes); 1e-12 (m/s, s)
-/// at the document's speeds (v_slow + v_fast = 0.4 m/s). [`Tolerances::of`] scales it
-/// with the speeds and adds the overshoot of a located switch (`mu g` times a few ulps
-/// of t) and, for times, the round-off accumulated over the transient's periods.
-pub const EXACT_TOL: f64 = 1e-12;
-
-/// Linear law, DP5 at rtol = atol = 1e-12: the global error of the position after N
-/// periods is ~ N steps x 1e-12 x |x| (|x| <= 1e-2 m), so the mean velocity over
-/// >= 0.1 s is off by < 1e-10 m/s; 1e-9 m/s is the claim's tolerance.
-pub const LINEAR_TOL: f64 = 1e-9;
-
 /// Bi-harmonic asymmetry used for the checks (the drift's sign and size are odd and
 /// linear in it at large drive numbers).
 pub const EPS_CHECK: f64 = 0.2;
@@ -36,7 +23,17 @@ pub const EPS_CHECK: f64 = 0.2;
 /// Drive number of the bi-harmonic always-slipping check.
 pub const GAMMA_CHECK: f64 = 10.0;
 
-/// The claims' tolerances for this scene (see [`EXACT_TOL`] and [`LINEAR_TOL`]).
+/// The claims' tolerances: the error budgets of the runs they judge.
+///
+/// - Velocities of the Coulomb block: closed forms and event-located switches, so
+///   rounding only: the largest of the runs' own budgets
+///   ([`super::sims::mean_velocity_budget_mps`]: eps times the speed times the number of
+///   segments and the window's length in time) plus the overshoot of the located
+///   switches (`mu g` times 4 ulps of t, over the run, 64 eps k t_run).
+/// - Times (the lock time): each of the n_lock + 1 periods before the lock adds a
+///   period and a slip of (v_slow + v_fast)/k, each rounded by a few (64) ulps.
+/// - Velocities of the linear block (DP5 at rtol = atol = 1e-12): the largest of the
+///   runs' budgets, the local error bound per accepted step summed over the steps.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tolerances {
     /// Velocities of the Coulomb block (m/s).
@@ -48,18 +45,20 @@ pub struct Tolerances {
 }
 
 impl Tolerances {
-    /// The tolerances of scene `sc` for runs of `measured` periods after the lock.
-    pub fn of(sc: &Scene, measured: usize) -> Tolerances {
+    /// The tolerances of scene `sc` for runs of `measured` periods after the lock, from
+    /// the error budgets (m/s) of the Coulomb runs (`coulomb`) and the linear ones
+    /// (`linear`) that the claims judge.
+    pub fn of(sc: &Scene, measured: usize, coulomb: &[f64], linear: &[f64]) -> Tolerances {
         let saw = sc.saw;
         let (a, b) = (saw.slow_velocity_mps, saw.fast_velocity_mps);
         let (k, period) = (sc.k_mps2(), saw.period_s());
-        let vscale = ((a + b) / 0.4).max(1.0);
         let t_run = (transient(&saw, k) + measured) as f64 * period;
         let n_lock = (lock_time_s(&saw, k, 0.0) / period).floor();
+        let largest = |xs: &[f64]| xs.iter().fold(0.0f64, |m, &x| m.max(x));
         Tolerances {
-            v_mps: EXACT_TOL * vscale + 64.0 * f64::EPSILON * k * t_run.max(1.0),
-            t_s: EXACT_TOL + 64.0 * f64::EPSILON * (n_lock + 1.0) * (period + (a + b) / k),
-            lin_mps: LINEAR_TOL * vscale,
+            v_mps: largest(coulomb) + 64.0 * f64::EPSILON * k * t_run.max(1.0), // formula: max budget + 64 eps k t
+            t_s: 64.0 * f64::EPSILON * (n_lock + 1.0) * (period + (a + b) / k), // formula: 64 eps (n_lock + 1)(T + (a + b)/k)
+            lin_mps: largest(linear),
         }
     }
 }
@@ -74,6 +73,8 @@ pub struct Linear {
     pub early: DriftRun,
     /// The run from rest over the figure's span (figures only).
     pub trace: Vec<(f64, f64, f64)>,
+    /// The error budgets of the drifts and of `early` (m/s).
+    pub budgets_mps: Vec<f64>,
 }
 
 /// The Coulomb block on either side of a threshold.
@@ -90,6 +91,8 @@ pub struct Sides {
     /// Did the block stick while the plate moved back, at 0.95 and at 1.05 of it (the
     /// sawtooth only)?
     pub stuck_back: (bool, bool),
+    /// The larger error budget of the two runs (m/s).
+    pub budget_mps: f64,
 }
 
 /// Everything the claims and figures read.
@@ -151,13 +154,28 @@ pub fn gather(sc: &Scene, quick: bool, traces: bool) -> Evidence {
         measured,
     };
     let main = run_block(coul, &saw, 0.0, win, &num, tspan, tdt);
-    let mirrored_mps =
-        run_block(coul, &Mirrored(saw), 0.0, win, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
+    let mirrored = run_block(coul, &Mirrored(saw), 0.0, win, &num, (0.0, 0.0), 0.0);
+    let mirrored_mps = mirrored.mean_velocity_mps;
     let regime = steady_regime(&saw, k);
-    let direction_mps = direction(sc, regime, measured, (main.mean_velocity_mps, mirrored_mps));
+    let own = (main.mean_velocity_mps, mirrored.mean_velocity_mps);
+    let (direction_mps, direction_budget) = direction(sc, regime, measured, own);
     let vb_mps = 0.5 * (saw.slow_velocity_mps + saw.fast_velocity_mps);
-    let tol = Tolerances::of(sc, measured);
     let v_formula_mps = drift_velocity_mps(&saw, k);
+    let linear = linear(sc, measured, traces.then_some(trace_span));
+    let slip_probe = slip_probe(sc);
+    let slip_sides = slip_sides(sc, measured);
+    let (biharmonic_mps, biharmonic_budget) = biharmonic_check(sc, quick, vb_mps);
+    let stick_sides = stick_sides(sc, vb_mps);
+    let coulomb = [
+        main.budget_mps,
+        mirrored.budget_mps,
+        direction_budget,
+        slip_probe.as_ref().map_or(0.0, |p| p.1.budget_mps),
+        slip_sides.budget_mps,
+        biharmonic_budget,
+        stick_sides.budget_mps,
+    ];
+    let tol = Tolerances::of(sc, measured, &coulomb, &linear.budgets_mps);
     Evidence {
         scene: *sc,
         measured,
@@ -167,12 +185,12 @@ pub fn gather(sc: &Scene, quick: bool, traces: bool) -> Evidence {
         lock_time_s: lock_time_s(&saw, k, 0.0),
         mirrored_mps,
         direction_mps,
-        linear: linear(sc, measured, traces.then_some(trace_span)),
-        slip_probe: slip_probe(sc),
-        slip_sides: slip_sides(sc, measured),
+        linear,
+        slip_probe,
+        slip_sides,
         vb_mps,
-        biharmonic_mps: biharmonic_check(sc, quick, vb_mps),
-        stick_sides: stick_sides(sc, vb_mps),
+        biharmonic_mps,
+        stick_sides,
         work: (!quick).then(|| work_precision(&saw, k, vb_mps, v_formula_mps, &num)),
         main,
     }
@@ -180,10 +198,11 @@ pub fn gather(sc: &Scene, quick: bool, traces: bool) -> Evidence {
 
 /// The direction checks need a drift: if the flags put the scene in the stick-in-both
 /// regime, they use the same speeds with mu g t_fast = (v_slow + v_fast)/2. `own`: the
-/// scene's drifts (m/s), reused when it drifts.
-fn direction(sc: &Scene, regime: Regime, measured: usize, own: (f64, f64)) -> (f64, f64) {
+/// scene's drifts (m/s), reused when it drifts. Also returns the runs' larger error
+/// budget (m/s; 0 when `own` is reused: its budgets are the main runs').
+fn direction(sc: &Scene, regime: Regime, measured: usize, own: (f64, f64)) -> ((f64, f64), f64) {
     if regime == Regime::StickSlow {
-        return own;
+        return (own, 0.0);
     }
     let k = sc.k_mps2();
     let dir_saw = scaled(&sc.saw, k, 0.5);
@@ -193,9 +212,12 @@ fn direction(sc: &Scene, regime: Regime, measured: usize, own: (f64, f64)) -> (f
     };
     let coul = Law::Coulomb { k_mps2: k };
     let num = Numerics::default();
-    let f =
-        |p: &dyn PlateMotion| run_block(coul, p, 0.0, win, &num, (0.0, 0.0), 0.0).mean_velocity_mps;
-    (f(&dir_saw), f(&Mirrored(dir_saw)))
+    let f = |p: &dyn PlateMotion| run_block(coul, p, 0.0, win, &num, (0.0, 0.0), 0.0);
+    let (a, b) = (f(&dir_saw), f(&Mirrored(dir_saw)));
+    (
+        (a.mean_velocity_mps, b.mean_velocity_mps),
+        a.budget_mps.max(b.budget_mps),
+    )
 }
 
 /// The linear block on five drives, its first two periods, and its trace over
@@ -225,10 +247,11 @@ fn linear(sc: &Scene, measured: usize, trace_span: Option<(f64, f64)>) -> Linear
         Box::new(bi(0.3)),
         Box::new(Harmonic::sine(Axis::X, vb / om, 1.0 / period)),
     ];
-    let drifts_mps = drives
+    let runs: Vec<_> = drives
         .iter()
-        .map(|p| run_block(visc, p.as_ref(), 0.0, w_lin, &num, (0.0, 0.0), 0.0).mean_velocity_mps)
+        .map(|p| run_block(visc, p.as_ref(), 0.0, w_lin, &num, (0.0, 0.0), 0.0))
         .collect();
+    let drifts_mps = runs.iter().map(|r| r.mean_velocity_mps).collect();
     let trace = trace_span.map_or_else(Vec::new, |span| {
         let n = (span.1 / period).round() as usize;
         let w = Window {
@@ -242,10 +265,13 @@ fn linear(sc: &Scene, measured: usize, trace_span: Option<(f64, f64)>) -> Linear
         measured: 2,
     };
     let early = run_block(visc, &saw, 0.0, w2, &num, (0.0, 0.0), 0.0);
+    let mut budgets_mps: Vec<f64> = runs.iter().map(|r| r.budget_mps).collect();
+    budgets_mps.push(early.budget_mps);
     Linear {
         drifts_mps,
         early,
         trace,
+        budgets_mps,
     }
 }
 
@@ -299,11 +325,13 @@ fn slip_sides(sc: &Scene, measured: usize) -> Sides {
         above_mps: ra.mean_velocity_mps,
         closed_below_mps: drift_velocity_mps(&below, k),
         stuck_back: (rb.stuck_in_backward_stroke, ra.stuck_in_backward_stroke),
+        budget_mps: rb.budget_mps.max(ra.budget_mps),
     }
 }
 
-/// The bi-harmonic drift at `GAMMA_CHECK`, `EPS_CHECK`: simulated and closed form (m/s).
-fn biharmonic_check(sc: &Scene, quick: bool, vb: f64) -> (f64, f64) {
+/// The bi-harmonic drift at `GAMMA_CHECK`, `EPS_CHECK`: simulated and closed form (m/s),
+/// and the run's error budget (m/s).
+fn biharmonic_check(sc: &Scene, quick: bool, vb: f64) -> ((f64, f64), f64) {
     let k = sc.k_mps2();
     let bw = Window {
         transient: slip_transient(GAMMA_CHECK),
@@ -313,7 +341,7 @@ fn biharmonic_check(sc: &Scene, quick: bool, vb: f64) -> (f64, f64) {
     let coul = Law::Coulomb { k_mps2: k };
     let v = run_block(coul, &bh, 0.0, bw, &Numerics::default(), (0.0, 0.0), 0.0);
     let formula = always_slipping_drift(GAMMA_CHECK, EPS_CHECK).map_or(f64::NAN, |d| d * vb);
-    (v.mean_velocity_mps, formula)
+    ((v.mean_velocity_mps, formula), v.budget_mps)
 }
 
 /// The bi-harmonic drive 5 % on either side of the derived Gamma_stick: stuck (zero
@@ -328,13 +356,15 @@ fn stick_sides(sc: &Scene, vb: f64) -> Sides {
             measured: 4,
         };
         let p = biharmonic(vb, gamma, EPS_CHECK, k);
-        run_block(coul, &p, 0.0, w, &Numerics::default(), (0.0, 0.0), 0.0).mean_velocity_mps
+        run_block(coul, &p, 0.0, w, &Numerics::default(), (0.0, 0.0), 0.0)
     };
+    let (below, above) = (drift_at(0.95 * g_stick), drift_at(1.05 * g_stick));
     Sides {
         threshold: g_stick,
-        below_mps: drift_at(0.95 * g_stick),
-        above_mps: drift_at(1.05 * g_stick),
+        below_mps: below.mean_velocity_mps,
+        above_mps: above.mean_velocity_mps,
         closed_below_mps: 0.0,
         stuck_back: (false, false),
+        budget_mps: below.budget_mps.max(above.budget_mps),
     }
 }

@@ -22,7 +22,7 @@ pub fn draw(sc: &Scene, quick: bool, ev: &Evidence, dir: &Path) -> Result<Vec<St
     paths.extend(drift_vs_drive(sc, quick, dir)?);
     paths.extend(regime_map(sc, dir)?);
     if let Some((_, rows)) = &ev.work {
-        paths.extend(work_precision(rows, dir)?);
+        paths.extend(work_precision(rows, ev.tol.v_mps, dir)?);
     }
     Ok(paths)
 }
@@ -209,8 +209,9 @@ fn regime_map(sc: &Scene, dir: &Path) -> Result<Vec<String>> {
     save_heatmap(&h, dir, "regime-map")
 }
 
-/// Work-precision: the error of the Coulomb drift against the work, both drives.
-fn work_precision(rows: &[WorkRow], dir: &Path) -> Result<Vec<String>> {
+/// Work-precision: the error of the Coulomb drift against the work, both drives, with
+/// the claims' tolerance `tol_mps` (the scene's error budget, m/s).
+fn work_precision(rows: &[WorkRow], tol_mps: f64, dir: &Path) -> Result<Vec<String>> {
     let floor = 1e-17; // errors of exactly 0 drawn at the floor
     let mut charts = Vec::new();
     for drive in ["sawtooth", "bi-harmonic"] {
@@ -238,7 +239,7 @@ fn work_precision(rows: &[WorkRow], dir: &Path) -> Result<Vec<String>> {
                 "RK4 fixed step, no event location (T/15 … T/1023)",
                 pick("RK4"),
             )
-            .hline(1e-12, "claim tolerance"),
+            .hline(tol_mps, "claim tolerance (the run's error budget)"),
         );
     }
     // Stacked for the book's column (~750 px): an 800-px panel shows at ~94 %, its

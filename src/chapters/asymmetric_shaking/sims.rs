@@ -76,6 +76,46 @@ pub struct DriftRun {
     pub events: usize,
     /// How the run ended (`Completed` unless the driver stopped it).
     pub outcome: Outcome<BlockStop>,
+    /// The error budget of `mean_velocity_mps` (m/s): [`mean_velocity_budget_mps`].
+    pub budget_mps: f64,
+}
+
+/// The error budget of a window's mean velocity `(x(t_b) - x(t_a))/(t_b - t_a)` (m/s)
+/// for a run from 0 to `t_b` whose block speed stays below `v` (m/s), in `segments`
+/// segments (`in_window` of them inside the window).
+///
+/// - Rounding (closed forms and integrated flows alike): each segment adds an increment
+///   to x, rounded by eps |x| <= eps v t_b, and its length t_1 - t_0 is rounded by
+///   eps t_b, moving x by eps v t_b again; the window's two ends add two more, so the
+///   difference carries 2 eps v t_b (in_window + 2). A velocity error made before the
+///   window (eps v per segment, a stick resets it, slip contracts it) moves the mean by
+///   at most segments eps v.
+/// - Integration (`tol = (rtol, atol)`, integrated flows over `steps` accepted steps):
+///   each step's local error is below atol + rtol |y| per component in the RMS norm of
+///   the 4 components, so at most 2 (atol + rtol |y|) in any one; position errors add
+///   up, a velocity error adds at most 1/c of itself to x when viscous friction `c`
+///   (1/s) damps it (`c` = 0: closed forms, no integration error).
+///
+/// The located switches' own overshoot (4 ulps of t at a change of acceleration mu g)
+/// is budgeted by the chapter's tolerances.
+pub fn mean_velocity_budget_mps(
+    v: f64,
+    (t_a, t_b): (f64, f64),
+    (segments, in_window): (u64, u64),
+    tol: Option<(f64, f64)>,
+    (steps, c_per_s): (u64, f64),
+) -> f64 {
+    let eps = f64::EPSILON;
+    let dt = t_b - t_a;
+    let rounding = 2.0 * eps * v * t_b * (in_window as f64 + 2.0) / dt + segments as f64 * eps * v; // formula: 2 eps v t_b (n_w + 2)/dt + n eps v
+    let integration = match tol {
+        Some((rtol, atol)) if c_per_s > 0.0 => {
+            let per_step = 2.0 * (atol + rtol * v * t_b) + 2.0 * (atol + rtol * v) / c_per_s; // formula: 2 (atol + rtol |x|) + 2 (atol + rtol |v|)/c
+            steps as f64 * per_step / dt
+        }
+        _ => 0.0,
+    };
+    rounding + integration
 }
 
 /// The segment's absolute `(x, v)` at `t`: its end states at its ends, its dense output
@@ -114,6 +154,7 @@ struct Watch<'b, 'a, P: PlateMotion + ?Sized> {
     against_plate: bool,
     ends: [Option<(f64, f64)>; 2],
     trace: Vec<(f64, f64, f64)>,
+    in_window: u64,
 }
 
 impl<P: PlateMotion + ?Sized> Observer<BlockMode, 4> for Watch<'_, '_, P> {
@@ -128,6 +169,7 @@ impl<P: PlateMotion + ?Sized> Observer<BlockMode, 4> for Watch<'_, '_, P> {
             self.ends[1] = Some(state_at(sys, seg, b));
         }
         if seg.t1 > a && seg.t0 < b && seg.t1 > seg.t0 {
+            self.in_window += 1;
             // Extremes: ends and 7 interior points of the part inside the window.
             let (s0, s1) = (seg.t0.max(a), seg.t1.min(b));
             for j in 0..=8 {
@@ -313,6 +355,7 @@ pub fn run_block<P: PlateMotion + ?Sized>(
         against_plate: false,
         ends: [None, None],
         trace: Vec::new(),
+        in_window: 0,
     };
     let opts = block_options(plate, v0_mps, window, num);
     let run = simulate_block_observed(&params, plate, win.1, &opts, &mut w);
@@ -323,6 +366,24 @@ pub fn run_block<P: PlateMotion + ?Sized>(
         _ => f64::NAN,
     };
     let c = run.total_counts;
+    let speed = [w.v_max, w.v_min, v0_mps]
+        .iter()
+        .fold(0.0f64, |m, v| if v.is_finite() { m.max(v.abs()) } else { m });
+    let tol = match num.hybrid.control {
+        StepControl::Adaptive { rtol, atol, .. } => Some((rtol, atol)),
+        _ => None,
+    };
+    let c_per_s = match law {
+        Law::Viscous { c_per_s } => c_per_s,
+        Law::Coulomb { .. } => 0.0,
+    };
+    let budget_mps = mean_velocity_budget_mps(
+        speed,
+        win,
+        (run.segments, w.in_window),
+        tol,
+        (run.stats.accepted, c_per_s),
+    );
     DriftRun {
         mean_velocity_mps: mean,
         v_max_mps: w.v_max,
@@ -344,6 +405,7 @@ pub fn run_block<P: PlateMotion + ?Sized>(
             + c.reversals
             + c.breakpoints,
         outcome: run.outcome,
+        budget_mps,
     }
 }
 

@@ -8,7 +8,8 @@ use super::chladni::{demonstrate, Chladni};
 use super::regimes::{self, gamma_n, Boundary, SweepPoint};
 use super::scene::{run, Model, Scene, Stats};
 use crate::ladder::WorkPoint;
-use crate::physics::block::{simulate_block, BlockOptions, BlockParams};
+use crate::numerics::events::time_tolerance;
+use crate::physics::block::{simulate_block, time_tolerance_of_run, BlockOptions, BlockParams};
 use crate::physics::plate::PlateMotion;
 use std::f64::consts::PI;
 
@@ -31,9 +32,12 @@ pub struct Evidence {
     pub leaves: (bool, bool),
     /// The fast-drive limits.
     pub fast: FastLimits,
-    /// The block kept sliding: mean friction / (mu x mean normal force), and whether it
-    /// slid all along (no stick, no reversal, some landings).
-    pub sliding: (f64, bool),
+    /// The block kept sliding: mean friction / (mu x mean normal force), whether it
+    /// slid all along (no stick, no reversal, some landings), and the ratio's rounding
+    /// budget ([`sliding_budget`]).
+    pub sliding: (f64, bool, f64),
+    /// The take-off phase's rounding budget (rad, [`takeoff_budget_rad`]).
+    pub takeoff_budget_rad: f64,
     /// Small forces: drifts at Gamma = 1.05 for F = 0.01, 0.001, 0.0001 mu m g, and at
     /// Gamma = 0.95 for F = 0.001 mu m g (m/s).
     pub small_force: (Vec<f64>, f64),
@@ -71,18 +75,23 @@ pub struct LandingPoint {
     pub located: Option<(f64, f64)>,
 }
 
-/// The Gamma of the law b*(Gamma) and, marked true, the ones also located on the exact
-/// model. Up to Gamma = 2 only: at Gamma = 3 the exact model's b* (0.927) and the closed
-/// form's (1.000) disagree, most likely because the first landing falls where the plate
-/// pulls away faster than g (touch-and-go), outside the closed form's picture of a
-/// landing that sticks or slides; not yet derived.
-pub const LANDING_GAMMAS: [(f64, bool); 6] = [
-    (1.05, false),
-    (1.2, true),
-    (1.35, false),
-    (1.5, false),
-    (1.75, false),
-    (2.0, true),
+/// The Gamma of the law b*(Gamma) over (1, Gamma_1) and, marked, the ones also located
+/// on the exact model `(Gamma, full run, quick run)`: on both sides of Gamma_c =
+/// [`super::landing::hold_boundary_gamma`] (2.975), past which the first landing falls
+/// where the plate accelerates downwards and static friction, not the impulse, bounds
+/// b* (0.927 at Gamma = 3).
+pub const LANDING_GAMMAS: [(f64, bool, bool); 11] = [
+    (1.05, false, false),
+    (1.2, true, false),
+    (1.5, false, false),
+    (1.75, false, false),
+    (2.0, true, true),
+    (2.5, false, false),
+    (2.9, false, false),
+    (3.0, true, true),
+    (3.1, false, false),
+    (3.2, true, false),
+    (3.25, false, false),
 ];
 
 /// The largest frequency factor of [`FastLimits::law_sweep`] (Gamma = 32768): a range
@@ -118,6 +127,81 @@ pub struct NearGammaN {
     pub at_1e5: (f64, f64),
     /// The law ratio of the no-contact-slip model at eps = 1e-6.
     pub law_noslip: f64,
+    /// The rounding budgets of `at_1e6`'s two values ([`near_rounding`]).
+    pub rounding: (f64, f64),
+}
+
+/// The rounding budget of a run's mean flight t_f g/v_z and law ratio
+/// (v_ave/v_z)/mu_eff, both read off event times and positions of a run of `t_end`
+/// seconds in `segments` closed-form segments.
+///
+/// - Times: each event is located to the driver's tolerance (at most 4 ulps of
+///   max(t_end, 1 s), [`event_tolerance_s`]) and its time rounded once more (an ulp of
+///   t_end), so a flight t_f = t_land - t_takeoff is off by up to
+///   2 (4 eps max(t_end, 1 s) + eps t_end), relative to t_f.
+/// - Positions: every segment adds a closed-form increment to x, rounding it by eps
+///   |x| <= eps v_ave t_end (the block has moved at most that far), and the two ends'
+///   times move them by v_ave times their time error: over `segments` segments the
+///   cycle's displacement over `dt` seconds carries eps v_ave [(segments + 2) t_end +
+///   2 (4 max(t_end, 1 s) + t_end)], relative to v_ave dt.
+///
+/// Returns the `(flight, law)` budgets (absolute, in the values' units) for the values
+/// `tf`, `law` of a run of `t_end_s` in `segments` segments whose mean flight lasts
+/// `flight_s` and whose velocity window lasts at least `window_s`.
+pub fn near_rounding(
+    (tf, law): (f64, f64),
+    t_end_s: f64,
+    segments: u64,
+    flight_s: f64,
+    window_s: f64,
+) -> (f64, f64) {
+    let eps = f64::EPSILON;
+    let times = 2.0 * (4.0 * eps * t_end_s.max(1.0) + eps * t_end_s); // formula: 2 (4 eps max(t, 1) + eps t)
+    (
+        times / flight_s * tf.abs(), // formula: time error / t_f x value
+        (eps * (segments as f64 + 2.0) * t_end_s + times) / window_s * law.abs(), // formula: (eps (n + 2) t_end + time error)/dt x value
+    )
+}
+
+/// The event-time tolerance of a block run that ends at `t_end_s`, for an event at
+/// `t_s` (s): 4 ulps of the run's end below 1 s, else 4 ulps of max(t, 1 s) (the
+/// driver's rule, `physics::block::time_tolerance_of_run`).
+fn event_tolerance_s(t_s: f64, t_end_s: f64) -> f64 {
+    time_tolerance_of_run(0.0, t_end_s).unwrap_or_else(|| time_tolerance(t_s))
+}
+
+/// The rounding budget of the take-off phase (rad) located at `gamma`, `omega` in a
+/// run that ends at `t_end_s`: the event is located to the driver's time tolerance
+/// t_tol (4 ulps of the run's end below 1 s, of max(t, 1 s) beyond), phase omega t_tol,
+/// and the phase omega t is rounded twice (the guard's argument and the reported
+/// value), 2 eps phi_0; the guard n = g (1 - Gamma sin(omega t)) is rounded by about 4
+/// ulps of its largest term g (1 + Gamma) (a sine, a product, a difference), which moves
+/// its zero by that over its slope g Gamma cos(phi_0): 4 eps (1 + Gamma)/(Gamma
+/// cos(phi_0)); the expected asin(1/Gamma) carries the rounding of 1/Gamma times the
+/// condition of asin, eps tan(phi_0), plus an ulp. Near Gamma = 1 (cos(phi_0) -> 0) the
+/// take-off is a grazing zero and the budget grows as 1/cos(phi_0).
+pub fn takeoff_budget_rad(gamma: f64, omega: f64, t_end_s: f64) -> f64 {
+    let eps = f64::EPSILON;
+    let phi0 = (1.0 / gamma).asin();
+    let c = phi0.cos();
+    let located = omega * event_tolerance_s(phi0 / omega, t_end_s); // formula: omega t_tol
+    located + eps * (2.0 * phi0 + 4.0 * (1.0 + gamma) / (gamma * c) + phi0.tan() + 1.0) // formula: + eps [2 phi_0 + 4 (1 + Gamma)/(Gamma cos phi_0) + tan phi_0 + 1]
+}
+
+/// The rounding budget of the sliding block's ratio <f>/(mu <N>) over a run of
+/// `t_end_s` seconds in `segments` closed-form segments at `gamma`, `omega`: the
+/// horizontal velocity starts at v0 = 2 mu g t_end and every segment adds a closed-form
+/// increment to it, two roundings of at most eps/2 x v0 each, so <f> = (v_x - v0)/t_end
+/// is off by up to segments eps v0/t_end = 2 segments eps mu g, relative 2 segments
+/// eps; <N> = g + v_z/t_end, with |v_z| <= g (Gamma + 2 pi)/omega (the plate's speed
+/// plus a period of free fall) rounded by eps per segment, relative
+/// segments eps (Gamma + 2 pi)/(omega t_end); the final division and products add 4 eps.
+/// The events' own location errors move <f> and mu <N> alike (friction is mu N at every
+/// instant), so they cancel in the ratio.
+pub fn sliding_budget(segments: u64, t_end_s: f64, gamma: f64, omega: f64) -> f64 {
+    let eps = f64::EPSILON;
+    let n = segments as f64;
+    2.0 * n * eps + n * eps * (gamma + std::f64::consts::TAU) / (omega * t_end_s) + 4.0 * eps // formula: 2 n eps + n eps (Gamma + 2 pi)/(omega t) + 4 eps
 }
 
 /// One law's share of Gamma values within 10 %.
@@ -186,6 +270,7 @@ pub fn gather(scene: &Scene, quick: bool) -> Evidence {
         leaves: (leaves(scene, 0.999), leaves(scene, 1.001)),
         fast: fast_limits(scene, quick),
         sliding: sliding(scene),
+        takeoff_budget_rad: takeoff_budget_rad(scene.gamma, scene.omega(), hop.run.t_end_s),
         small_force: small_force(scene),
         near_gamma_n: [1.0, 2.0, 3.0]
             .iter()
@@ -204,14 +289,14 @@ pub fn gather(scene: &Scene, quick: bool) -> Evidence {
 
 /// The law b*(Gamma) at [`LANDING_GAMMAS`]: the closed form everywhere, the exact
 /// model's bisection (12 halvings quick, 20 full) where marked (quick: at Gamma = 2
-/// only).
+/// and 3).
 fn landing_law(scene: &Scene, quick: bool) -> Vec<LandingPoint> {
     let iters = if quick { 12 } else { 20 };
     LANDING_GAMMAS
         .iter()
-        .map(|&(gamma, check)| {
+        .map(|&(gamma, full, in_quick)| {
             let at = scene.at_gamma(gamma);
-            let check = check && (!quick || gamma == 2.0);
+            let check = if quick { in_quick } else { full };
             LandingPoint {
                 gamma,
                 closed: super::landing::closed_form_bound(&at),
@@ -284,9 +369,9 @@ fn fast_limits(scene: &Scene, quick: bool) -> FastLimits {
     }
 }
 
-/// A block kept sliding over 60 periods: mean friction / (mu x mean normal force), and
-/// whether it slid all along.
-fn sliding(scene: &Scene) -> (f64, bool) {
+/// A block kept sliding over 60 periods: mean friction / (mu x mean normal force),
+/// whether it slid all along, and the ratio's rounding budget.
+fn sliding(scene: &Scene) -> (f64, bool, f64) {
     let plate = scene.plate();
     let t_end = 60.0 * plate.period_s();
     let p = BlockParams::coulomb(scene.g_mps2, scene.mu, 0.0);
@@ -303,7 +388,8 @@ fn sliding(scene: &Scene) -> (f64, bool) {
     let always_slides = sl.total_counts.slip_to_stick == 0
         && sl.total_counts.reversals == 0
         && sl.total_counts.landings > 0;
-    (ratio, always_slides)
+    let budget = sliding_budget(sl.segments, t_end, scene.gamma, scene.omega());
+    (ratio, always_slides, budget)
 }
 
 /// Drifts with small forces just above and just below Gamma = 1 (m/s).
@@ -321,8 +407,14 @@ fn small_force(scene: &Scene) -> (Vec<f64>, f64) {
 
 /// Mean flight time and drift just below Gamma_n (the block rests between flights of
 /// n periods, the limit the document's law assumes): `(t_f g/v_z, (v_ave/v_z)/(F/m g))`
-/// at Gamma_n (1 - eps).
-fn at_gamma_n(scene: &Scene, n: f64, eps: f64, model: Model, quick: bool) -> (f64, f64) {
+/// at Gamma_n (1 - eps), and their rounding budgets ([`near_rounding`]).
+fn at_gamma_n(
+    scene: &Scene,
+    n: f64,
+    eps: f64,
+    model: Model,
+    quick: bool,
+) -> ((f64, f64), (f64, f64)) {
     let (transient, observe) = super::budget(quick);
     let s = Scene {
         bias: law_bias(scene),
@@ -331,16 +423,26 @@ fn at_gamma_n(scene: &Scene, n: f64, eps: f64, model: Model, quick: bool) -> (f6
     let st = run(&s, model, transient, observe);
     let tf = st.mean_flight_s() * s.g_mps2 / s.vz_mps(); // formula: t_f / (v_z/g)
     let law = (st.cycle_velocity_mps / s.vz_mps()) / (s.bias * s.mu); // formula: (v_ave/v_z)/mu_eff
-    (tf, law)
+    // The velocity window spans at least one cycle of n periods (a flight and a rest).
+    let rounding = near_rounding(
+        (tf, law),
+        st.run.t_end_s,
+        st.run.segments,
+        st.mean_flight_s(),
+        n * st.run.period_s,
+    );
+    ((tf, law), rounding)
 }
 
 /// The runs just below Gamma_n.
 fn near_gamma_n(scene: &Scene, n: f64, quick: bool) -> NearGammaN {
+    let (at_1e6, rounding) = at_gamma_n(scene, n, 1e-6, Model::Exact, quick);
     NearGammaN {
         n,
-        at_1e6: at_gamma_n(scene, n, 1e-6, Model::Exact, quick),
-        at_1e5: at_gamma_n(scene, n, 1e-5, Model::Exact, quick),
-        law_noslip: at_gamma_n(scene, n, 1e-6, Model::NoContactSlip, quick).1,
+        at_1e6,
+        at_1e5: at_gamma_n(scene, n, 1e-5, Model::Exact, quick).0,
+        law_noslip: at_gamma_n(scene, n, 1e-6, Model::NoContactSlip, quick).0 .1,
+        rounding,
     }
 }
 
