@@ -105,6 +105,8 @@ pub struct ImpactRecord {
     /// Kinetic energy change in the lab minus the plate's impulse work (J): minus the
     /// loss, computed from the states (the check that no impact creates energy).
     pub energy_change_j: f64,
+    /// Slip velocity of C before (m/s).
+    pub slip_before_mps: f64,
     /// Slip velocity of C after (m/s).
     pub slip_after_mps: f64,
     /// Normal velocity of C relative to the plate after (m/s).

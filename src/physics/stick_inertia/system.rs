@@ -382,6 +382,7 @@ impl InertiaModel {
                 j_n_ns: r.p_n,
                 loss_j: r.loss_j,
                 energy_change_j: gain,
+                slip_before_mps: u0[0],
                 slip_after_mps: a[VXC],
                 normal_after_mps: a[VZC] - vs,
                 landing,
