@@ -549,3 +549,52 @@ fn moreau_jean_meets_the_event_driven_run_when_the_stuck_contact_persists() {
     assert!((d_open - ev).abs() > 1e-5, "{d_open} {ev}");
     assert!((d_stick - ev).abs() < 1e-6, "{d_stick} {ev}");
 }
+
+/// Issue 29: the Painleve map's run at `theta_0 = 0.2227` rad, `mu = 0.2727` (1 % rod)
+/// chatters at t = 0.8259017 s (a sticking landing whose rules lift the foot off into a
+/// flight too short for the run to resolve, again and again). The chain is handed to
+/// Moreau-Jean once, for under a millisecond, and the run completes with its contact
+/// residuals within their bounds (before: `invalid`, 1.1 mm into the plate). `--json`
+/// reports the bridge count and their total time. (The comparison with Moreau-Jean over
+/// the whole scene is in `ch8_differential`.)
+#[test]
+fn chattering_lift_offs_are_handed_to_moreau_jean_and_the_run_completes() {
+    let mut b = authors_scene(10.0);
+    b.mass_kg = 1.0;
+    b.theta0_rad = 0.05 + 0.95 * 2.0 / 11.0; // the map's cell (2, 1) of 12 x 12
+    b.mu = 0.1 + 1.9 / 11.0;
+    let md = InertiaModel::new(InertiaParams {
+        base: b,
+        rod_mass_kg: 0.01,
+        restitution: 0.0,
+    });
+    let run = run_from_rest(&md, 1.0, &opts(), 0.0);
+    assert_eq!(run.outcome.label(), "completed", "{:?}", run.outcome);
+    assert!(run.max_penetration_m <= run.penetration_bound_m);
+    assert!(run.max_complementarity_ratio <= 1.0);
+    assert_eq!(run.bridges.len(), 1, "{:?}", run.bridges);
+    let br = run.bridges[0];
+    assert!((br.t0_s - 0.8259017).abs() < 1e-7, "{br:?}");
+    assert!(br.t1_s > br.t0_s && br.t1_s - br.t0_s < 1e-3, "{br:?}");
+    let (code, out, err) = cli(&[
+        "stick-with-inertia",
+        "--quick",
+        "--json",
+        "--no-figures",
+        "--scene",
+        "authors",
+        "--theta0-rad",
+        "0.22272727272727272",
+        "--mu",
+        "0.2727272727272727",
+        "--duration-s",
+        "1",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    let r = &v["results"];
+    assert_eq!(r["outcome"], "completed");
+    assert_eq!(r["moreau_jean_bridge_count"], 1);
+    let t = r["moreau_jean_bridge_time_s"].as_f64().unwrap();
+    assert!((t - (br.t1_s - br.t0_s)).abs() < 1e-12, "{t}");
+}

@@ -133,6 +133,16 @@ pub struct Log {
     /// Largest ratio of an impact's residual to its rounding threshold `eta_v`
     /// ([`rounding`]) (1): at most 1 when every decision was rounding-consistent.
     pub max_residual_ratio: f64,
+    /// Flights shorter than this are below the run's resolution (s; 0: the check is off):
+    /// set by the run from its penetration bound ([`InertiaModel::chatter_flight_s`]).
+    pub chatter_flight_s: f64,
+    /// Time of the last landing (s).
+    pub landed_s: Option<f64>,
+    /// Time of the last lift-off chosen by the rules (s).
+    pub lifted_s: Option<f64>,
+    /// Landings in a row whose flight began with a lift-off at the landing before and
+    /// lasted at most `chatter_flight_s` (1).
+    pub chatter_pairs: usize,
 }
 
 impl Log {
