@@ -224,6 +224,9 @@ fn compare(p: &InertiaParams, p_ev: &InertiaParams, dur: f64, max_level: u32) ->
     let mut md_ev = InertiaModel::new(*p_ev);
     md_ev.impact_law = ImpactLaw::VelocityCoulomb;
     let (run, d_ev) = event_driven(&md_ev, dur);
+    if !run.bridges.is_empty() {
+        eprintln!("  Moreau-Jean bridges: {:?}", run.bridges);
+    }
     match &run.outcome {
         InertiaOutcome::Completed | InertiaOutcome::Fell => {}
         o => return Verdict::SaysInvalid(format!("{} {o:?}", o.label())),
@@ -258,6 +261,9 @@ fn compare(p: &InertiaParams, p_ev: &InertiaParams, dur: f64, max_level: u32) ->
     });
     // the model's own law (Darboux-Keller) where no impact reverses the slip
     let (dk, d_dk) = event_driven(&InertiaModel::new(*p_ev), dur);
+    if !dk.bridges.is_empty() {
+        eprintln!("  Moreau-Jean bridges (Darboux-Keller): {:?}", dk.bridges);
+    }
     if dk.outcome == run.outcome && !reverses(&dk) && (d_dk - reference).abs() > est + tol_ev {
         return Verdict::Disagree(format!(
             "Darboux-Keller: event-driven {d_dk:.9} m, Moreau-Jean {reference:.9} m (estimate {est:.2e}), no reversing impact"
