@@ -111,6 +111,8 @@ pub struct MapCell {
     /// Share of the run's time in the slide that can be Painleve (the foot slipping away
     /// from the side the rod leans to: left for theta_0 > 0) (1).
     pub prone_fraction: f64,
+    /// Segments handed to Moreau-Jean, and their total time (s).
+    pub bridges: (usize, f64),
 }
 
 /// Mass distributions of the map: (label, tip mass kg, rod mass kg).
@@ -151,6 +153,10 @@ pub fn painleve_map(n: usize, duration_s: f64) -> Vec<Vec<MapCell>> {
                             InertiaOutcome::Fell | InertiaOutcome::Completed
                         ),
                         prone_fraction: left_fraction(&r),
+                        bridges: (
+                            r.bridges.len(),
+                            r.bridges.iter().map(|b| b.t1_s - b.t0_s).sum(),
+                        ),
                     });
                 }
             }
@@ -194,15 +200,27 @@ pub fn gait_modes_table(duration_s: f64) -> String {
     s
 }
 
+/// The map's runs that handed segments to Moreau-Jean: `runs (segments, total time)`,
+/// or `0`.
+fn bridge_summary(cells: &[MapCell]) -> String {
+    let runs = cells.iter().filter(|c| c.bridges.0 > 0).count();
+    if runs == 0 {
+        return "0".into();
+    }
+    let segments: usize = cells.iter().map(|c| c.bridges.0).sum();
+    let ms = 1e3 * cells.iter().map(|c| c.bridges.1).sum::<f64>();
+    format!("{runs} ({segments}, {ms:.2} ms)")
+}
+
 /// The map's summary as a Markdown table.
 pub fn map_table(map: &[Vec<MapCell>]) -> String {
-    let mut s = String::from("| rod | runs | runs with Painlevé events | events | smallest μ with an event | time in the left slide (mean) | runs that fell | runs not vouched for |\n|---|---|---|---|---|---|---|---|\n");
+    let mut s = String::from("| rod | runs | runs with Painlevé events | events | smallest μ with an event | time in the left slide (mean) | runs that fell | runs not vouched for | runs handed to Moreau-Jean (segments, time) |\n|---|---|---|---|---|---|---|---|---|\n");
     for ((label, ..), cells) in MAP_RODS.iter().zip(map) {
         let with: Vec<_> = cells.iter().filter(|c| c.events > 0).collect();
         let min_mu = with.iter().map(|c| c.mu).fold(f64::INFINITY, f64::min);
         let prone = cells.iter().map(|c| c.prone_fraction).sum::<f64>() / cells.len() as f64;
         s.push_str(&format!(
-            "| {label} | {} | {} | {} | {} | {:.1} % | {} | {} |\n",
+            "| {label} | {} | {} | {} | {} | {:.1} % | {} | {} | {} |\n",
             cells.len(),
             with.len(),
             cells.iter().map(|c| c.events).sum::<usize>(),
@@ -213,7 +231,8 @@ pub fn map_table(map: &[Vec<MapCell>]) -> String {
             },
             100.0 * prone,
             cells.iter().filter(|c| c.fell).count(),
-            cells.iter().filter(|c| c.unvouched).count()
+            cells.iter().filter(|c| c.unvouched).count(),
+            bridge_summary(cells)
         ));
     }
     s

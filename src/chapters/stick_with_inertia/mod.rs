@@ -301,6 +301,12 @@ fn full_run_results(r: &mut ChapterReport, run: &InertiaRun, pre: &str) {
         .map(|b| json!({"t0_s": b.t0_s, "t1_s": b.t1_s, "step_s": b.h_s, "error_xc_m": b.error_xc_m}))
         .collect();
     r.result(&format!("{pre}moreau_jean_bridges"), json!(bridges));
+    r.result(
+        &format!("{pre}moreau_jean_bridge_count"),
+        run.bridges.len(),
+    );
+    let bridge_s: f64 = run.bridges.iter().map(|b| b.t1_s - b.t0_s).sum();
+    r.result(&format!("{pre}moreau_jean_bridge_time_s"), bridge_s);
     if !pre.is_empty() {
         // the composite has no events of its own: the outer (massless) model has none
         r.result("painleve_events", json!([]));

@@ -14,7 +14,7 @@
 
 use super::system::Next;
 use super::timestepping::MjStick;
-use super::{InertiaModel, Mode, State, NSTATE, OM, TH, VXC, VZC, XC, ZC};
+use super::{InertiaModel, InertiaStop, Mode, State, NSTATE, OM, TH, VXC, VZC, XC, ZC};
 use crate::numerics::hybrid::Transition;
 use crate::numerics::timestepping::{step, ContactStatus};
 
@@ -24,6 +24,14 @@ pub const MAX_BRIDGES: usize = 200;
 pub const STEPS_PER_PERIOD: f64 = 20_000.0;
 /// Steps the time-stepper's contact case must hold before the hand-back.
 pub const HOLD_STEPS: usize = 3;
+
+/// Lift-off/landing pairs in a row, each flight below the run's resolution
+/// ([`InertiaModel::chatter_flight_s`]), that hand the run to the bridge. One such pair
+/// is a lift-off the run could not resolve; the second in a row, from the state the first
+/// left, shows the rules repeating the same unresolvable decision: the accumulation the
+/// rigid rules cannot end (chapter 8). On the map's mu = 1.83 run the third landing of
+/// the chain already bounces on its grown rounding residual, from below the plate.
+pub const CHATTER_PAIRS: usize = 2;
 
 /// One bridge.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -55,6 +63,48 @@ impl InertiaModel {
         y[VXC] = v[0] - l * v[2] * c; // formula: v_C = v_G - l_G theta' e_theta
         y[VZC] = v[1] + l * v[2] * s;
         y
+    }
+}
+
+impl InertiaModel {
+    /// The shortest flight a run with penetration bound `eps_m` resolves (s). A flight
+    /// that starts at rest relative to the plate with relative normal acceleration `a`
+    /// under the plate's jerk `j = delta omega^3` has height `a tau^2/2 - j tau^3/6`: it
+    /// lands at `tau_f = 3a/j` and rises at most `(2/81) j tau_f^3`. That rise stays
+    /// within `eps` (where the run cannot tell flight from contact) iff
+    /// `tau_f <= (81 eps/(2 j))^(1/3)`. Zero (the check off) on a still plate.
+    pub fn chatter_flight_s(&self, eps_m: f64) -> f64 {
+        let plate = &self.p.base.plate;
+        let jerk = plate.peak_acceleration_mps2() * plate.omega_rad_s; // formula: j = delta omega^3
+        if jerk > 0.0 {
+            (81.0 * eps_m / (2.0 * jerk)).cbrt() // formula: tau_res = (81 eps / (2 j))^(1/3)
+        } else {
+            0.0
+        }
+    }
+
+    /// A lift-off chosen by the rules at `t` (for the chatter count).
+    pub(super) fn note_lift_off(&self, t: f64) {
+        self.log.borrow_mut().lifted_s = Some(t);
+    }
+
+    /// A landing at `t`: counts it when its flight began with a lift-off at the landing
+    /// before and lasted at most `chatter_flight_s`; the stop that hands the run to the
+    /// bridge after [`CHATTER_PAIRS`] in a row.
+    pub(super) fn note_landing(&self, t: f64) -> Option<Next> {
+        let mut log = self.log.borrow_mut();
+        let chained = log.lifted_s.is_some() && log.lifted_s == log.landed_s;
+        let short = chained && t - log.lifted_s.unwrap_or(t) <= log.chatter_flight_s;
+        log.chatter_pairs = if short { log.chatter_pairs + 1 } else { 0 };
+        log.landed_s = Some(t);
+        if log.chatter_pairs < CHATTER_PAIRS {
+            return None;
+        }
+        log.chatter_pairs = 0;
+        Some(Transition::Stop(InertiaStop::NoMode(format!(
+            "lift-offs and landings accumulate at t = {t:.7} s ({CHATTER_PAIRS} flights in a row shorter than {:.2e} s)",
+            log.chatter_flight_s
+        ))))
     }
 }
 

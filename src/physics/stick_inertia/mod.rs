@@ -105,6 +105,8 @@ pub struct ImpactRecord {
     /// Kinetic energy change in the lab minus the plate's impulse work (J): minus the
     /// loss, computed from the states (the check that no impact creates energy).
     pub energy_change_j: f64,
+    /// Slip velocity of C before (m/s).
+    pub slip_before_mps: f64,
     /// Slip velocity of C after (m/s).
     pub slip_after_mps: f64,
     /// Normal velocity of C relative to the plate after (m/s).
@@ -131,6 +133,16 @@ pub struct Log {
     /// Largest ratio of an impact's residual to its rounding threshold `eta_v`
     /// ([`rounding`]) (1): at most 1 when every decision was rounding-consistent.
     pub max_residual_ratio: f64,
+    /// Flights shorter than this are below the run's resolution (s; 0: the check is off):
+    /// set by the run from its penetration bound ([`InertiaModel::chatter_flight_s`]).
+    pub chatter_flight_s: f64,
+    /// Time of the last landing (s).
+    pub landed_s: Option<f64>,
+    /// Time of the last lift-off chosen by the rules (s).
+    pub lifted_s: Option<f64>,
+    /// Landings in a row whose flight began with a lift-off at the landing before and
+    /// lasted at most `chatter_flight_s` (1).
+    pub chatter_pairs: usize,
 }
 
 impl Log {

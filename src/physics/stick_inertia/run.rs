@@ -193,7 +193,11 @@ pub fn simulate_inertia(
     opts: &Options,
     trace_dt_s: f64,
 ) -> InertiaRun {
-    *model.log.borrow_mut() = Log::default();
+    let eps_m = run_rtol(opts) * (model.p.base.length_m + model.p.base.plate.amplitude_m); // formula: rtol (L + delta)
+    *model.log.borrow_mut() = Log {
+        chatter_flight_s: model.chatter_flight_s(eps_m),
+        ..Log::default()
+    };
     let mut w = Watch {
         md: model,
         acc: [0.0; 4],

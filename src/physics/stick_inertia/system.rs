@@ -289,14 +289,19 @@ impl InertiaModel {
                 "lift-off at t = {t:.6} s would drive C into the plate"
             )));
         }
+        self.note_lift_off(t);
         Transition::To {
             mode: Mode::Flight,
             state: *y,
         }
     }
 
-    /// Landing: the impact, then the mode its outcome selects.
+    /// Landing: the impact, then the mode its outcome selects (or, at the end of a chain
+    /// of unresolvably short flights, the stop that hands the run to Moreau-Jean).
     pub fn landing(&self, t: f64, y: &State) -> Next {
+        if let Some(stop) = self.note_landing(t) {
+            return stop;
+        }
         match self.impact(t, y, true) {
             Some(a) => self.after_impact(t, y, &a, 0),
             None => Transition::Stop(InertiaStop::Invalid(format!(
@@ -382,6 +387,7 @@ impl InertiaModel {
                 j_n_ns: r.p_n,
                 loss_j: r.loss_j,
                 energy_change_j: gain,
+                slip_before_mps: u0[0],
                 slip_after_mps: a[VXC],
                 normal_after_mps: a[VZC] - vs,
                 landing,

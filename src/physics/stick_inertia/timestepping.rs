@@ -69,6 +69,88 @@ impl InertiaModel {
     }
 }
 
+/// Which solution a Moreau-Jean step takes where its contact problem has more than one
+/// ([`crate::numerics::timestepping::contact_solutions`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MjSelection {
+    /// The first in the order open, stick, slide +t, slide -t
+    /// ([`crate::numerics::timestepping::solve_contact`]): separation wherever it is
+    /// consistent.
+    FirstOpen,
+    /// A stuck contact stays stuck while sticking is consistent (the event-driven rules'
+    /// pivot, which ends only at the cone's edge or at zero normal force); otherwise as
+    /// [`MjSelection::FirstOpen`].
+    StickPersists,
+}
+
+/// The result of a Moreau-Jean run of the stick.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MjSummary {
+    /// Mean speed of C (m/s).
+    pub mean_velocity_mps: f64,
+    /// Steps in which the contact problem had a stick solution beside the open one (the
+    /// rigid problem does not decide there; `FirstOpen` took the open one).
+    pub ambiguous_steps: u64,
+}
+
+/// Moreau-Jean with step `h_s` from the static start of the event-driven run (`y0`)
+/// over `duration_s`, choosing by `sel` where a step's contact problem has two
+/// solutions; `None` if a step had none or the state became non-finite.
+#[allow(clippy::needless_range_loop)] // q, v1, m_wn, m_wt: one index over four arrays
+pub fn mj_run(
+    md: &InertiaModel,
+    y0: &State,
+    duration_s: f64,
+    h_s: f64,
+    sel: MjSelection,
+) -> Option<MjSummary> {
+    use crate::numerics::timestepping::{
+        contact_solutions, local_problem, solve_contact, ContactStatus,
+    };
+    let model = MjStick(md);
+    let (q0, v0) = md.to_mj(y0);
+    let (mut q, mut v) = (q0, v0);
+    let (mut t, mut k, mut prev) = (0.0, 0u64, ContactStatus::Inactive);
+    let mut ambiguous = 0u64;
+    while t < duration_s {
+        let mut t1 = (k + 1) as f64 * h_s; // time as k h: no accumulated round-off
+        if t1 > duration_s - 1e-9 * h_s {
+            t1 = duration_s;
+        }
+        let h = t1 - t;
+        let (q_m, v_free, problem) = local_problem(&model, t, &q, &v, h, 0.5);
+        let mut v1 = v_free;
+        let mut status = ContactStatus::Inactive;
+        if let Some(lp) = problem {
+            let all = contact_solutions(lp.w, lp.u_free, lp.s0, md.p.base.mu);
+            let (open, stick) = (all[0], all[1]);
+            if open.is_some() && stick.is_some_and(|s| s.p_n > 0.0) {
+                ambiguous += 1;
+            }
+            let imp = match (sel, prev, stick) {
+                (MjSelection::StickPersists, ContactStatus::Stick, Some(s)) => s,
+                _ => solve_contact(lp.w, lp.u_free, lp.s0, md.p.base.mu)?,
+            };
+            for i in 0..3 {
+                v1[i] += lp.m_wn[i] * imp.p_n + lp.m_wt[i] * imp.p_t; // formula: v_{k+1} = v_free + M^-1 (w_n P_n + w_t P_t)
+            }
+            status = imp.status;
+        }
+        for i in 0..3 {
+            q[i] = q_m[i] + 0.5 * h * v1[i]; // formula: q_{k+1} = q_m + h v_{k+1} / 2
+        }
+        v = v1;
+        if !q.iter().chain(v.iter()).all(|x| x.is_finite()) {
+            return None;
+        }
+        (t, k, prev) = (t1, k + 1, status);
+    }
+    Some(MjSummary {
+        mean_velocity_mps: (md.mj_xc(&q) - md.mj_xc(&q0)) / duration_s,
+        ambiguous_steps: ambiguous,
+    })
+}
+
 /// Mean speed of C (m/s) by Moreau-Jean with step `h_s` from the static start of the
 /// event-driven run (`y0`) over `duration_s`; `None` if the run failed.
 pub fn mj_mean_speed(md: &InertiaModel, y0: &State, duration_s: f64, h_s: f64) -> Option<f64> {
