@@ -79,7 +79,7 @@ impl Harmonic {
     }
 
     /// `u = delta cos(2 pi f t)` along `axis` (the stick's platform, section 4).
-    pub(crate) fn cosine(axis: Axis, amplitude_m: f64, frequency_hz: f64) -> Self {
+    pub fn cosine(axis: Axis, amplitude_m: f64, frequency_hz: f64) -> Self {
         Harmonic {
             axis,
             amplitude_m,
