@@ -58,11 +58,8 @@ pub const SEQUENCE_RTOLS: [f64; 2] = [EVIDENCE_RTOL, 1e-8];
 /// events at step ends, at each of [`SEQUENCE_RTOLS`].
 fn unlocated_sequences(params: &[StickParams; 2], duration_s: f64) -> [[String; 2]; 2] {
     let rec = Recording {
-        sequence_cap: 100_000,
-        trace_dt_s: 0.0,
-        check_invariants: false,
-        grid_only: false,
-        list_cap: None,
+        sequence_cap: 100_000, // the phase sequence only: no trace, no checks, default lists
+        ..Recording::default()
     };
     let jobs = [(0usize, 0usize), (0, 1), (1, 0), (1, 1)];
     let seqs = crate::sweep::par_map(&jobs, "stick sequences at step ends", |&(k, i)| {

@@ -94,11 +94,8 @@ pub fn errata_table(ev: &Evidence, opts: &Options) -> String {
         ..*opts
     };
     let rec = Recording {
-        sequence_cap: 100_000,
-        trace_dt_s: 0.0,
-        check_invariants: false,
-        grid_only: false,
-        list_cap: None,
+        sequence_cap: 100_000, // the phase sequence only: no trace, no checks, default lists
+        ..Recording::default()
     };
     let sets = rule_sets();
     let scenes = [(&ev.params[0], &ev.authors), (&ev.params[1], &ev.jamming)];
