@@ -267,7 +267,7 @@ pub fn is_close(a: f64, b: f64, tol: f64) -> bool {
 /// visible instead of silently turning into `null`.
 pub(super) fn finite_or_text(v: Value) -> Value {
     match v {
-        Value::Null => Value::String("non-finite".into()),
+        Value::Null => Value::String(super::NON_FINITE.into()),
         other => other,
     }
 }

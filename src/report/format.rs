@@ -14,12 +14,17 @@ fn clip(s: &str, width: usize) -> String {
     }
 }
 
+/// The one text that stands for a non-finite number (NaN, ±inf) in tables and JSON
+/// (JSON has no NaN): written by [`fmt_num`], [`fmt_value`] and the report's results,
+/// and the one value the report's non-finite check recognises.
+pub const NON_FINITE: &str = "non-finite";
+
 /// Formats a number for tables: integers exactly, others with 4 significant digits
 /// (scientific notation outside 1e-3 .. 1e5). Stable across runs and platforms for
 /// numbers that agree to ~5 digits.
 pub fn fmt_num(x: f64) -> String {
     if !x.is_finite() {
-        return "non-finite".into();
+        return NON_FINITE.into();
     }
     if x == x.trunc() && x.abs() < 1e9 {
         return format!("{}", x as i64);
@@ -49,7 +54,7 @@ pub fn fmt_value(v: &Value) -> String {
         Value::Number(n) => n.as_f64().map(fmt_num).unwrap_or_else(|| n.to_string()),
         Value::String(s) => s.clone(),
         Value::Bool(b) => b.to_string(),
-        Value::Null => "non-finite".into(),
+        Value::Null => NON_FINITE.into(),
         Value::Array(a) => format!(
             "[{}]",
             a.iter().map(fmt_value).collect::<Vec<_>>().join(", ")

@@ -17,7 +17,7 @@ mod summary;
 use claim::finite_or_text;
 pub use claim::{is_close, Check, Claim, ClaimDraft, DocEdit, Mutation, Verdict};
 pub use falsify::Falsifiable;
-pub use format::{fmt_num, fmt_value};
+pub use format::{fmt_num, fmt_value, NON_FINITE};
 use serde::Serialize;
 use serde_json::{Map, Value};
 use std::fmt::Write as _;
@@ -93,7 +93,7 @@ impl ChapterReport {
                     "workbook",
                     &format!("result {key} is a finite number"),
                 )
-                .values("finite", "non-finite", "exact")
+                .values("finite", NON_FINITE, "exact")
                 .confirmed_if(false),
             );
         }
@@ -245,7 +245,7 @@ impl ChapterReport {
 
 fn non_finite_text(v: &Value) -> bool {
     match v {
-        Value::String(t) => t == "non-finite",
+        Value::String(t) => t == NON_FINITE,
         Value::Array(a) => a.iter().any(non_finite_text),
         Value::Object(o) => o.values().any(non_finite_text),
         _ => false,

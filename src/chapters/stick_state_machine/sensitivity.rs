@@ -90,8 +90,8 @@ pub fn tolerance_sensitivity(
             "rtol": rtol,
             "rtol_second": rtol2,
             "mean_velocity_mps": round(v1, 6),
-            "mean_velocity_second_mps": if v2.is_finite() { json!(round(v2, 6)) } else { json!("non-finite") },
-            "relative_difference": if rel.is_finite() { json!(round(rel, 2)) } else { json!("non-finite") },
+            "mean_velocity_second_mps": if v2.is_finite() { json!(round(v2, 6)) } else { json!(crate::report::NON_FINITE) },
+            "relative_difference": if rel.is_finite() { json!(round(rel, 2)) } else { json!(crate::report::NON_FINITE) },
             "sensitive": sensitive,
         }),
     );
