@@ -1,6 +1,6 @@
 //! The runs and side computations the claims are judged on.
 
-use super::{run_scene, scene_params, Scene};
+use super::{run_scene, Scene};
 use crate::chapters::Context;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Integrator, Method, StepControl};
@@ -77,8 +77,8 @@ fn unlocated_sequences(params: &[StickParams; 2], duration_s: f64) -> [[String; 
 
 /// Runs the evidence (a few tenths of a second in release).
 pub fn collect(ctx: &Context, opts: &Options) -> Evidence {
-    let pa = scene_params(Scene::Authors, ctx.g_mps2);
-    let pj = scene_params(Scene::Jamming, ctx.g_mps2);
+    let pa = Scene::Authors.params(ctx.g_mps2);
+    let pj = Scene::Jamming.params(ctx.g_mps2);
     let dur = if ctx.quick { 1.0 } else { 5.0 };
     let rec = |p: &StickParams| Recording {
         sequence_cap: 100_000,

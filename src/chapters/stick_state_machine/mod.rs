@@ -45,7 +45,7 @@ use crate::flags::Flag;
 use crate::scenes::round;
 use crate::scenes::stick::main_run;
 use crate::scenes::stick::{poincare, Rules, Scene, Start};
-use crate::scenes::stick::{run_printed, run_scene, run_scene_from, scene_params};
+use crate::scenes::stick::{run_printed, run_scene, run_scene_from};
 use events::EVENTS_CAP;
 use serde_json::json;
 

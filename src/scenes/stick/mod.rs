@@ -61,11 +61,6 @@ impl Scene {
     }
 }
 
-/// [`Scene::params`].
-pub fn scene_params(scene: Scene, g_mps2: Option<f64>) -> StickParams {
-    scene.params(g_mps2)
-}
-
 /// The starting state of a run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Start {
