@@ -4,7 +4,7 @@
 
 use super::evidence::Evidence;
 use super::sims::{biharmonic, drift_after_lock, run_block, slip_transient, Law, Numerics, Window};
-use super::work::WorkRow;
+use super::work::{Drive, Method, WorkRow};
 use super::Scene;
 use crate::error::Result;
 use crate::physics::plate::{PlateMotion, Sawtooth};
@@ -214,30 +214,25 @@ fn regime_map(sc: &Scene, dir: &Path) -> Result<Vec<String>> {
 fn work_precision(rows: &[WorkRow], tol_mps: f64, dir: &Path) -> Result<Vec<String>> {
     let floor = 1e-17; // errors of exactly 0 drawn at the floor
     let mut charts = Vec::new();
-    for drive in ["sawtooth", "bi-harmonic"] {
-        let pick = |key: &str| -> Vec<(f64, f64)> {
+    for drive in Drive::ALL {
+        let pick = |method: Method| -> Vec<(f64, f64)> {
             rows.iter()
-                .filter(|w| w.0 == drive && w.1.starts_with(key))
-                .map(|w| ((w.2 as f64).max(1.0), w.3.max(floor)))
+                .filter(|w| w.drive == drive && w.method == method)
+                .map(|w| ((w.rhs_evals as f64).max(1.0), w.error_mps.max(floor)))
                 .collect()
-        };
-        let reference = if drive == "sawtooth" {
-            "closed-form drift"
-        } else {
-            "closed-form-flow run"
         };
         charts.push(
             Chart::new(
-                &format!("{drive}: error of the Coulomb drift against work"),
+                &format!("{}: error of the Coulomb drift against work", drive.label()),
                 "right-hand-side evaluations",
-                &format!("|drift - {reference}| (m/s)"),
+                &format!("|drift - {}| (m/s)", drive.reference()),
             )
             .log_x()
             .log_y()
-            .line_points("DP5, located events (tol 1e-3 … 1e-12)", pick("DP5"))
+            .line_points("DP5, located events (tol 1e-3 … 1e-12)", pick(Method::Dopri5))
             .line_points(
                 "RK4 fixed step, no event location (T/15 … T/1023)",
-                pick("RK4"),
+                pick(Method::Rk4Fixed),
             )
             .hline(tol_mps, "claim tolerance (the run's error budget)"),
         );

@@ -6,8 +6,72 @@ use crate::ladder::{self, Run, Timing};
 use crate::physics::plate::{PlateMotion, Sawtooth};
 use crate::report::fmt_num;
 
-/// Work-precision rows: `(drive, method, rhs evals, |drift error| m/s)`.
-pub type WorkRow = (&'static str, String, u64, f64);
+/// The two drives of the table.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Drive {
+    /// The document's two-velocity sawtooth: its error against the closed-form drift.
+    Sawtooth,
+    /// The smooth bi-harmonic drive in the stick-slip band (no closed form): its error
+    /// against the run with closed-form flows.
+    Biharmonic,
+}
+
+impl Drive {
+    /// Both, in the table's order.
+    pub const ALL: [Drive; 2] = [Drive::Sawtooth, Drive::Biharmonic];
+
+    /// The name in the table and the chart.
+    pub fn label(self) -> &'static str {
+        match self {
+            Drive::Sawtooth => "sawtooth",
+            Drive::Biharmonic => "bi-harmonic",
+        }
+    }
+
+    /// What its drift's error is measured against.
+    pub fn reference(self) -> &'static str {
+        match self {
+            Drive::Sawtooth => "closed-form drift",
+            Drive::Biharmonic => "closed-form-flow run",
+        }
+    }
+}
+
+/// The three ways of running the block.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// The closed-form flows with located events (the sawtooth only: for the
+    /// bi-harmonic drive it is the reference).
+    ClosedForms,
+    /// Dormand-Prince 5(4) at a tolerance, located events.
+    Dopri5,
+    /// Classical Runge-Kutta at a fixed step, no event location.
+    Rk4Fixed,
+}
+
+impl Method {
+    /// The name in the table.
+    pub fn label(self) -> &'static str {
+        match self {
+            Method::ClosedForms => "closed forms, located events",
+            Method::Dopri5 => "DP5, located events",
+            Method::Rk4Fixed => "RK4 fixed step, no location",
+        }
+    }
+}
+
+/// One row of the work-precision table.
+#[derive(Debug, Clone)]
+pub struct WorkRow {
+    /// The drive.
+    pub drive: Drive,
+    /// The method.
+    pub method: Method,
+    /// Right-hand-side evaluations of the run.
+    pub rhs_evals: u64,
+    /// |drift - reference| (m/s).
+    pub error_mps: f64,
+}
 
 /// The table `work_precision` (markdown) and the rows of the figure, for the sawtooth
 /// `saw` (friction `k` = mu g, m/s^2; closed-form drift `v_formula`, m/s) and the
@@ -26,9 +90,9 @@ pub fn work_precision(
     // Sawtooth: reference the closed-form drift. Bi-harmonic in the stick-slip band
     // (Gamma = 1.5, eps = 0.1; no closed form): reference the closed-form-flow run.
     let wb = biharmonic(vb, 1.5, 0.1, k);
-    let plates: [(&str, &dyn PlateMotion, Window); 2] = [
+    let plates: [(Drive, &dyn PlateMotion, Window); 2] = [
         (
-            "sawtooth",
+            Drive::Sawtooth,
             &saw,
             Window {
                 transient: transient(&saw, k),
@@ -36,7 +100,7 @@ pub fn work_precision(
             },
         ),
         (
-            "bi-harmonic",
+            Drive::Biharmonic,
             &wb,
             Window {
                 transient: slip_transient(1.5),
@@ -45,19 +109,19 @@ pub fn work_precision(
         ),
     ];
     for (drive, plate, win) in plates {
-        let reference = if drive == "sawtooth" {
-            v_formula
-        } else {
-            run_block(coul, plate, 0.0, win, num, (0.0, 0.0), 0.0).mean_velocity_mps
+        let reference = match drive {
+            Drive::Sawtooth => v_formula,
+            Drive::Biharmonic => {
+                run_block(coul, plate, 0.0, win, num, (0.0, 0.0), 0.0).mean_velocity_mps
+            }
         };
-        let mut settings: Vec<(&str, String, Numerics)> = vec![(
-            "closed forms, located events",
-            "-".into(),
-            Numerics::default(),
-        )];
+        let mut settings: Vec<(Method, String, Numerics)> = Vec::new();
+        if drive == Drive::Sawtooth {
+            settings.push((Method::ClosedForms, "-".into(), Numerics::default()));
+        }
         for tol in [1e-3, 1e-6, 1e-9, 1e-12] {
             settings.push((
-                "DP5, located events",
+                Method::Dopri5,
                 format!("tol {tol:.0e}"),
                 Numerics::dopri(tol),
             ));
@@ -66,16 +130,13 @@ pub fn work_precision(
         // slow stroke's start) exactly and hide the late switch by luck.
         for n in [15, 63, 255, 1023] {
             settings.push((
-                "RK4 fixed step, no location",
+                Method::Rk4Fixed,
                 format!("T/{n}"),
                 Numerics::fixed_rk4(n, plate.period_s()),
             ));
         }
         // The one work-precision ladder (`crate::ladder`): error |v_d - reference| against
         // rhs evaluations; the event-location count is this table's own column.
-        let settings = settings
-            .into_iter()
-            .filter(|(method, _, _)| !(drive == "bi-harmonic" && method.starts_with("closed")));
         let mut locate_evals = Vec::new();
         let error = |r: &Run| (r.value - reference).abs(); // formula: |v_d - v_ref| (m/s)
         let rungs = ladder::climb(settings, Timing::MinOf(1), error, |(_, _, n)| {
@@ -91,11 +152,18 @@ pub fn work_precision(
         for (rung, located) in rungs.iter().zip(locate_evals) {
             let (method, setting, _) = &rung.setting;
             rows.push_str(&format!(
-                "| {drive} | {method} | {setting} | {} | {located} | {} |\n",
+                "| {} | {} | {setting} | {} | {located} | {} |\n",
+                drive.label(),
+                method.label(),
                 rung.cost.rhs_evals,
                 fmt_num(rung.error)
             ));
-            work.push((drive, method.to_string(), rung.cost.rhs_evals, rung.error));
+            work.push(WorkRow {
+                drive,
+                method: *method,
+                rhs_evals: rung.cost.rhs_evals,
+                error_mps: rung.error,
+            });
         }
     }
     (rows, work)
