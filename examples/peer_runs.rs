@@ -6,7 +6,7 @@
 //!   timed inside the process: the minimum wall time of `repeats` runs and the drive
 //!   cycles per second (`benches/peers/heyoka_stick.py`).
 //! - `peer_runs painleve`: chapter 8's rod on the scene of cardillo's `Painleve.py`
-//!   (`chapters::stick_with_inertia::evidence::glocker_scene`, 1.5 s), with the state
+//!   (`physics::stick_inertia::run::glocker_scene`, 1.5 s), with the state
 //!   right after the impact without collision and at the end
 //!   (`benches/peers/cardillo_painleve.py`).
 //! - `peer_runs toothpick <jamming|authors> <duration_s>`: chapter 8's uniform stick (no tip
@@ -65,7 +65,7 @@ fn centre_json(md: &InertiaModel, y: &[f64; 10]) -> String {
     )
 }
 
-/// The scene of `chapters::stick_with_inertia::evidence::glocker_scene`, sampled every
+/// The scene of `physics::stick_inertia::run::glocker_scene`, sampled every
 /// 1e-4 s: the first sample after the event is in flight (k = gamma = 0: omega constant,
 /// G ballistic), so the state right after the impulse follows by undoing gravity over
 /// the gap (done by the Python runner).

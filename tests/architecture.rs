@@ -470,3 +470,98 @@ fn the_module_graph_follows_re_exports_and_nested_use_trees() {
         ]
     );
 }
+
+/// The lines of the registry's macro (`src/chapters/mod.rs`) that declare the chapter
+/// modules, and every `pub mod` line inside a chapter folder or file.
+fn chapter_module_declarations() -> (Vec<String>, Vec<String>) {
+    let reg = std::fs::read_to_string(src().join("chapters").join("mod.rs")).expect("registry");
+    let decl = reg
+        .lines()
+        .map(str::trim)
+        .filter(|l| l.contains("mod $module"))
+        .map(String::from)
+        .collect();
+    let mut public = Vec::new();
+    for ch in chapter_modules() {
+        let dir = src().join("chapters").join(&ch);
+        let files = if dir.is_dir() {
+            rust_files(&dir)
+        } else {
+            vec![src().join("chapters").join(format!("{ch}.rs"))]
+        };
+        for f in files {
+            for l in code(&f)
+                .lines()
+                .filter(|l| l.trim().starts_with("pub mod "))
+            {
+                public.push(format!("{}: {}", f.display(), l.trim()));
+            }
+        }
+    }
+    (decl, public)
+}
+
+/// The chapter modules (among `modules`) that `code` names as `chapters::<module>`,
+/// also inside a `chapters::{...}` group.
+fn chapter_paths(code: &str, modules: &[String]) -> Vec<String> {
+    let named = names_after(code, "chapters::");
+    modules
+        .iter()
+        .filter(|m| named.contains(*m))
+        .cloned()
+        .collect()
+}
+
+#[test]
+fn chapter_modules_are_private_to_the_crate() {
+    // The registry declares every chapter `pub(crate)` and a chapter's files are private
+    // (or `pub(super)`/`pub(crate)`): the tests of a chapter's internals are its unit
+    // tests (`src/chapters/<module>/tests.rs`); the integration tests, the benchmarks,
+    // the examples and the exercises reach a chapter through the registry
+    // (`chapters::CHAPTERS`, `run_default`, `mutations`) or its command line, and what
+    // they compute with lives below the chapters (`scenes`, `physics`, `numerics`).
+    let (decl, public) = chapter_module_declarations();
+    assert_eq!(
+        decl,
+        ["$(pub(crate) mod $module;)*"],
+        "the registry's module declaration"
+    );
+    assert!(
+        public.is_empty(),
+        "public modules inside chapters:\n{}",
+        public.join("\n")
+    );
+    let modules = chapter_modules();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut bad = Vec::new();
+    for dir in ["tests", "benches", "examples"] {
+        for f in rust_files(&root.join(dir)) {
+            if f.starts_with(root.join("tests").join("architecture"))
+                || f.ends_with("tests/architecture.rs")
+            {
+                continue; // this checker: its test data names chapter paths
+            }
+            for m in chapter_paths(&code(&f), &modules) {
+                bad.push(format!("{} names chapters::{m}", f.display()));
+            }
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "chapter internals named outside the crate:\n{}",
+        bad.join("\n")
+    );
+    // the reader can fail: a path and a group into a chapter are found, the registry's
+    // public items are not
+    let m = modules.clone();
+    let found = chapter_paths(
+        "use locomotion_workbook::chapters::{self, Context, effective_mass::x};\nchapters::vertical_shaking::scene::run()",
+        &m,
+    );
+    assert_eq!(found, ["effective_mass", "vertical_shaking"]);
+    assert!(chapter_paths(
+        "use locomotion_workbook::chapters::{run_default, CHAPTERS};",
+        &m
+    )
+    .is_empty());
+}

@@ -82,10 +82,12 @@ fn lesson_pieces(info: &ChapterInfo, lesson: &str) -> Vec<String> {
     missing
 }
 
-/// The Rust piece outside the registry line: its folder. (A test file of its own is
+/// The Rust piece outside the registry line: its folder. (Test files of its own are
 /// optional: `every_chapter.rs` runs every chapter quick, checks its claims and the 10 %
-/// rule and snapshots it; a `tests/<id>.rs` that exists must be wired in, which
-/// [`every_test_file_is_compiled`] checks for every file of `tests/`.)
+/// rule and snapshots it; a `tests/<id>.rs` that exists, for black-box tests through the
+/// command line, must be wired in, which [`every_test_file_is_compiled`] checks for every
+/// file of `tests/`; unit tests of its internals, `src/chapters/<id>/tests.rs`, must be
+/// declared at the end of its `mod.rs`.)
 fn code_pieces(info: &ChapterInfo) -> Vec<String> {
     let m = module(info);
     let mut missing = Vec::new();
@@ -100,7 +102,24 @@ fn code_pieces(info: &ChapterInfo) -> Vec<String> {
             "tests/main.rs: the line `mod {m};` ({test} exists but is never compiled)"
         ));
     }
+    let folder = format!("src/chapters/{m}");
+    let mod_rs = read(Path::new(&format!("{folder}/mod.rs"))).unwrap_or_default();
+    let has_unit_tests = root().join(format!("{folder}/tests.rs")).is_file();
+    missing.extend(unit_tests_unwired(&folder, &mod_rs, has_unit_tests));
     missing
+}
+
+/// A chapter's unit tests (`<folder>/tests.rs`, the tests of its internals) that its
+/// `mod.rs` does not declare: never compiled, so never run.
+fn unit_tests_unwired(folder: &str, mod_rs: &str, has_unit_tests: bool) -> Option<String> {
+    let declared = mod_rs
+        .lines()
+        .any(|l| l.trim() == "mod tests;" || l.trim() == "#[cfg(test)] mod tests;");
+    (has_unit_tests && !declared).then(|| {
+        format!(
+            "{folder}/mod.rs: the lines `#[cfg(test)]` and `mod tests;` at its end ({folder}/tests.rs exists but is never compiled)"
+        )
+    })
 }
 
 /// The modules of `tests/main.rs` (`mod x;` lines).
@@ -215,4 +234,16 @@ fn a_test_file_that_is_not_wired_in_is_named() {
             .any(|l| l.starts_with(&format!("tests/{m}.rs: add `mod {m};`"))),
         "{unwired:#?}"
     );
+}
+
+#[test]
+fn unit_tests_that_are_not_declared_are_named() {
+    let folder = "src/chapters/a_new_chapter";
+    let line = unit_tests_unwired(folder, "mod claims;\nmod evidence;\n", true).expect("named");
+    assert!(
+        line.starts_with("src/chapters/a_new_chapter/mod.rs: the lines"),
+        "{line}"
+    );
+    assert!(unit_tests_unwired(folder, "mod claims;\n#[cfg(test)]\nmod tests;\n", true).is_none());
+    assert!(unit_tests_unwired(folder, "mod claims;\n", false).is_none());
 }

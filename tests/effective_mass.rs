@@ -5,19 +5,17 @@
 //! at every angle and for every m and L (rigid-body mechanics, `I_G = m L^2/12`); the
 //! jammed-collision impulse ratio is `q` for a tip mass and `3q/(4+q^2)` for the rod
 //! (closed forms derived in the course text from `M = m e e^T + (m/4) n n^T`), odd in
-//! the lean angle; the rod's maximum 3/4 at `q = 2`; and the CLI contract with one
-//! bad-input test per flag.
+//! the lean angle; and the CLI contract with one bad-input test per flag. The rod's
+//! maximum 3/4 at `q = 2` by the chapter's golden-section search, its locking angles and
+//! the quick report's snapshot: the chapter's unit tests,
+//! `src/chapters/effective_mass/tests.rs`.
 
 use crate::common;
 
-use locomotion_workbook::chapters::effective_mass::{
-    golden_max, rod_lock_angles_closed_form, rod_ratio,
-};
 use locomotion_workbook::physics::rigid::{
     effective_mass, impulse_for_velocity_change, in_stick_frame, jam_ratio, rod_contact_offset,
     tip_contact_offset, RigidBody,
 };
-use locomotion_workbook::report::fmt_num;
 use nalgebra::Vector2;
 use serde_json::Value;
 
@@ -147,53 +145,6 @@ fn jammed_impulse_keeps_c_from_sliding_and_conserves_momentum() {
         assert!(l_c.abs() < 1e-12, "{l_c}");
         assert!(imp.impulse.y > 0.0 && imp.impulse.x > 0.0);
     }
-}
-
-#[test]
-fn golden_section_and_rod_locking_angles_match_closed_forms() {
-    // d/dq 3q/(4+q^2) = 0 at q = 2; the golden section works on the mass-matrix ratio.
-    let best = golden_max(rod_ratio, 0.0, 1.5, 1e-12);
-    assert!((best - 2f64.atan()).abs() < 1e-7, "{best}");
-    // mu = 0.6: mu q^2 - 3q + 4 mu = 0 is q^2 - 5q + 4 = 0, roots q = 1 and q = 4
-    // (3/5 = 12/20 = 0.6): the rod slips only for 45 deg < theta < atan 4 = 75.96 deg.
-    let (a1, a2) = rod_lock_angles_closed_form(0.6).unwrap();
-    assert!((a1 - std::f64::consts::FRAC_PI_4).abs() < 1e-14 && (a2 - 4f64.atan()).abs() < 1e-14);
-    for a in [a1, a2] {
-        assert!((rod_ratio(a) - 0.6).abs() < 1e-12, "{a}");
-    }
-    assert!(
-        rod_lock_angles_closed_form(0.75).is_none() && rod_lock_angles_closed_form(0.0).is_none()
-    );
-}
-
-#[test]
-fn large_mu_and_the_summary_snapshot() {
-    // mu >= 3/4 exceeds the rod's largest ratio: the claim says the rod jams at every
-    // angle, and the document's sufficient bound holds.
-    let r = report(&["--mu", "0.8"]);
-    let c = r["claims"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|c| c["id"] == "self-locking-bound")
-        .unwrap();
-    assert_eq!(c["verdict"], "confirmed");
-    assert!(c["statement"].as_str().unwrap().contains("every angle"));
-    let r = report(&[]);
-    let mut lines = common::verdict_lines(&r, " ");
-    for (k, v) in r["results"].as_object().unwrap() {
-        let s = v
-            .as_f64()
-            .map(|x| format!("{x:.4}"))
-            .unwrap_or_else(|| v.to_string());
-        lines += &format!("{k} = {s}\n");
-    }
-    lines += &format!(
-        "rod lock angles mu=0.4: {:?}",
-        rod_lock_angles_closed_form(0.4)
-            .map(|(a, b)| (fmt_num(a.to_degrees()), fmt_num(b.to_degrees())))
-    );
-    insta::assert_snapshot!("effective_mass_summary", lines);
 }
 
 #[test]

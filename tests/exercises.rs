@@ -365,10 +365,8 @@ fn rimless_stride(u: f64, alpha: f64, psi: f64, l: f64) -> f64 {
 
 #[test]
 fn chapter_6_limit_cycle() {
-    use locomotion_workbook::chapters::stick_state_machine::limit_cycle::{
-        options, H_FINE, NEWTON_TOL,
-    };
     use locomotion_workbook::physics::stick::{jamming_scene, Mode, StickModel};
+    use locomotion_workbook::scenes::stick::limit_cycle::{options, H_FINE, NEWTON_TOL};
     use locomotion_workbook::scenes::stick::poincare::{
         jacobian, moduli, multipliers, newton, Difference, Point,
     };
@@ -457,13 +455,13 @@ fn chapter_7_speed_vs_accuracy() {
 
 #[test]
 fn chapter_8_stick_with_inertia() {
-    use locomotion_workbook::chapters::stick_state_machine::limit_cycle::options;
     use locomotion_workbook::physics::stick::jamming_scene;
     use locomotion_workbook::physics::stick::run::{initial_state, simulate_stick, Recording};
     use locomotion_workbook::physics::stick::StickModel;
     use locomotion_workbook::physics::stick_inertia::painleve::mu_painleve;
     use locomotion_workbook::physics::stick_inertia::run::run_from_rest;
     use locomotion_workbook::physics::stick_inertia::{InertiaModel, InertiaParams, MassGeometry};
+    use locomotion_workbook::scenes::stick::limit_cycle::options;
 
     let equal = MassGeometry::new(0.15, 1.0, 1.0).alpha();
     check_number("ex8.1-alpha", equal);

@@ -176,12 +176,13 @@ impl ChapterInfo {
 }
 
 /// The registry: one line `chapter!(module, number, "id", "title", "section",
-/// "question")` per chapter declares its module (`pub mod module;`, the folder
-/// `module/`) and its entry of [`CHAPTERS`] (its `run`, its `FLAGS` and its
+/// "question")` per chapter declares its module (`pub(crate) mod module;`, the folder
+/// `module/`: a chapter's internals are private to the crate, its tests of them are
+/// its unit tests, `module/tests.rs`) and its entry of [`CHAPTERS`] (its `run`, its `FLAGS` and its
 /// [`Falsifiable`] `Document`).
 macro_rules! registry {
     ($(chapter!($module:ident, $number:literal, $id:literal, $title:literal, $section:literal, $question:literal)),* $(,)?) => {
-        $(pub mod $module;)*
+        $(pub(crate) mod $module;)*
 
         /// All chapters, in course order: the registry.
         pub static CHAPTERS: &[ChapterInfo] = &[$(

@@ -9,14 +9,14 @@
 //! claims). Closed forms: `physics::sawtooth` (two-velocity sawtooth, linear orbit) and
 //! `physics::sawtooth::biharmonic` (smooth drive).
 
-pub mod claims;
-pub mod evidence;
+mod claims;
+mod evidence;
 mod figures;
 mod mutations;
 pub use mutations::Document;
-pub mod sims;
-pub mod statements;
-pub mod work;
+mod sims;
+mod statements;
+mod work;
 
 use super::{info, Context};
 use crate::error::Result;
@@ -254,3 +254,6 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     Ok(r)
 }
 
+
+#[cfg(test)]
+mod tests;

@@ -6,7 +6,7 @@
 use crate::numerics::hybrid::{Observer, Options, Outcome, Segment};
 use crate::numerics::ode::{Method, Stats, StepControl};
 use crate::physics::block::{
-    simulate_block_observed, BlockMode, BlockOptions, BlockParams, BlockStop, BlockSystem,
+    simulate_block_observed, BlockMode, BlockOptions, BlockParams, BlockSystem,
 };
 use crate::physics::plate::{Biharmonic, PlateMotion, Sawtooth};
 use crate::physics::sawtooth::lock_time_s;
@@ -54,8 +54,6 @@ pub struct DriftRun {
     pub mean_velocity_mps: f64,
     /// Largest absolute block velocity inside the window (m/s).
     pub v_max_mps: f64,
-    /// Smallest absolute block velocity inside the window (m/s).
-    pub v_min_mps: f64,
     /// Time of the first slip-to-stick event (s), if any.
     pub first_stick_s: Option<f64>,
     /// True if the block stuck during a stroke with negative plate velocity in the window.
@@ -72,10 +70,6 @@ pub struct DriftRun {
     pub stats: Stats,
     /// Guard evaluations spent locating events.
     pub locate_evals: u64,
-    /// Events (contact changes).
-    pub events: usize,
-    /// How the run ended (`Completed` unless the driver stopped it).
-    pub outcome: Outcome<BlockStop>,
     /// The error budget of `mean_velocity_mps` (m/s): [`mean_velocity_budget_mps`].
     pub budget_mps: f64,
 }
@@ -365,7 +359,6 @@ pub fn run_block<P: PlateMotion + ?Sized>(
         } // formula: <v> = (x(t_b) - x(t_a)) / (t_b - t_a)
         _ => f64::NAN,
     };
-    let c = run.total_counts;
     let speed = [w.v_max, w.v_min, v0_mps]
         .iter()
         .fold(0.0f64, |m, v| if v.is_finite() { m.max(v.abs()) } else { m });
@@ -387,7 +380,6 @@ pub fn run_block<P: PlateMotion + ?Sized>(
     DriftRun {
         mean_velocity_mps: mean,
         v_max_mps: w.v_max,
-        v_min_mps: w.v_min,
         first_stick_s: w.first_stick,
         stuck_in_backward_stroke: w.backward_stick,
         friction_along_plate: !w.against_plate,
@@ -398,13 +390,6 @@ pub fn run_block<P: PlateMotion + ?Sized>(
         trace: w.trace,
         stats: run.stats,
         locate_evals: run.locate_evals,
-        events: c.takeoffs
-            + c.landings
-            + c.stick_to_slip
-            + c.slip_to_stick
-            + c.reversals
-            + c.breakpoints,
-        outcome: run.outcome,
         budget_mps,
     }
 }

@@ -24,7 +24,6 @@ use crate::error::Result;
 use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
-pub use evidence::{bisect, golden_max, rod_lock_angles_closed_form, rod_ratio};
 pub use mutations::Document;
 
 /// Flags of the chapter (their help lines: [`FLAGS`]).
@@ -112,3 +111,6 @@ fn results(r: &mut ChapterReport, ev: &evidence::Evidence, mu: f64) {
     r.result("rod_jams_under_vertical_impulse", rod_jams);
 }
 
+
+#[cfg(test)]
+mod tests;

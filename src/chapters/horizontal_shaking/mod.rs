@@ -19,11 +19,11 @@ use crate::flags::Flag;
 use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
 use drift::Scene;
-pub use drift::{gamma_for_1pct, relative_error};
+pub use drift::relative_error;
 pub use mutations::Document;
 
 mod claims;
-pub mod drift;
+mod drift;
 mod evidence;
 mod figures;
 mod mutations;
@@ -203,3 +203,6 @@ fn results(r: &mut ChapterReport, ev: &evidence::Evidence) {
     );
 }
 
+
+#[cfg(test)]
+mod tests;

@@ -11,24 +11,24 @@
 //! - Economy: the flight-map law and the document's `mu_eff = v_ave/v_z` against the
 //!   exact simulation: where within 1 %, and how much cheaper.
 
-pub mod block_part;
-pub mod claims;
-pub mod economy;
-pub mod evidence;
-pub mod failures;
-pub mod figures;
-pub mod missed_event;
-pub mod mutations;
+mod block_part;
+mod claims;
+mod economy;
+mod evidence;
+mod failures;
+mod figures;
+mod missed_event;
+mod mutations;
 pub use mutations::Document;
-pub mod observed_failures;
-pub mod report_parts;
-pub mod setup;
-pub mod statements;
-pub mod stick_methods;
-pub mod stick_methods_soft;
-pub mod stick_part;
-pub mod tables;
-pub mod work_precision;
+mod observed_failures;
+mod report_parts;
+mod setup;
+mod statements;
+mod stick_methods;
+mod stick_methods_soft;
+mod stick_part;
+mod tables;
+mod work_precision;
 
 use super::Context;
 // the block's benchmark scene and the timed runs (`crate::scenes`), as `super::...` here
@@ -187,3 +187,6 @@ pub fn run(args: &Args, ctx: &Context) -> Result<ChapterReport> {
     report_parts::build(&ev, ctx, &mut r, &statements::Statements::PRINTED)?;
     Ok(r)
 }
+
+#[cfg(test)]
+mod tests;

@@ -42,17 +42,10 @@ pub struct SceneMethods {
     pub reference_mps: f64,
     /// Drive cycles of every run.
     pub cycles: f64,
-    /// Ladders in the order of [`METHODS`].
+    /// Ladders in the order event-driven DOP853, event-driven DP5, Moreau-Jean, soft
+    /// contact (the charts' `STICK_METHODS`, `figures.rs`).
     pub ladders: Vec<Ladder>,
 }
-
-/// The methods, in the order of the ladders.
-pub const METHODS: [&str; 4] = [
-    "event_dop853",
-    "event_dopri5",
-    "moreau_jean",
-    "soft_contact",
-];
 
 /// Tolerance of the soft model's integration: converged in time for this ladder (at
 /// eps = 0.003125 the mean speed moves by 1.1e-7 relative from rtol 1e-10 to 1e-11, 3e-7

@@ -8,11 +8,13 @@
 //! `evidence.rs` (the runs, computed once), `claims.rs` with its parts `collision_claims.rs`,
 //! `rule_claims.rs`, `slide_rules.rs` and `table1_claims.rs` (pure functions of statements and evidence),
 //! `figures.rs`, `mutations.rs`; the limit-cycle section has its own `cycle_claims.rs`
-//! and `cycle_report.rs`. This file: the flags and the orchestration.
+//! and `cycle_report.rs` (the analysis they judge, `crate::scenes::stick::limit_cycle`,
+//! is a scene-level tool the exercises use too). Unit tests of the chapter's internals:
+//! `tests.rs`. This file: the flags and the orchestration.
 
 mod claims;
 mod collision_claims;
-pub mod cycle_claims;
+mod cycle_claims;
 mod cycle_report;
 mod events;
 mod evidence;
@@ -22,13 +24,11 @@ mod gait_map;
 mod gap_claims;
 mod impulse;
 mod lagrange;
-pub mod limit_cycle;
 mod maps;
 mod mutations;
 mod printed_table;
 mod rest_scan;
 mod rule_claims;
-pub mod saltation;
 mod sensitivity;
 mod slide_rules;
 mod statements;
@@ -44,7 +44,7 @@ use crate::flags::Flag;
 // named here so that the chapter's files use them as `super::...`.
 use crate::scenes::round;
 use crate::scenes::stick::main_run;
-use crate::scenes::stick::{poincare, Rules, Scene, Start};
+use crate::scenes::stick::{limit_cycle, poincare, Rules, Scene, Start};
 use crate::scenes::stick::{run_printed, run_scene, run_scene_from};
 use events::EVENTS_CAP;
 use serde_json::json;
@@ -147,3 +147,6 @@ pub fn run(args: &Args, ctx: &Context) -> Result<crate::report::ChapterReport> {
     Ok(r)
 }
 
+
+#[cfg(test)]
+mod tests;

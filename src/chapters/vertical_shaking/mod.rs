@@ -23,16 +23,16 @@ use crate::physics::domain::Interval;
 use crate::report::ChapterReport;
 use scene::Scene;
 
-pub mod chladni;
-pub mod claims;
-pub mod evidence;
+mod chladni;
+mod claims;
+mod evidence;
 mod figures;
-pub mod landing;
+mod landing;
 mod mutations;
 pub use mutations::Document;
-pub mod regimes;
-pub mod scene;
-pub mod statements;
+mod regimes;
+mod scene;
+mod statements;
 mod tables;
 
 /// Flags of the chapter (defaults: the authors' vibrating plate at 30 Hz, mu = 0.4).
@@ -180,3 +180,6 @@ fn report_results(r: &mut ChapterReport, ev: &evidence::Evidence) {
     r.table("regime-boundaries", tables::regime_boundaries(&ev.bounds));
 }
 
+
+#[cfg(test)]
+mod tests;

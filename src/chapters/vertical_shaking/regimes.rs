@@ -109,8 +109,6 @@ pub struct SweepPoint {
     pub v_mps: f64,
     /// Contact fraction.
     pub contact_fraction: f64,
-    /// Mean flight time (s).
-    pub mean_flight_s: f64,
 }
 
 /// Classifies the exact model at `gamma` after `transient` periods.
@@ -133,7 +131,6 @@ pub fn sweep(scene: &Scene, gammas: &[f64], transient: usize, observe: usize) ->
             flights: st.flights.iter().rev().take(32).copied().collect(),
             v_mps: st.cycle_velocity_mps,
             contact_fraction: st.run.contact_fraction,
-            mean_flight_s: st.mean_flight_s(),
         }
     })
 }

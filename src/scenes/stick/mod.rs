@@ -2,11 +2,15 @@
 //! self-locking scene of the document, the authors' own scene, how a run starts, the
 //! run of a scene under the physical or the printed rules, and the numbers every
 //! reader of a run reports (phase fractions, event counts, the late mean speed of a
-//! speed map's cell). Chapter 6 judges the document on these runs, chapter 8 starts its
-//! rod from the same scenes, the lab animates them and the benchmarks time them.
+//! speed map's cell), and the gait as a limit cycle (the stroboscopic map `poincare`,
+//! the saltation matrices `saltation`, one scene's analysis `limit_cycle`). Chapter 6
+//! judges the document on these runs, chapter 8 starts its rod from the same scenes,
+//! the lab animates them, the benchmarks time them and the exercises compute with them.
 
+pub mod limit_cycle;
 pub mod main_run;
 pub mod poincare;
+pub mod saltation;
 
 use super::Choice;
 use crate::numerics::hybrid::Options;
