@@ -14,6 +14,8 @@
 //!   moment balance would need an infinite normal force; a sticking impulse along the
 //!   rod (on the cone's edge) stops the slip.
 
+use crate::numerics::hybrid::HybridSystem;
+
 use super::{
     CollisionAngle, InvalidReason, Mode, State, StickModel, StickStop, OM, TH, VXC, VZC, ZC,
 };
@@ -46,7 +48,11 @@ impl StickModel {
         y[VXC] = 0.0;
         let e = self.pivot_eval(t, &y);
         let mu = self.p.mu;
-        if allow_pivot && e.fz >= 0.0 && e.fx.abs() <= mu * e.fz {
+        if allow_pivot
+            && e.fz >= 0.0
+            && e.fx.abs() <= mu * e.fz
+            && !self.pivot_leaves_at_once(t, &y)
+        {
             return Next::To(Mode::Pivot, y);
         }
         let (drive, other) = if e.fx > 0.0 {
@@ -73,6 +79,27 @@ impl StickModel {
             "no consistent contact mode at t = {t:.6} s (theta = {:.4} rad, pivot F = ({:.3e}, {:.3e}) N)",
             y[TH], e.fx, e.fz
         )))
+    }
+
+    /// Whether a pivot entered at `(t, y)` would leave its conditions at once, unseen: a
+    /// pivot guard (`F_z`, `mu F_z -+ F_x`) that starts on its zero within rounding and
+    /// falls. A guard never fires from its start, so such a pivot would run on with the
+    /// reaction outside the cone (a rod with k = gamma = 0 carries its force along its
+    /// axis, so at `tan(theta) = mu` the pivot's cone edge and the slide's self-locking
+    /// edge coincide, and a jam there hands back a pivot about to leave the cone). The
+    /// zero is judged against the rounding of the guard's own terms: 16 eps (|F_x| + mu
+    /// |F_z|), a few roundings of each (larger margins fall through zero in a later step,
+    /// which the event search sees); the sign of the fall from the guards' closed-form
+    /// rates ([`StickModel::contact_guard_rates`]).
+    fn pivot_leaves_at_once(&self, t: f64, y: &State) -> bool {
+        let mut g = Vec::with_capacity(4);
+        self.guards(Mode::Pivot, t, y, &mut g);
+        let e = self.pivot_eval(t, y);
+        let tol = 16.0 * f64::EPSILON * (e.fx.abs() + self.p.mu * e.fz.abs()); // formula: 16 eps (|F_x| + mu |F_z|)
+        let f = self.flow(Mode::Pivot, t, y);
+        let mut rates = Vec::with_capacity(4);
+        self.contact_guard_rates(Mode::Pivot, t, y, &f, &mut rates);
+        (0..3).any(|i| g[i] <= tol && rates[i] < 0.0)
     }
 
     /// The slide `mode` from rest at `(t, y)` if it is consistent (see
@@ -204,5 +231,55 @@ impl StickModel {
             )));
         }
         self.select_contact(t, &imp.after)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numerics::hybrid::Options;
+    use crate::physics::stick::run::{initial_state, simulate_stick, Recording};
+    use crate::physics::stick::StickParams;
+
+    /// The fuzz's scene (issue 29): a rod with neither spring nor damper carries its
+    /// force along its axis, so its pivot reaches the cone's edge at tan(theta) = mu,
+    /// where the slide jams at once. The pivot must not be handed back there.
+    fn strut() -> StickModel {
+        let p = StickParams::new(0.015, 1.0, 0.0, 0.0, 0.4, 0.3, 9.81, 3.0, 58.02453827466382);
+        StickModel::new(p.expect("in the domain"))
+    }
+
+    #[test]
+    fn a_pivot_about_to_leave_the_cone_is_not_chosen() {
+        let m = strut();
+        let t = 0.5 * m.period_s; // the plate accelerates upwards: a compressive reaction
+        let at_edge = |om: f64| {
+            let mut y = initial_state(&m, t, m.atan_mu);
+            y[OM] = om;
+            m.canonical(Mode::Pivot, t, &y)
+        };
+        let rising = at_edge(10.0); // past the edge: the reaction turns outside the cone
+        assert!(m.pivot_eval(t, &rising).fz > 0.0);
+        assert!(m.pivot_leaves_at_once(t, &rising));
+        assert!(!matches!(
+            m.select_contact(t, &rising),
+            Next::To(Mode::Pivot, _)
+        ));
+        // Falling back into the cone: the pivot holds.
+        assert!(!m.pivot_leaves_at_once(t, &at_edge(-10.0)));
+    }
+
+    #[test]
+    fn no_accepted_pivot_step_lies_outside_the_cone() {
+        let m = strut();
+        let y0 = initial_state(&m, 0.0, 0.3);
+        let rec = Recording {
+            check_invariants: true,
+            ..Recording::default()
+        };
+        let s = simulate_stick(&m, 0.0, y0, 0.2, &Options::default(), rec);
+        let mg = m.p.mass_kg * m.p.g_mps2;
+        // Before: 5.5e-2 m g outside the cone (a pivot run on past its edge unseen).
+        assert!(s.violations.cone_n <= 1e-9 * mg, "{:?}", s.violations);
     }
 }
