@@ -10,6 +10,7 @@
 //! `figures.rs`, `mutations.rs`; the limit-cycle section has its own `cycle_claims.rs`
 //! and `cycle_report.rs`. This file: the flags and the orchestration.
 
+mod at_states;
 mod claims;
 mod collision_claims;
 pub mod cycle_claims;
