@@ -206,6 +206,30 @@ fn alg2_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
     }
     let n = states.len();
     v.push(Claim::draft(Check::SecondMethod, "a2-tan-test", "Alg. 2", "As printed: a sticking impact if tan(θ) <= μ. Correct: |tan(θ)| <= μ: the Newton-Euler impulse lies along the rod, |J_x|/|J_z| = |tan(θ)|. Landings of both scenes and their mirror images (the scenes lean to +x only) at which the stated test disagrees with 'the Newton-Euler impulse lies inside the cone'.").values(json!(0), json!(dis), "exact").printed_or_corrected(n > 0 && dis == 0, n > 0 && dis_fix == 0));
+    v.extend(impulse_branch(d, c));
+    // after the map: "x_c' <- 0 ... if x_c' > 0 SLIDE RIGHT else SLIDE LEFT"
+    let sticking: Vec<_> = c
+        .runs()
+        .into_iter()
+        .flat_map(|(r, _)| r.landings.iter())
+        .filter(|l| l.sticking)
+        .collect();
+    let printed_left = sticking.iter().filter(|l| l.to != Mode::SlideLeft).count();
+    let agree = if d.a2_dead_branch {
+        printed_left == 0
+    } else {
+        true
+    };
+    v.push(Claim::draft(Check::LiteralExecution, "a2-dead-branch", "Alg. 2", "As printed: after the angular-momentum map x_c' <- 0, then if x_c' > 0 SLIDE RIGHT else SLIDE LEFT: a test of a value just set to zero, always SLIDE LEFT (and, read as assignments, it overrides the HINGE just chosen). Correct: HINGE, then Table 1's reaction test. Sticking landings of both scenes that the contact conditions send elsewhere than SLIDE LEFT (literal execution of the branch: all should be SLIDE LEFT).").values(json!(0), json!(printed_left), "exact").printed_or_corrected(!sticking.is_empty() && agree, !sticking.is_empty()));
+    v.extend(free_landing(d, c));
+    v
+}
+
+/// Alg. 2's branch between the angular-momentum map and the impulse-free slide, and its
+/// rate, at the sticking candidates among the landing states (|tan θ| <= μ).
+fn impulse_branch(d: &Statements, c: &Ctx) -> Vec<Claim> {
+    let states = &c.ev.at.impacts;
+    let mut v = Vec::new();
     // the impulse branch against the sign of the Newton-Euler impulse, at sticking candidates
     let (mut dis, mut dis_fix, mut dis_th, mut dis_th_fix, mut k) = (0, 0, 0, 0, 0usize);
     for at in states.iter().filter(|at| at.y[TH].tan().abs() <= at.mu) {
@@ -242,21 +266,6 @@ fn alg2_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
     };
     v.push(Claim::draft(Check::SecondMethod, "a2-shortening-branch", "Alg. 2", &format!("As printed: if (x_p' i + (z_p' - z_s') k) . r_CP < 0 compute the hinge forces without an impulse, else (\"rod not shortening\") apply the angular-momentum map. Reading: {reading}, the tie-breaker as for the other claims. Then a product < 0 is a shortening rod, and the branches are swapped: the Newton-Euler impulse is compressive (the map applies) only when the rod shortens; fsm.m applies the map in that branch (then the hinge-force test) and slides without an impulse in the other. Sticking candidates (|tan| <= μ, both scenes and mirrors) at which the printed branch disagrees with the sign of the Newton-Euler impulse.")).values(json!(0), json!(dis), "exact").printed_or_corrected(k > 0 && dis == 0, k > 0 && dis_fix == 0));
     v.push(Claim::draft(Check::SecondMethod, "a2-theta-dot-sign", "Alg. 2", &format!("As printed: θ' = (r_CP x (v_p - v_s))/L², without the minus sign of C.15. Reading: {reading}. Then the printed rate has the wrong sign: C.15, the Newton-Euler impulse and fsm.m (`cross(vec_rcp, vec_vs - vec_vp) / L^2`, i.e. -(r_CP x (v_p - v_s))/L²) agree on the minus. Sticking candidates at which the stated θ' differs from the Newton-Euler rate (1e-12 relative: the elimination and the cross product each round a few times, 1e3 ulps).")).values(json!(0), json!(dis_th), "exact").printed_or_corrected(k > 0 && dis_th == 0, k > 0 && dis_th_fix == 0));
-    // after the map: "x_c' <- 0 ... if x_c' > 0 SLIDE RIGHT else SLIDE LEFT"
-    let sticking: Vec<_> = c
-        .runs()
-        .into_iter()
-        .flat_map(|(r, _)| r.landings.iter())
-        .filter(|l| l.sticking)
-        .collect();
-    let printed_left = sticking.iter().filter(|l| l.to != Mode::SlideLeft).count();
-    let agree = if d.a2_dead_branch {
-        printed_left == 0
-    } else {
-        true
-    };
-    v.push(Claim::draft(Check::LiteralExecution, "a2-dead-branch", "Alg. 2", "As printed: after the angular-momentum map x_c' <- 0, then if x_c' > 0 SLIDE RIGHT else SLIDE LEFT: a test of a value just set to zero, always SLIDE LEFT (and, read as assignments, it overrides the HINGE just chosen). Correct: HINGE, then Table 1's reaction test. Sticking landings of both scenes that the contact conditions send elsewhere than SLIDE LEFT (literal execution of the branch: all should be SLIDE LEFT).").values(json!(0), json!(printed_left), "exact").printed_or_corrected(!sticking.is_empty() && agree, !sticking.is_empty()));
-    v.extend(free_landing(d, c));
     v
 }
 
