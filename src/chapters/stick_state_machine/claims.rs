@@ -6,11 +6,12 @@
 //! `confirmed` when the printed statement holds on the evidence, `erratum` when it fails
 //! and the stated correction holds, `failed` when neither does.
 
+use super::at_states::Lagrange;
 use super::evidence::{flight_error, pendulum_error, Ctx, Evidence, PENDULUM_EPS};
 use super::statements::{Statements, PRINTED};
-use super::{collision_claims, gap_claims, lagrange, rule_claims, table1_claims};
+use super::{collision_claims, gap_claims, rule_claims, table1_claims};
 use crate::physics::stick::run::{RunSummary, StickOutcome};
-use crate::physics::stick::{InvalidReason, Mode, StickModel, StickParams, OM, TH};
+use crate::physics::stick::{InvalidReason, Mode, StickParams, OM, TH};
 use crate::report::{ChapterReport, Check, Claim};
 use serde_json::json;
 
@@ -39,14 +40,14 @@ pub fn add_all(
 /// C.1 to C.15 and the sentences of section 4.
 fn equations(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let ev = c.ev;
-    let pa = &ev.params[0];
     let mut v = Vec::new();
     // C.3, C.5: the closed form against DP5 (rtol 1e-12) on the same equations: DP5's
     // error over 20 ms is ~1e-13 m (its tolerance times the ~40 compared steps'
-    // amplification), so 1e-9 m holds it 1e4 times over. Both sides are written from
-    // the same equations, so a wrong document would pass: a consistency check; the
-    // document's C.3 and C.5 are judged by `c3-c5-flight-lagrange`.
-    let fe = flight_error(pa, &ev.flight, d.flight_rate, d.flight_gravity);
+    // amplification), so 1e-9 m holds it 1e4 times over. Both sides are the workbook's
+    // equations (integrated once with the evidence), so a wrong document would pass: a
+    // consistency check of the closed form; the document's C.3 and C.5 are judged by
+    // `c3-c5-flight-lagrange`.
+    let fe = flight_error(&ev.flight);
     v.push(Claim::draft(Check::Consistency, "c3-c5-flight-closed-form", "C.3, C.5", "In flight P is ballistic (C.5) and θ relaxes as θ' = -(k/γ)(θ - θ₀) (C.3): the workbook's closed form equals a Dormand-Prince integration (rtol 1e-12) of the same equations, every 0.5 ms over 20 ms (m or rad). Consistency: both sides come from the same equations (the document's are judged against the Euler-Lagrange equations in c3-c5-flight-lagrange).").close(0.0, fe, 1e-9));
     v.push(flight_lagrange(d, c));
     // C.3's third row in contact: the spring-damper torque balances a contact moment
@@ -90,8 +91,7 @@ fn pivot_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let mut worst = 0.0f64;
     let mut scale = 0.0f64;
     let mut h_rate = 0.0f64;
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
+    for (x, q) in c.samples().filter(|(x, _)| x.mode == Mode::Pivot) {
         let (mass, l, g, k, gam) = (
             q.mass_kg,
             q.length_m,
@@ -99,20 +99,18 @@ fn pivot_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
             q.stiffness_nm_per_rad,
             q.damping_nms_per_rad,
         );
-        for x in run.trace.iter().filter(|x| x.mode == Mode::Pivot) {
-            let (th, w) = (x.y[TH], x.y[OM]);
-            let a_s = m.plate(x.t_s).2;
-            let (s, co) = th.sin_cos();
-            let q_t = d.c6_spring * k * (th - q.theta0_rad) + gam * w;
-            let thdd = ((g + d.c6_plate * a_s) * mass * l * s - q_t) / (mass * l * l); // C.6 as stated
-            let ax = l * (-w * w * s + thdd * co); // C.7
-            let az = a_s + l * (-w * w * co - thdd * s); // C.7
-            let (fx, fz) = (mass * ax, mass * (az + g));
-            let c8 = k * (th - q.theta0_rad) + gam * w + fx * l * co - fz * l * s; // C.8
-            worst = worst.max(c8.abs());
-            scale = scale.max(mass * g * l);
-            h_rate = h_rate.max((mass * l * l * thdd).abs() / (mass * g * l));
-        }
+        let (th, w) = (x.y[TH], x.y[OM]);
+        let a_s = x.plate.2;
+        let (s, co) = th.sin_cos();
+        let q_t = d.c6_spring * k * (th - q.theta0_rad) + gam * w;
+        let thdd = ((g + d.c6_plate * a_s) * mass * l * s - q_t) / (mass * l * l); // C.6 as stated
+        let ax = l * (-w * w * s + thdd * co); // C.7
+        let az = a_s + l * (-w * w * co - thdd * s); // C.7
+        let (fx, fz) = (mass * ax, mass * (az + g));
+        let c8 = k * (th - q.theta0_rad) + gam * w + fx * l * co - fz * l * s; // C.8
+        worst = worst.max(c8.abs());
+        scale = scale.max(mass * g * l);
+        h_rate = h_rate.max((mass * l * l * thdd).abs() / (mass * g * l));
     }
     // a few roundings of N m terms of size m g L: 1e-12 of the scale; 1e-9 leaves 1e3
     let tol = 1e-9 * scale;
@@ -157,8 +155,10 @@ fn slide_residuals(d: &Statements, c: &Ctx) -> SlideResiduals {
     // from Table 1), and C.14's x_c'' row against C.1 differentiated twice (x_c'' = x_p''
     // - L (theta'' cos - theta'^2 sin)), relative to mu F_z/m + L theta'^2 + L |theta''|
     let (mut rows_x, mut row_xc) = (0.0f64, 0.0f64);
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
+    let slides = c
+        .samples()
+        .filter(|(x, _)| matches!(x.mode, Mode::SlideLeft | Mode::SlideRight));
+    for (x, q) in slides {
         let (mass, l, g, k, gam, mu) = (
             q.mass_kg,
             q.length_m,
@@ -167,43 +167,37 @@ fn slide_residuals(d: &Statements, c: &Ctx) -> SlideResiduals {
             q.damping_nms_per_rad,
             q.mu,
         );
-        for x in run
-            .trace
-            .iter()
-            .filter(|x| matches!(x.mode, Mode::SlideLeft | Mode::SlideRight))
-        {
-            let sigma = x.mode.sigma();
-            let (th, w) = (x.y[TH], x.y[OM]);
-            let (s, co) = th.sin_cos();
-            let a_s = m.plate(x.t_s).2;
-            let coef = if sigma > 0.0 { d.c9_mu } else { d.c11_mu };
-            let q_t = k * (th - q.theta0_rad) + gam * w;
-            let fz = q_t / (l * (s + coef * mu * co)); // C.9 / C.11 as stated
-            let fx = sigma * mu * fz; // Table 1: mu F_z (left), -mu F_z (right)
-            let zpdd = fz / mass - g; // C.10 / C.13
-            let thdd = ((a_s - zpdd) / l + d.c14_w2 * w * w * co) / s; // C.14 as stated
-            let res8 = q_t + fx * l * co - fz * l * s; // C.8
-            let row = if sigma > 0.0 { d.c10_x } else { d.c13_x };
-            let xpdd = row * mu * fz / mass; // C.10 / C.13 first row as stated
-            let scale_x = mu * fz.abs() / mass + l * w * w + l * thdd.abs();
-            rows_x = rows_x.max((xpdd - fx / mass).abs() / scale_x); // formula: Newton, m x_p'' = F_x
-            if sigma < 0.0 {
-                let xcdd_doc = -mu * fz / mass - l * (d.c14_xc_w2 * w * w * s + thdd * co); // C.14 third row as stated
-                let xcdd_kin = fx / mass - l * (thdd * co - w * w * s); // formula: C.1 twice
-                row_xc = row_xc.max((xcdd_doc - xcdd_kin).abs() / scale_x);
-            }
-            let zcdd = zpdd - l * (-w * w * co - thdd * s); // C.4
-            c8 = c8.max(res8.abs());
-            c4 = c4.max((zcdd - a_s).abs() / (g + a_s.abs()));
-            scale = scale.max(mass * g * l);
-            n += 1;
-            if x.mode == Mode::SlideLeft {
-                c4_left = c4_left.max((zcdd - a_s).abs() / (g + a_s.abs()));
-                let [_, _, vxp, vzp] = m.tip(&x.y);
-                vx_rms += vxp * vxp;
-                vz_rms += vzp * vzp;
-                nl += 1;
-            }
+        let sigma = x.mode.sigma();
+        let (th, w) = (x.y[TH], x.y[OM]);
+        let (s, co) = th.sin_cos();
+        let a_s = x.plate.2;
+        let coef = if sigma > 0.0 { d.c9_mu } else { d.c11_mu };
+        let q_t = k * (th - q.theta0_rad) + gam * w;
+        let fz = q_t / (l * (s + coef * mu * co)); // C.9 / C.11 as stated
+        let fx = sigma * mu * fz; // Table 1: mu F_z (left), -mu F_z (right)
+        let zpdd = fz / mass - g; // C.10 / C.13
+        let thdd = ((a_s - zpdd) / l + d.c14_w2 * w * w * co) / s; // C.14 as stated
+        let res8 = q_t + fx * l * co - fz * l * s; // C.8
+        let row = if sigma > 0.0 { d.c10_x } else { d.c13_x };
+        let xpdd = row * mu * fz / mass; // C.10 / C.13 first row as stated
+        let scale_x = mu * fz.abs() / mass + l * w * w + l * thdd.abs();
+        rows_x = rows_x.max((xpdd - fx / mass).abs() / scale_x); // formula: Newton, m x_p'' = F_x
+        if sigma < 0.0 {
+            let xcdd_doc = -mu * fz / mass - l * (d.c14_xc_w2 * w * w * s + thdd * co); // C.14 third row as stated
+            let xcdd_kin = fx / mass - l * (thdd * co - w * w * s); // formula: C.1 twice
+            row_xc = row_xc.max((xcdd_doc - xcdd_kin).abs() / scale_x);
+        }
+        let zcdd = zpdd - l * (-w * w * co - thdd * s); // C.4
+        c8 = c8.max(res8.abs());
+        c4 = c4.max((zcdd - a_s).abs() / (g + a_s.abs()));
+        scale = scale.max(mass * g * l);
+        n += 1;
+        if x.mode == Mode::SlideLeft {
+            c4_left = c4_left.max((zcdd - a_s).abs() / (g + a_s.abs()));
+            let [_, _, vxp, vzp] = x.tip;
+            vx_rms += vxp * vxp;
+            vz_rms += vzp * vzp;
+            nl += 1;
         }
     }
     SlideResiduals {
@@ -288,20 +282,18 @@ fn collision_section(d: &Statements, c: &Ctx) -> Vec<Claim> {
     // of theta'+ stays below 1e-3, the relative accuracy at which the workbook quotes
     // speeds (three digits); the angle deviation itself is shown.
     let (mut dev, mut rate_err) = (0.0f64, 0.0f64);
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
-        for l in &run.landings {
-            let Some(y) = super::evidence::state_at(run, l.t_s, Mode::Flight) else {
-                continue;
-            };
-            let [_, _, vxp, vzp] = m.tip(&y);
-            let uz = vzp - m.plate(l.t_s).1;
-            let rate = |th: f64| -(th.sin() * uz - th.cos() * vxp) / q.length_m; // formula: -(r x u)/L^2
-            let th_doc = d.reset_factor * q.theta0_rad + d.reset_offset_rad; // formula: theta = theta_0 after the collision
-            let (w_act, w_doc) = (rate(l.theta_rad), rate(th_doc));
-            dev = dev.max((l.theta_rad - th_doc).abs());
-            rate_err = rate_err.max((w_doc - w_act).abs() / w_act.abs().max(1e-300));
-        }
+    for at in &ev.at.impacts {
+        let Some(rec) = at.recorded else {
+            continue; // a mirror image
+        };
+        let (q, l) = (&ev.params[at.scene], rec.landing);
+        let (vxp, vzp) = at.tip_v_mps;
+        let uz = vzp - at.plate_v_mps;
+        let rate = |th: f64| -(th.sin() * uz - th.cos() * vxp) / q.length_m; // formula: -(r x u)/L^2
+        let th_doc = d.reset_factor * q.theta0_rad + d.reset_offset_rad; // formula: theta = theta_0 after the collision
+        let (w_act, w_doc) = (rate(l.theta_rad), rate(th_doc));
+        dev = dev.max((l.theta_rad - th_doc).abs());
+        rate_err = rate_err.max((w_doc - w_act).abs() / w_act.abs().max(1e-300));
     }
     // The reset's effect on what the workbook reports: the mean speed of the authors'
     // scene with the reset against the actual angle (same rtol, same duration), within
@@ -335,21 +327,24 @@ fn collision_section(d: &Statements, c: &Ctx) -> Vec<Claim> {
 /// (`lagrange.rs`), at the flight samples of both evidence runs.
 fn flight_lagrange(d: &Statements, c: &Ctx) -> Claim {
     let (mut worst, mut est, mut n) = (0.0f64, 0.0f64, 0usize);
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
+    for (x, q) in c.samples() {
         let rate = q.stiffness_nm_per_rad / q.damping_nms_per_rad;
-        for x in run.trace.iter().filter(|x| x.mode == Mode::Flight) {
-            let (th, zp) = (x.y[TH], m.tip(&x.y)[1]);
-            let [(zdd, e_z), (w, e_w)] = lagrange::flight_rates(q, zp, th);
-            let w_doc = -d.flight_rate * rate * (th - q.theta0_rad); // C.3 as stated
-            let zdd_doc = -d.flight_gravity * q.g_mps2; // C.5 as stated
-            let w_scale = rate * ((th - q.theta0_rad).abs() + 1e-9); // rad/s
-            worst = worst
-                .max((zdd_doc - zdd).abs() / q.g_mps2)
-                .max((w_doc - w).abs() / w_scale);
-            est = est.max(e_z / q.g_mps2).max(e_w / w_scale);
-            n += 1;
-        }
+        let Lagrange::Flight {
+            z_p_dd: (zdd, e_z),
+            theta_d: (w, e_w),
+        } = x.lagrange
+        else {
+            continue; // not a flight sample
+        };
+        let th = x.y[TH];
+        let w_doc = -d.flight_rate * rate * (th - q.theta0_rad); // C.3 as stated
+        let zdd_doc = -d.flight_gravity * q.g_mps2; // C.5 as stated
+        let w_scale = rate * ((th - q.theta0_rad).abs() + 1e-9); // rad/s
+        worst = worst
+            .max((zdd_doc - zdd).abs() / q.g_mps2)
+            .max((w_doc - w).abs() / w_scale);
+        est = est.max(e_z / q.g_mps2).max(e_w / w_scale);
+        n += 1;
     }
     // Budget: the finite differences' own error (the change when every step is halved;
     // a quadratic Lagrangian leaves rounding only), times 10, plus 1e-9 for the rounding
@@ -364,7 +359,7 @@ fn flight_lagrange(d: &Statements, c: &Ctx) -> Claim {
 /// samples of both evidence runs on the vibrating plate.
 fn pivot_lagrange(d: &Statements, c: &Ctx) -> Claim {
     let (mut worst, mut est, mut n) = (0.0f64, 0.0f64, 0usize);
-    for (run, q) in c.runs() {
+    for (x, q) in c.samples() {
         let (mass, l, g, k, gam) = (
             q.mass_kg,
             q.length_m,
@@ -372,23 +367,22 @@ fn pivot_lagrange(d: &Statements, c: &Ctx) -> Claim {
             q.stiffness_nm_per_rad,
             q.damping_nms_per_rad,
         );
-        let pl = &q.plate;
-        for x in run.trace.iter().filter(|x| x.mode == Mode::Pivot) {
-            let (th, w, t) = (x.y[TH], x.y[OM], x.t_s);
-            let a_s = -pl.amplitude_m
-                * pl.omega_rad_s
-                * pl.omega_rad_s
-                * (pl.omega_rad_s * t + pl.phase_rad).sin();
-            let q_t = d.c6_spring * k * (th - q.theta0_rad) + gam * w;
-            let thdd_doc = ((g + d.c6_plate * a_s) * mass * l * th.sin() - q_t) / (mass * l * l); // C.6 as stated
-            let (thdd, e) = lagrange::pivot_theta_dd(q, th, w, t);
-            let scale =
-                ((g + a_s.abs()) * mass * l + k * (th - q.theta0_rad).abs() + gam * w.abs())
-                    / (mass * l * l);
-            worst = worst.max((thdd_doc - thdd).abs() / scale);
-            est = est.max(e / scale);
-            n += 1;
-        }
+        let Lagrange::Pivot {
+            theta_dd: (thdd, e),
+            plate_acc_mps2: a_s,
+        } = x.lagrange
+        else {
+            continue; // not a pivot sample
+        };
+        let (th, w) = (x.y[TH], x.y[OM]);
+        let q_t = d.c6_spring * k * (th - q.theta0_rad) + gam * w;
+        let thdd_doc = ((g + d.c6_plate * a_s) * mass * l * th.sin() - q_t) / (mass * l * l); // C.6 as stated
+        let scale =
+            ((g + a_s.abs()) * mass * l + k * (th - q.theta0_rad).abs() + gam * w.abs())
+                / (mass * l * l);
+        worst = worst.max((thdd_doc - thdd).abs() / scale);
+        est = est.max(e / scale);
+        n += 1;
     }
     // Budget: the finite differences' own error (halved steps: truncation of the time
     // and angle differences, rounding of the mixed ones), times 10, plus 1e-9 for the

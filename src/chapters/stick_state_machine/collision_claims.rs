@@ -1,82 +1,24 @@
 //! Claims on the collision: C.15 against the Newton-Euler impulse, its axis, and
-//! section 4.4's scope (C.15 at every collision); the landing states they and
-//! Algorithm 2's claims (`rule_claims.rs`) are judged on.
+//! section 4.4's scope (C.15 at every collision), judged on the landing states of the
+//! evidence ([`super::at_states::Impact`], which Algorithm 2's claims in
+//! `rule_claims.rs` read too).
 
-use super::evidence::{state_at, Ctx};
-use super::impulse::newton_euler;
+use super::at_states::Impact;
+use super::evidence::Ctx;
 use super::statements::Statements;
-use crate::physics::stick::{Mode, State, StickModel, StickParams, OM, TH, VXC, XC};
+use crate::physics::stick::TH;
 use crate::report::{Check, Claim};
 use serde_json::json;
-
-/// `(model, t, state)` of every landing of the evidence runs (the flight state at the
-/// located event), and their mirror images (theta, theta', x velocities negated), which
-/// the physics maps onto mirrored motions: the scenes lean one way only.
-pub fn landing_states(c: &Ctx) -> Vec<(StickModel, f64, State, Mode)> {
-    let mut v = Vec::new();
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
-        for l in &run.landings {
-            if let Some(y) = state_at(run, l.t_s, Mode::Flight) {
-                v.push((m, l.t_s, y, l.to));
-                let mut z = y;
-                for k in [TH, OM, VXC, XC] {
-                    z[k] = -z[k];
-                }
-                let to = match l.to {
-                    Mode::SlideLeft => Mode::SlideRight,
-                    Mode::SlideRight => Mode::SlideLeft,
-                    other => other,
-                };
-                v.push((m, l.t_s, z, to));
-            }
-        }
-    }
-    v
-}
-
-/// The first landing state of each scene turned to the angles `theta = +-atan(s mu)`,
-/// s = 0.5, 0.9, 0.95, 1.05, 1.1, 1.5: impacts just inside and outside the friction
-/// cone, where a sticking test whose coefficient of mu is off by 10 % misjudges.
-pub fn edge_states(
-    states: &[(StickModel, f64, State, Mode)],
-) -> Vec<(StickModel, f64, State, Mode)> {
-    let mut v = Vec::new();
-    let mut seen: Vec<StickParams> = Vec::new();
-    for (m, t, y, to) in states {
-        if seen.contains(&m.p) {
-            continue;
-        }
-        seen.push(m.p);
-        for s in [0.5, 0.9, 0.95, 1.05, 1.1, 1.5] {
-            for sign in [-1.0, 1.0] {
-                let mut z = *y;
-                z[TH] = sign * (s * m.p.mu).atan(); // formula: |tan(theta)| = s mu
-                v.push((*m, *t, z, *to));
-            }
-        }
-    }
-    v
-}
-
-/// Relative velocity `(xdot_p, zdot_p - zdot_s)` and `r_CP` under the reading.
-pub fn geometry(m: &StickModel, t: f64, y: &State, from_c: bool) -> ((f64, f64), (f64, f64)) {
-    let [_, _, vxp, vzp] = m.tip(y);
-    let l = m.p.length_m;
-    let (s, c) = y[TH].sin_cos();
-    let sign = if from_c { 1.0 } else { -1.0 };
-    ((vxp, vzp - m.plate(t).1), (sign * l * s, sign * l * c))
-}
 
 /// C.15 against the Newton-Euler impulse; the axis of `r x v`.
 pub fn c15_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let mut v = Vec::new();
-    let states = landing_states(c);
+    let states = &c.ev.at.impacts;
     let mut worst = 0.0f64;
-    for (m, t, y, _) in &states {
-        let ne = newton_euler(m, *t, y);
-        let ((ux, uz), (rx, rz)) = geometry(m, *t, y, true);
-        let l = m.p.length_m;
+    for at in states {
+        let ne = at.ne;
+        let ((ux, uz), (rx, rz)) = at.geometry(true);
+        let l = at.length_m;
         let om = d.c15_sign * (rx * uz - rz * ux) / (l * l); // C.15: theta'+ = -(r x (v_p - zdot_s k))/L^2
         worst = worst.max((om - ne.omega_after).abs() / (ne.omega_after.abs() + 1.0));
     }
@@ -84,8 +26,8 @@ pub fn c15_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
     v.push(Claim::draft(Check::SecondMethod, "c15-angular-momentum", "C.15", "The collision map θ'+ = -(r_P/C x (v_p - z_s' k))/L² (lever at the landing angle) equals the rate after the impact from the Newton-Euler impulse equations (impulse along the massless rod, C stuck on the plate), solved as a linear system at every landing of both evidence runs and their mirror images. Largest |difference| / (|θ'+| + 1 rad/s).").values(0.0, worst, 1e-12).confirmed_if(!states.is_empty() && worst <= 1e-12));
     // the axis: r = (L sin, 0, L cos), u = (u_x, 0, u_z): r x u = (0, r_z u_x - r_x u_z, 0)
     let (mut off, mut n) = (0.0f64, 0usize);
-    for (m, t, y, _) in &states {
-        let ((ux, uz), (rx, rz)) = geometry(m, *t, y, true);
+    for at in states {
+        let ((ux, uz), (rx, rz)) = at.geometry(true);
         let h = [0.0, rz * ux - rx * uz, 0.0];
         let a = d.c15_axis;
         let cross = [
@@ -97,33 +39,30 @@ pub fn c15_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
         off = off.max(cross.iter().map(|x| x.abs()).fold(0.0, f64::max) / norm);
         n += 1;
     }
-    v.push(c15_every_collision(d, &states));
+    v.push(c15_every_collision(d, states));
     v.push(Claim::draft(Check::ClosedForm, "c15-axis", "C.15", "As printed: H = ((x_p - x_c)(z_p' - z_c') - (z_p - z_c) x_p') m k, along k, the vertical. Correct: in the x-z plane r x v points along j (out of the plane): r x (v_p - z_s' k) = ((z_p - z_c) x_p' - (x_p - x_c)(z_p' - z_s')) j, so the printed bracket is the component along -j (the formula C.15 uses is right, its axis is not). |axis x (r x v)| / |r x v| at the landing states (0: parallel).").values(json!(0.0), json!(off), "1e-12").printed_or_corrected(n > 0 && off <= 1e-12, n > 0));
     v
 }
 
 /// Section 4.4 applies C.15 (C stuck, the impulse along the rod) at every collision.
-fn c15_every_collision(d: &Statements, states: &[(StickModel, f64, State, Mode)]) -> Claim {
+fn c15_every_collision(d: &Statements, states: &[Impact]) -> Claim {
     let (mut infeasible, mut routed, mut judged) = (0usize, 0usize, 0usize);
-    for (m, t, y, _) in states {
-        let ne = newton_euler(m, *t, y);
-        // C.15's premise: the plate supplies the impulse that stops C, inside the cone
-        // and compressive (formula: |J_x| <= mu J_z, J along the rod towards P)
-        let supplied = ne.jx.abs() <= m.p.mu * ne.jz && ne.along_rod(y[TH]) > 0.0;
-        let sticking = y[TH].tan().abs() <= m.p.mu && ne.along_rod(y[TH]) > 0.0;
+    // C.15's premise: the plate supplies the impulse that stops C, inside the cone and
+    // compressive (formula: |J_x| <= mu J_z, J along the rod towards P)
+    let supplied = |at: &Impact| {
+        at.ne.jx.abs() <= at.mu * at.ne.jz && at.ne.along_rod(at.y[TH]) > 0.0
+    };
+    for at in states {
+        let (ne, y) = (at.ne, at.y);
+        let supplied = supplied(at);
+        let sticking = y[TH].tan().abs() <= at.mu && ne.along_rod(y[TH]) > 0.0;
         if d.s44_every_collision || sticking {
             judged += 1;
             infeasible += usize::from(!supplied);
         }
         routed += usize::from(!supplied && !sticking);
     }
-    let all_infeasible = states
-        .iter()
-        .filter(|(m, t, y, _)| {
-            let ne = newton_euler(m, *t, y);
-            !(ne.jx.abs() <= m.p.mu * ne.jz && ne.along_rod(y[TH]) > 0.0)
-        })
-        .count();
+    let all_infeasible = states.iter().filter(|at| !supplied(at)).count();
     let printed = judged > 0 && infeasible == 0;
     // corrected: C.15 at the sticking collisions only; every other one is a collision
     // Algorithm 2 sends to its impulse-free branch (|tan θ| > μ or the rod lengthening)

@@ -1,12 +1,13 @@
 //! The runs and side computations the claims are judged on.
 
+use super::at_states::{self, AtSample, AtStates};
 use super::{run_scene, Scene};
 use crate::chapters::Context;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Integrator, Method, StepControl};
 use crate::physics::stick::run::{Recording, RunSummary};
 use crate::physics::stick::{
-    CollisionAngle, Mode, State, StickModel, StickParams, NSTATE, OM, TH, VXC, VZC, XC, ZC,
+    CollisionAngle, StickModel, StickParams, NSTATE, OM, TH, VXC, VZC, XC, ZC,
 };
 
 /// Everything the claims look at.
@@ -23,8 +24,8 @@ pub struct Evidence {
     /// ends (not located), at each rtol of [`SEQUENCE_RTOLS`] (for the mutation of
     /// `phase-sequence-tolerance`).
     pub unlocated_sequences: [[String; 2]; 2],
-    /// The model's closed-form flight of the authors' stick from a state in the air,
-    /// which `c3-c5-flight-closed-form` integrates the document's C.3 and C.5 against.
+    /// The model's closed-form flight of the authors' stick from a state in the air and
+    /// a Dormand-Prince integration of the same equations (`c3-c5-flight-closed-form`).
     pub flight: FlightReference,
     /// Pivot on a still plate from `theta_f + eps` and `theta_f + 2 eps` (eps = 1e-4 rad):
     /// samples `(t s, theta - theta_f rad)` every millisecond for 1 s.
@@ -45,6 +46,12 @@ pub struct Evidence {
     /// The slides' normal force near the self-locking edge: |F_z| at tan = mu (1 +
     /// 1e-6) over |F_z| at mu (1 + 1e-3).
     pub edge_growth: f64,
+    /// The model at the recorded states of the authors' and the jamming run (trace
+    /// samples, landings, pivot and slide exits), evaluated once.
+    pub at: AtStates,
+    /// A vertical stick at rest on the authors' plate at Γ = 0.5: per phase `(F_x N,
+    /// F_z N)` from the pivot equations and the closed form `m (g + z_s'')` (N).
+    pub vertical_pivot: Vec<(f64, f64, f64)>,
 }
 
 /// Relative (= absolute) tolerance of the traced evidence runs.
@@ -132,6 +139,7 @@ pub fn collect(ctx: &Context, opts: &Options) -> Evidence {
         vzp + pa.length_m * w * th.sin() - model.plate(0.0).1
     };
     let liftoffs = super::rest_scan::liftoff_heights(&[(&authors, &pa), (&jamming, &pj)]);
+    let at = at_states::gather(&[(&authors, &pa), (&jamming, &pj)]);
     Evidence {
         authors,
         jamming,
@@ -147,6 +155,8 @@ pub fn collect(ctx: &Context, opts: &Options) -> Evidence {
         rest: super::rest_scan::rest_states(&[pa, pj]),
         liftoffs,
         edge_growth: super::rest_scan::edge_growth(&[pa, pj]),
+        at,
+        vertical_pivot: at_states::vertical_pivot(&pa),
     }
 }
 
@@ -208,16 +218,15 @@ pub fn pendulum_error(base: &StickParams, trace: &[(f64, f64)], eps: f64, spring
         .fold(0.0, f64::max)
 }
 
-/// A flight by the model's closed form: its start `(x_p, z_p, x_p', z_p', θ)` from a
-/// state in the air, the model's rate k/γ (1/s), and every 0.5 ms over 20 ms C's
-/// position and the angle `(t s, [x_c m, z_c m, θ rad])`.
+/// A flight by the model's closed form from a state in the air: every 0.5 ms over
+/// 20 ms C's position and the angle `(t s, [x_c m, z_c m, θ rad])`; beside it the same
+/// samples from a Dormand-Prince integration of the same equations.
 pub struct FlightReference {
-    /// `(x_p, z_p, x_p', z_p', θ)` at t = 0 (m, m/s, rad).
-    pub start: [f64; 5],
-    /// k/γ (1/s).
-    pub rate_per_s: f64,
     /// The closed form's samples.
     pub at: Vec<(f64, [f64; 3])>,
+    /// `[x_c m, z_c m, θ rad]` at the times of `at` from [`flight_integrated`]; `None` if
+    /// the integration failed.
+    pub integrated: Option<Vec<[f64; 3]>>,
 }
 
 /// The model's closed-form flight of `p` from a state in the air (θ₀ + 0.05 rad, C 2 cm
@@ -231,57 +240,59 @@ pub fn flight_reference(p: &StickParams) -> FlightReference {
     y0[VZC] = 0.8;
     y0[OM] = -model.rate * 0.05;
     let [xp, zp, vxp, vzp] = model.tip(&y0);
-    let at = (1..=40)
+    let at: Vec<(f64, [f64; 3])> = (1..=40)
         .map(|k| {
             let t1 = 0.0005 * k as f64;
             let yc = model.flight_state(0.0, &y0, t1);
             (t1, [yc[XC], yc[ZC], yc[TH]])
         })
         .collect();
+    let start = [xp, zp, vxp, vzp, y0[TH]];
+    let times: Vec<f64> = at.iter().map(|s| s.0).collect();
     FlightReference {
-        start: [xp, zp, vxp, vzp, y0[TH]],
-        rate_per_s: model.rate,
+        integrated: flight_integrated(p, start, model.rate, &times),
         at,
     }
 }
 
-/// The closed-form flight `f` against Dormand-Prince at rtol 1e-12 on `(x_p, z_p,
-/// xdot_p, zdot_p, theta)` with the document's C.3 and C.5, `theta' = -rate (k/gamma)
-/// (theta - theta_0)`, `zddot_p = -gravity g` (1 and 1 as printed): largest difference in
-/// C's position (m) or angle (rad) at the samples of `f`.
-pub fn flight_error(p: &StickParams, f: &FlightReference, rate_factor: f64, gravity: f64) -> f64 {
-    let (g, rate, th0, l) = (
-        gravity * p.g_mps2,
-        rate_factor * f.rate_per_s,
-        p.theta0_rad,
-        p.length_m,
-    );
+/// Dormand-Prince at rtol 1e-12 on `(x_p, z_p, xdot_p, zdot_p, theta)` from `start` with
+/// C.3 and C.5, `theta' = -rate (theta - theta_0)`, `zddot_p = -g`: C's position and the
+/// angle `[x_c m, z_c m, θ rad]` at `times` (s); `None` if a step fails.
+fn flight_integrated(
+    p: &StickParams,
+    start: [f64; 5],
+    rate: f64,
+    times: &[f64],
+) -> Option<Vec<[f64; 3]>> {
+    let (g, th0, l) = (p.g_mps2, p.theta0_rad, p.length_m);
     let sys = move |_t: f64, u: &[f64; 5]| [u[2], u[3], 0.0, -g, -rate * (u[4] - th0)];
     let mut integ = Integrator::<5>::new(Method::Dopri5, StepControl::tol(1e-12, 1e-12));
-    let (mut t, mut u, mut worst) = (0.0, f.start, 0.0f64);
-    for &(t1, [xc_ref, zc_ref, th_ref]) in &f.at {
-        u = match integ.integrate(&sys, t, u, t1, |_| {}) {
-            Ok(u) => u,
-            Err(_) => return f64::INFINITY,
-        };
+    let (mut t, mut u) = (0.0, start);
+    let mut out = Vec::with_capacity(times.len());
+    for &t1 in times {
+        u = integ.integrate(&sys, t, u, t1, |_| {}).ok()?;
         t = t1;
-        let xc = u[0] - l * u[4].sin();
-        let zc = u[1] - l * u[4].cos();
-        worst = worst
-            .max((xc - xc_ref).abs())
-            .max((zc - zc_ref).abs())
-            .max((u[4] - th_ref).abs());
+        out.push([u[0] - l * u[4].sin(), u[1] - l * u[4].cos(), u[4]]); // formula: C.1
     }
-    worst
+    Some(out)
 }
 
-/// The state of `run` at an event at time `t` (s) in `mode` (the end of the segment
-/// before the event, kept in the trace), if traced.
-pub fn state_at(run: &RunSummary, t: f64, mode: Mode) -> Option<State> {
-    run.trace
-        .iter()
-        .find(|x| x.t_s == t && x.mode == mode)
-        .map(|x| x.y)
+/// The largest difference between the closed-form flight and its Dormand-Prince
+/// integration, in C's position (m) or the angle (rad); infinite if the integration
+/// failed.
+pub fn flight_error(f: &FlightReference) -> f64 {
+    let Some(dp) = &f.integrated else {
+        return f64::INFINITY;
+    };
+    f.at.iter()
+        .zip(dp)
+        .map(|(&(_, r), u)| {
+            (u[0] - r[0])
+                .abs()
+                .max((u[1] - r[1]).abs())
+                .max((u[2] - r[2]).abs())
+        })
+        .fold(0.0, f64::max)
 }
 
 /// Markdown table of the evidence scenes.
@@ -335,6 +346,15 @@ impl Ctx<'_> {
             (&self.ev.authors, &self.ev.params[0]),
             (&self.ev.jamming, &self.ev.params[1]),
         ]
+    }
+
+    /// The model at every trace sample of the evidence runs, with its scene's parameters.
+    pub fn samples(&self) -> impl Iterator<Item = (&AtSample, &StickParams)> {
+        self.ev
+            .at
+            .samples
+            .iter()
+            .map(|x| (x, &self.ev.params[x.scene]))
     }
 }
 

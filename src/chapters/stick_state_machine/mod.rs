@@ -12,6 +12,7 @@
 //! is a scene-level tool the exercises use too). Unit tests of the chapter's internals:
 //! `tests.rs`. This file: the flags and the orchestration.
 
+mod at_states;
 mod claims;
 mod collision_claims;
 mod cycle_claims;

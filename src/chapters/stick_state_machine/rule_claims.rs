@@ -3,12 +3,10 @@
 //! violated, `OnViolation`) and, for Algorithms 3 and 4, the reading in which the rules
 //! run at every instant (`Continuous`); each reading gets its own claim.
 
-use super::collision_claims::{edge_states, geometry, landing_states};
 use super::evidence::Ctx;
-use super::evidence::{cone_exterior, cone_interior, keeps_cone, state_at};
-use super::impulse::newton_euler;
+use super::evidence::{cone_exterior, cone_interior, keeps_cone};
 use super::statements::{Statements, Test};
-use crate::physics::stick::{Mode, StickModel, NSTATE, TH, VXC, ZC};
+use crate::physics::stick::{Mode, TH, VXC, ZC};
 use crate::report::{Check, Claim};
 use serde_json::json;
 
@@ -109,35 +107,24 @@ fn alg1(d: &Statements, c: &Ctx) -> Vec<Claim> {
     v.push(Claim::draft(Check::ClosedForm, "a1-flight-test", "Alg. 1", &format!("As printed: if F_z > 0 -> FLIGHT. Correct: lift off when F_z < 0 (a tensile reaction), and only if the flight moves C away from the plate. {reading} Fraction of the cone's interior (F_z > 0) at which the stated test fires.")).values(json!(0.0), json!(frac(fires, n)), "0").printed_or_corrected(n > 0 && fires == 0, n > 0));
     v.push(alg1_on_violation(d, c));
     // a vertical stick at rest on a plate with Gamma = 0.5: F_z = m (g + z_s''), F_x = 0
-    let mut q = c.ev.params[0];
-    q.theta0_rad = 0.0;
-    q.plate.amplitude_m = 0.5 * q.g_mps2 / (q.plate.omega_rad_s * q.plate.omega_rad_s);
-    let m = StickModel::new(q);
     let (mut dev, mut fz_min) = (0.0f64, f64::INFINITY);
-    for k in 0..64 {
-        let t = m.period_s * k as f64 / 64.0;
-        let f = m.pivot_eval(t, &[0.0; NSTATE]);
-        let closed = q.mass_kg * (q.g_mps2 + m.plate(t).2); // formula: F_z = m (g + z_s'')
-        dev = dev.max((f.fz - closed).abs() + f.fx.abs());
-        fz_min = fz_min.min(f.fz);
+    for &(fx, fz, closed) in &c.ev.vertical_pivot {
+        dev = dev.max((fz - closed).abs() + fx.abs());
+        fz_min = fz_min.min(fz);
     }
     // closed form and pivot_eval agree to rounding of m g ~ 10 N: 1e-12 N
     let pivot_ok = dev <= 1e-12 && fz_min > 0.0;
     v.push(Claim::draft(Check::ClosedForm, "a1-vertical-flight", "Alg. 1", "As printed: with |θ| = 0 (and μ F_z + F_x > 0) the HINGE goes to FLIGHT. What the line is for (the authors' code, fsm.m, HINGE, case SLIP_POS: 'if abs(th) < 1e-9 nextPhase = FLIGHT', commented 'to take care of the 1/sin(th) singularity'): a numerical escape taken at a slip exit near the vertical, where the slide's C.14 divides by sin(θ). As a rule of the dynamics, which is how the document prints it, it is wrong: a vertical stick on a plate is an ordinary pivot, F_z = m (g + z_s'') > 0 and F_x = 0 while the plate's acceleration stays below g, and a compressive contact cannot start a flight; only the slides are singular there (the workbook stops such a run as invalid, C.14). Smallest pivot normal force (N) over a cycle of a vertical stick on a plate at Γ = 0.5 (closed form and pivot equations agree to 1e-12 N).").values(json!("F_z > 0: pivot"), json!(fz_min), "sign").printed_or_corrected(!d.a1_vertical_flight && pivot_ok, pivot_ok));
     let (mut fires, mut fires_fix, mut total) = (0usize, 0usize, 0usize);
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
-        for x in run.trace.iter().filter(|x| x.mode != Mode::Flight) {
-            let [_, zp, _, _] = m.tip(&x.y);
-            let zs = m.plate(x.t_s).0;
-            total += 1;
-            fires += usize::from(if d.abort_absolute {
-                x.y[ZC] < 0.0 || zp < 0.0
-            } else {
-                zp - zs < 0.0
-            });
-            fires_fix += usize::from(zp - zs < 0.0);
-        }
+    for (x, _) in c.samples().filter(|(x, _)| x.mode != Mode::Flight) {
+        let (zp, zs) = (x.tip[1], x.plate.0);
+        total += 1;
+        fires += usize::from(if d.abort_absolute {
+            x.y[ZC] < 0.0 || zp < 0.0
+        } else {
+            zp - zs < 0.0
+        });
+        fires_fix += usize::from(zp - zs < 0.0);
     }
     v.push(Claim::draft(Check::Simulation, "a1-abort-heights", "Alg. 1-4", "As printed: ABORT if z_c < 0 or z_p < 0. Correct: heights count from the plate, and z_s = δ cos(ω t) is negative half the time: the stick has fallen when z_p - z_s <= 0 (|θ| >= 90 deg). Fraction of contact samples of the (completed) evidence runs at which the stated test fires.").values(json!(0.0), json!(frac(fires, total)), "0").printed_or_corrected(total > 0 && fires == 0, total > 0 && fires_fix == 0));
     v
@@ -146,100 +133,109 @@ fn alg1(d: &Statements, c: &Ctx) -> Vec<Claim> {
 /// Algorithm 1 as a whole under Table 1's reading: executed at every pivot exit.
 fn alg1_on_violation(d: &Statements, c: &Ctx) -> Claim {
     let (mut agree, mut agree_fix, mut n) = (0usize, 0usize, 0usize);
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
+    for e in &c.ev.at.pivot_exits {
+        let q = &c.ev.params[e.scene];
         let tol = 1e-9 * q.mass_kg * q.g_mps2; // the edge to the event accuracy
-        for &(t, from, to) in &run.events {
-            let (true, Some(to)) = (from == Mode::Pivot, to) else {
-                continue;
-            };
-            let Some(y) = state_at(run, t, Mode::Pivot) else {
-                continue;
-            };
-            let f = m.pivot_eval(t, &y);
-            let mu = q.mu;
-            // the printed lines in order, each assignment overriding the last
-            let mut next = None;
-            if fires(&d.a1_right, mu, f.fx, f.fz, tol) {
-                next = Some(Mode::SlideRight);
-            }
-            if fires(&d.a1_left, mu, f.fx, f.fz, tol) {
-                next = Some(Mode::SlideLeft);
-            }
-            if if d.a1_flight_positive {
-                f.fz > tol
-            } else {
-                f.fz < tol
-            } {
-                next = Some(Mode::Flight);
-            }
-            // corrected: slide right / left beyond the cone's edges, flight if tensile
-            // and the flight lifts C
-            let mut fixed = None;
-            if fires(&reversed(&d.a1_right), mu, f.fx, f.fz, tol) {
-                fixed = Some(Mode::SlideRight);
-            }
-            if fires(&reversed(&d.a1_left), mu, f.fx, f.fz, tol) {
-                fixed = Some(Mode::SlideLeft);
-            }
-            if f.fz < tol && matches!(m.takeoff(t, &y), crate::physics::stick::rules::Next::To(..))
-            {
-                fixed = Some(Mode::Flight);
-            }
-            agree += usize::from(next == Some(to));
-            agree_fix += usize::from(fixed == Some(to));
-            n += 1;
+        let (to, f) = (e.to, e.pivot);
+        let mu = q.mu;
+        // the printed lines in order, each assignment overriding the last
+        let mut next = None;
+        if fires(&d.a1_right, mu, f.fx, f.fz, tol) {
+            next = Some(Mode::SlideRight);
         }
+        if fires(&d.a1_left, mu, f.fx, f.fz, tol) {
+            next = Some(Mode::SlideLeft);
+        }
+        if if d.a1_flight_positive {
+            f.fz > tol
+        } else {
+            f.fz < tol
+        } {
+            next = Some(Mode::Flight);
+        }
+        // corrected: slide right / left beyond the cone's edges, flight if tensile
+        // and the flight lifts C
+        let mut fixed = None;
+        if fires(&reversed(&d.a1_right), mu, f.fx, f.fz, tol) {
+            fixed = Some(Mode::SlideRight);
+        }
+        if fires(&reversed(&d.a1_left), mu, f.fx, f.fz, tol) {
+            fixed = Some(Mode::SlideLeft);
+        }
+        if f.fz < tol && e.lifts {
+            fixed = Some(Mode::Flight);
+        }
+        agree += usize::from(next == Some(to));
+        agree_fix += usize::from(fixed == Some(to));
+        n += 1;
     }
     Claim::draft(Check::LiteralExecution, "a1-exits", "Alg. 1, Table 1", "Reading: Table 1's caption (HINGE runs when the reaction leaves the cone or turns tensile). Algorithm 1 executed as printed, in order, the last assignment winning, at every pivot exit of both scenes: it must choose the mode the contact conditions chose. The tests are read at the switch state to the event accuracy tol = 1e-9 m g (that state lies past the edge by at most tol): v < tol counts as < 0, v > tol as > 0. As printed, at an exit through the cone's edge F_x = μ F_z the reversed slide-right test and 'F_z > 0 -> FLIGHT' both fire, and FLIGHT wins. The correction reverses the two slide tests (their coefficients kept) and lifts off only when F_z < 0 and the flight lifts C. Exits at which the printed algorithm agrees (of all exits).").values(json!(n), json!(agree), "exact").printed_or_corrected(n > 0 && agree == n, n > 0 && agree_fix == n)
 }
 
 fn alg2_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
-    let states = landing_states(c);
+    let states = &c.ev.at.impacts;
     let mut v = Vec::new();
     // Each located landing against its rounding budget (StickModel::penetration_budget_m:
     // the event tolerance times |h_c'|, twice the rounding of h_c), not a fixed 1e-12 m.
     let (mut hmax, mut ratio) = (0.0f64, 0.0f64);
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
-        for l in &run.landings {
-            let Some(y) = state_at(run, l.t_s, Mode::Flight) else {
-                continue;
-            };
-            hmax = hmax.max(l.h_c_m.abs());
-            ratio = ratio.max(l.h_c_m.abs() / m.penetration_budget_m(l.t_s, &y));
-        }
+    for r in states.iter().filter_map(|at| at.recorded) {
+        hmax = hmax.max(r.landing.h_c_m.abs());
+        ratio = ratio.max(r.landing.h_c_m.abs() / r.penetration_budget_m);
     }
     v.push(Claim::draft(Check::Consistency, "a2-landing", "Alg. 2", &format!("Landing when z_c - z_s = 0: located on the closed-form flight to rounding level. Largest |h_c| at located landings ({hmax:.1e} m) over its rounding budget (the event tolerance 4 ε max(t, 1) times |h_c'| plus twice the rounding of h_c).")).values(0.0, ratio, 1.0).confirmed_if(ratio <= 1.0 && c.ev.authors.hops > 0));
     let (mut dis, mut dis_fix) = (0usize, 0usize);
-    for (m, t, y, _) in &states {
-        let ne = newton_euler(m, *t, y);
-        let in_cone = ne.jx.abs() <= m.p.mu * ne.jz.abs();
-        let th = y[TH];
+    for at in states {
+        let ne = at.ne;
+        let in_cone = ne.jx.abs() <= at.mu * ne.jz.abs();
+        let th = at.y[TH];
         dis += usize::from(
             (if d.a2_tan_abs {
                 th.tan().abs()
             } else {
                 th.tan()
-            } <= d.a2_tan_mu * m.p.mu)
+            } <= d.a2_tan_mu * at.mu)
                 != in_cone,
         );
     }
     // the correction |tan(theta)| <= mu (its coefficient kept) at the landings and at
     // landing states turned to angles just inside and outside the cone's edge
-    for (m, t, y, _) in states.iter().chain(&edge_states(&states)) {
-        let ne = newton_euler(m, *t, y);
-        let in_cone = ne.jx.abs() <= m.p.mu * ne.jz.abs();
-        dis_fix += usize::from((y[TH].tan().abs() <= d.a2_tan_mu * m.p.mu) != in_cone);
+    for at in states.iter().chain(&c.ev.at.edge_impacts) {
+        let ne = at.ne;
+        let in_cone = ne.jx.abs() <= at.mu * ne.jz.abs();
+        dis_fix += usize::from((at.y[TH].tan().abs() <= d.a2_tan_mu * at.mu) != in_cone);
     }
     let n = states.len();
     v.push(Claim::draft(Check::SecondMethod, "a2-tan-test", "Alg. 2", "As printed: a sticking impact if tan(θ) <= μ. Correct: |tan(θ)| <= μ: the Newton-Euler impulse lies along the rod, |J_x|/|J_z| = |tan(θ)|. Landings of both scenes and their mirror images (the scenes lean to +x only) at which the stated test disagrees with 'the Newton-Euler impulse lies inside the cone'.").values(json!(0), json!(dis), "exact").printed_or_corrected(n > 0 && dis == 0, n > 0 && dis_fix == 0));
+    v.extend(impulse_branch(d, c));
+    // after the map: "x_c' <- 0 ... if x_c' > 0 SLIDE RIGHT else SLIDE LEFT"
+    let sticking: Vec<_> = c
+        .runs()
+        .into_iter()
+        .flat_map(|(r, _)| r.landings.iter())
+        .filter(|l| l.sticking)
+        .collect();
+    let printed_left = sticking.iter().filter(|l| l.to != Mode::SlideLeft).count();
+    let agree = if d.a2_dead_branch {
+        printed_left == 0
+    } else {
+        true
+    };
+    v.push(Claim::draft(Check::LiteralExecution, "a2-dead-branch", "Alg. 2", "As printed: after the angular-momentum map x_c' <- 0, then if x_c' > 0 SLIDE RIGHT else SLIDE LEFT: a test of a value just set to zero, always SLIDE LEFT (and, read as assignments, it overrides the HINGE just chosen). Correct: HINGE, then Table 1's reaction test. Sticking landings of both scenes that the contact conditions send elsewhere than SLIDE LEFT (literal execution of the branch: all should be SLIDE LEFT).").values(json!(0), json!(printed_left), "exact").printed_or_corrected(!sticking.is_empty() && agree, !sticking.is_empty()));
+    v.extend(free_landing(d, c));
+    v
+}
+
+/// Alg. 2's branch between the angular-momentum map and the impulse-free slide, and its
+/// rate, at the sticking candidates among the landing states (|tan θ| <= μ).
+fn impulse_branch(d: &Statements, c: &Ctx) -> Vec<Claim> {
+    let states = &c.ev.at.impacts;
+    let mut v = Vec::new();
     // the impulse branch against the sign of the Newton-Euler impulse, at sticking candidates
     let (mut dis, mut dis_fix, mut dis_th, mut dis_th_fix, mut k) = (0, 0, 0, 0, 0usize);
-    for (m, t, y, _) in states.iter().filter(|s| s.2[TH].tan().abs() <= s.0.p.mu) {
-        let ne = newton_euler(m, *t, y);
-        let compressive = ne.along_rod(y[TH]) > 0.0;
-        let ((ux, uz), (rx, rz)) = geometry(m, *t, y, d.rcp_from_c);
+    for at in states.iter().filter(|at| at.y[TH].tan().abs() <= at.mu) {
+        let ne = at.ne;
+        let compressive = ne.along_rod(at.y[TH]) > 0.0;
+        let ((ux, uz), (rx, rz)) = at.geometry(d.rcp_from_c);
         let dot = ux * rx + uz * rz;
         let impulse = if d.a2_impulse_if_nonnegative {
             dot >= 0.0
@@ -247,9 +243,9 @@ fn alg2_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
             dot < 0.0
         };
         dis += usize::from(impulse != compressive);
-        let ((_, _), (fx, fz)) = geometry(m, *t, y, true);
+        let ((_, _), (fx, fz)) = at.geometry(true);
         dis_fix += usize::from((ux * fx + uz * fz < 0.0) != compressive);
-        let l = m.p.length_m;
+        let l = at.length_m;
         let om = d.a2_theta_sign * (rx * uz - rz * ux) / (l * l);
         let om_fix = -d.a2_theta_sign * (fx * uz - fz * ux) / (l * l); // the sign of C.15 added
         let scale = ne.omega_after.abs() + 1.0;
@@ -270,21 +266,6 @@ fn alg2_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
     };
     v.push(Claim::draft(Check::SecondMethod, "a2-shortening-branch", "Alg. 2", &format!("As printed: if (x_p' i + (z_p' - z_s') k) . r_CP < 0 compute the hinge forces without an impulse, else (\"rod not shortening\") apply the angular-momentum map. Reading: {reading}, the tie-breaker as for the other claims. Then a product < 0 is a shortening rod, and the branches are swapped: the Newton-Euler impulse is compressive (the map applies) only when the rod shortens; fsm.m applies the map in that branch (then the hinge-force test) and slides without an impulse in the other. Sticking candidates (|tan| <= μ, both scenes and mirrors) at which the printed branch disagrees with the sign of the Newton-Euler impulse.")).values(json!(0), json!(dis), "exact").printed_or_corrected(k > 0 && dis == 0, k > 0 && dis_fix == 0));
     v.push(Claim::draft(Check::SecondMethod, "a2-theta-dot-sign", "Alg. 2", &format!("As printed: θ' = (r_CP x (v_p - v_s))/L², without the minus sign of C.15. Reading: {reading}. Then the printed rate has the wrong sign: C.15, the Newton-Euler impulse and fsm.m (`cross(vec_rcp, vec_vs - vec_vp) / L^2`, i.e. -(r_CP x (v_p - v_s))/L²) agree on the minus. Sticking candidates at which the stated θ' differs from the Newton-Euler rate (1e-12 relative: the elimination and the cross product each round a few times, 1e3 ulps).")).values(json!(0), json!(dis_th), "exact").printed_or_corrected(k > 0 && dis_th == 0, k > 0 && dis_th_fix == 0));
-    // after the map: "x_c' <- 0 ... if x_c' > 0 SLIDE RIGHT else SLIDE LEFT"
-    let sticking: Vec<_> = c
-        .runs()
-        .into_iter()
-        .flat_map(|(r, _)| r.landings.iter())
-        .filter(|l| l.sticking)
-        .collect();
-    let printed_left = sticking.iter().filter(|l| l.to != Mode::SlideLeft).count();
-    let agree = if d.a2_dead_branch {
-        printed_left == 0
-    } else {
-        true
-    };
-    v.push(Claim::draft(Check::LiteralExecution, "a2-dead-branch", "Alg. 2", "As printed: after the angular-momentum map x_c' <- 0, then if x_c' > 0 SLIDE RIGHT else SLIDE LEFT: a test of a value just set to zero, always SLIDE LEFT (and, read as assignments, it overrides the HINGE just chosen). Correct: HINGE, then Table 1's reaction test. Sticking landings of both scenes that the contact conditions send elsewhere than SLIDE LEFT (literal execution of the branch: all should be SLIDE LEFT).").values(json!(0), json!(printed_left), "exact").printed_or_corrected(!sticking.is_empty() && agree, !sticking.is_empty()));
-    v.extend(free_landing(d, c));
     v
 }
 
@@ -292,34 +273,32 @@ fn alg2_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
 fn free_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let mut v = Vec::new();
     let (mut res, mut res_fix, mut order_dis, mut n) = (0.0f64, 0.0f64, 0usize, 0usize);
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
-        for l in run
-            .landings
-            .iter()
-            .filter(|l| !l.sticking && l.to != Mode::Flight)
-        {
-            let Some(y) = state_at(run, l.t_s, Mode::Flight) else {
-                continue;
-            };
-            let [_, _, vxp, vzp] = m.tip(&y);
-            let vs = m.plate(l.t_s).1;
-            let (s, co) = y[TH].sin_cos();
-            let len = q.length_m;
-            let om = d.a2_free_sign * (vzp - vs) / (len * s); // theta' <- -(z_p' - z_s')/(L sin)
-            let om_fix = -(vzp - vs) / (len * s);
-            let xc_new = vxp + (vzp - vs) * co / s; // x_c' <- x_p' + (z_p' - z_s') cot
-                                                    // C.3: z_c' = z_p' + L theta' sin must equal z_s' (C on the plate)
-            res = res.max((vzp + len * om * s - vs).abs());
-            res_fix = res_fix.max((vzp + len * om_fix * s - vs).abs());
-            let tested = if d.a2_test_before_assign {
-                y[VXC]
-            } else {
-                xc_new
-            };
-            order_dis += usize::from((tested > 0.0) != (xc_new > 0.0));
-            n += 1;
+    for at in &c.ev.at.impacts {
+        let Some(l) = at.recorded.map(|r| r.landing) else {
+            continue; // a mirror image
+        };
+        if l.sticking || l.to == Mode::Flight {
+            continue;
         }
+        let q = &c.ev.params[at.scene];
+        let y = at.y;
+        let (vxp, vzp) = at.tip_v_mps;
+        let vs = at.plate_v_mps;
+        let (s, co) = y[TH].sin_cos();
+        let len = q.length_m;
+        let om = d.a2_free_sign * (vzp - vs) / (len * s); // theta' <- -(z_p' - z_s')/(L sin)
+        let om_fix = -(vzp - vs) / (len * s);
+        let xc_new = vxp + (vzp - vs) * co / s; // x_c' <- x_p' + (z_p' - z_s') cot
+                                                // C.3: z_c' = z_p' + L theta' sin must equal z_s' (C on the plate)
+        res = res.max((vzp + len * om * s - vs).abs());
+        res_fix = res_fix.max((vzp + len * om_fix * s - vs).abs());
+        let tested = if d.a2_test_before_assign {
+            y[VXC]
+        } else {
+            xc_new
+        };
+        order_dis += usize::from((tested > 0.0) != (xc_new > 0.0));
+        n += 1;
     }
     // |z_p' - z_s'| ~ 1 m/s: rounding 1e-15 m/s; 1e-12 m/s
     v.push(Claim::draft(Check::ClosedForm, "a2-impulse-free-landing", "Alg. 2", "tan(θ) > μ: θ' <- -(z_p' - z_s')/(L sin(θ)), x_c' <- x_p' + (z_p' - z_s') cot(θ): P keeps its velocity and C moves with the plate. Largest |z_c' - z_s'| (m/s) after the stated assignment (C.3) at the impulse-free landings of both scenes.").values(json!(0.0), json!(res), "1e-12 m/s").printed_or_corrected(n > 0 && res <= 1e-12, n > 0 && res_fix <= 1e-12));
@@ -368,25 +347,19 @@ fn alg2_hinge(d: &Statements, c: &Ctx) -> Vec<Claim> {
     v.push(Claim::draft(Check::LiteralExecution, "a2-slide-overrides-hinge", "Alg. 2", &format!("As printed: 'if μ F_z < |F_x| then HINGE end if; if F_x > 0 then SLIDE LEFT else SLIDE RIGHT': two separate ifs. Read as assignments (the last wins: {}), the slide choice overwrites HINGE every time. The authors' code decides the reading: fsm.m (STRIKE_0) has one chain, if |F_x| < μ F_y HINGE, elseif F_x > 0 SLIDE_NEG, else SLIDE_POS: the slide choice is the else branch, lost in print. The printed block executed with the corrected hinge test on the cone's interior (|F_x| = s μ F_z, |s| <= 0.95, μ = 0.1 to 2): fraction ending in HINGE (must be 1).", d.last_assert_wins)).values(json!(1.0), json!(frac(ends_hinge, n)), "exact").printed_or_corrected(n > 0 && ends_hinge == n, n > 0));
     // F_x > 0 -> SLIDE LEFT at the pivot exits of both scenes
     let (mut agree, mut exits) = (0usize, 0usize);
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
-        for &(t, from, to) in &run.events {
-            let Some(to) = to else { continue };
-            if from != Mode::Pivot || !matches!(to, Mode::SlideLeft | Mode::SlideRight) {
-                continue;
-            }
-            let Some(y) = state_at(run, t, Mode::Pivot) else {
-                continue;
-            };
-            let fx = m.pivot_eval(t, &y).fx;
-            let left = if d.a2_left_if_fx_positive {
-                fx > 0.0
-            } else {
-                fx < 0.0
-            };
-            agree += usize::from((to == Mode::SlideLeft) == left);
-            exits += 1;
+    for e in &c.ev.at.pivot_exits {
+        let to = e.to;
+        if !matches!(to, Mode::SlideLeft | Mode::SlideRight) {
+            continue;
         }
+        let fx = e.pivot.fx;
+        let left = if d.a2_left_if_fx_positive {
+            fx > 0.0
+        } else {
+            fx < 0.0
+        };
+        agree += usize::from((to == Mode::SlideLeft) == left);
+        exits += 1;
     }
     v.push(Claim::draft(Check::Consistency, "a2-slide-direction", "Alg. 2", "If F_x > 0 SLIDE LEFT else SLIDE RIGHT (outside the cone): the tangential force the plate cannot supply drives C the other way; the authors' fsm.m agrees ('elseif Fx > 0 SLIDE_NEG'). Pivot exits of both scenes at which the stated rule picks the slide the simulation took. A consistency check: the workbook's contact rules (`select_contact`) apply this F_x-sign rule themselves, so no document could fail it here.").values(json!(exits), json!(agree), "exact").printed_or_corrected(exits > 0 && agree == exits, false));
     let counter = c.ev.start_fz_n < 0.0 && c.ev.start_liftoff_hdot_mps < 0.0;

@@ -4,28 +4,12 @@
 //! zero; `fsm.m` of toshankarghosh/toothpicks switches on the event code). The reading
 //! in which the rules run at every instant is excluded and not judged.
 
-use super::evidence::Ctx;
-use super::evidence::{keeps_cone, state_at};
+use super::at_states::SlideExit;
+use super::evidence::{keeps_cone, Ctx};
 use super::statements::Statements;
-use crate::physics::stick::{Mode, State, StickModel, StickParams, VXC};
+use crate::physics::stick::Mode;
 use crate::report::{Check, Claim};
 use serde_json::json;
-
-/// Events of `mode` in the evidence that leave it, with the state before.
-fn exits(c: &Ctx, mode: Mode) -> Vec<(StickModel, f64, State, Mode)> {
-    let mut v = Vec::new();
-    for (run, q) in c.runs() {
-        let m = StickModel::new(*q);
-        for &(t, from, to) in &run.events {
-            if let (true, Some(to)) = (from == mode, to) {
-                if let Some(y) = state_at(run, t, mode) {
-                    v.push((m, t, y, to));
-                }
-            }
-        }
-    }
-    v
-}
 
 /// Counts at the exits of slide `mode` (slip stops) and at the lift-offs of either
 /// slide, under the statements `d`.
@@ -46,9 +30,9 @@ struct SlideExits {
 /// reading at the slide's violations: its slip stops and the lift-offs of either slide
 /// (the two algorithms print the same lines mirrored).
 fn slide_exits(d: &Statements, c: &Ctx, mode: Mode, other: Mode) -> SlideExits {
-    let hinge_ok = |m: &StickModel, t: f64, y: &State| {
-        let f = m.pivot_eval(t, y);
-        d.slide_hinge_mu * m.p.mu * f.fz >= f.fx.abs()
+    let hinge_ok = |e: &SlideExit| {
+        let (f, mu) = (e.pivot, c.ev.params[e.scene].mu);
+        d.slide_hinge_mu * mu * f.fz >= f.fx.abs()
     };
     // The reading in which the rules run at every instant of the slide is not judged:
     // Table 1's caption ("The inequalities are checked for violation. If an inequality
@@ -57,39 +41,35 @@ fn slide_exits(d: &Statements, c: &Ctx, mode: Mode, other: Mode) -> SlideExits {
     // both exclude it; an erratum of a rejected reading would count nothing real.
     // Table 1's reading: the algorithm runs at the slide's violations (slip stop, F_z = 0)
     // lift-offs of either slide: the two algorithms print the same lines mirrored
-    let ex: Vec<_> = exits(c, mode)
-        .into_iter()
-        .filter(|e| e.3 != Mode::Flight)
-        .chain(
-            [Mode::SlideLeft, Mode::SlideRight]
-                .into_iter()
-                .flat_map(|s| exits(c, s))
-                .filter(|e| e.3 == Mode::Flight),
-        )
-        .collect();
+    let ex = c.ev.at.slide_exits.iter().filter(|e| {
+        if e.to == Mode::Flight {
+            matches!(e.from, Mode::SlideLeft | Mode::SlideRight)
+        } else {
+            e.from == mode
+        }
+    });
     let (mut lift_hinge, mut stops, mut stop_agree, mut lifts, mut lift_abort) =
         (0usize, 0usize, 0usize, 0usize, 0usize);
-    for (m, t, y, to) in &ex {
-        let slipping = y[VXC].abs() > 1e-9;
-        if to == &Mode::Flight {
+    for e in ex {
+        let q = &c.ev.params[e.scene];
+        let slipping = e.vxc_mps.abs() > 1e-9;
+        if e.to == Mode::Flight {
             lifts += 1;
-            lift_hinge +=
-                usize::from(slipping && hinge_ok(m, *t, y) && d.slide_hinge_while_slipping);
+            lift_hinge += usize::from(slipping && hinge_ok(e) && d.slide_hinge_while_slipping);
             let target = if d.slide_to_other { other } else { mode };
             lift_abort += usize::from(
-                m.slide_eval(target.sigma(), *t, y).fz <= 1e-9 * m.p.mass_kg * m.p.g_mps2
-                    && d.slide_abort,
+                e.slide_fz(target) <= 1e-9 * q.mass_kg * q.g_mps2 && d.slide_abort,
             );
         } else if !slipping {
             stops += 1;
-            let printed = if hinge_ok(m, *t, y) {
+            let printed = if hinge_ok(e) {
                 Mode::Pivot
             } else if d.slide_to_other {
                 other
             } else {
                 mode
             };
-            stop_agree += usize::from(printed == *to);
+            stop_agree += usize::from(printed == e.to);
         }
     }
     SlideExits {
@@ -155,20 +135,7 @@ fn flight_fx_claim(
     name: &str,
     shared: &str,
 ) -> Claim {
-    let smp = c
-        .runs()
-        .into_iter()
-        .flat_map(|(s, _)| s.trace.iter())
-        .find(|x| matches!(x.mode, Mode::SlideLeft | Mode::SlideRight));
-    let (fx0, fz0) = match smp {
-        Some(x) => {
-            let mut q: StickParams = c.ev.params[0];
-            q.mu = 0.0;
-            let f = StickModel::new(q).slide_eval(x.mode.sigma(), x.t_s, &x.y);
-            (f.fx, f.fz)
-        }
-        None => (f64::NAN, f64::NAN),
-    };
+    let (fx0, fz0) = c.ev.at.slide_at_mu0.unwrap_or((f64::NAN, f64::NAN));
     // F_x = sigma mu F_z is exactly 0 at mu = 0 while F_z > 0: a slide, not a lift-off
     let counter = fx0 == 0.0 && fz0 > 0.0;
     Claim::draft(Check::ClosedForm, &format!("{key}-flight-test"), alg, &format!("As printed ({name}): if F_z = 0 or F_x = 0 go to FLIGHT. F_z reaching 0 is a lift-off. F_x = 0 is not: with μ = 0 a slide has F_x = 0 and F_z > 0 throughout (the sampled slide state below, evaluated at μ = 0). The authors' code (toshankarghosh/toothpicks, Event_SlidePos.m and Event_SlideNeg.m) has two FLIGHT events in a slide, the normal force's numerator k(θ - θ₀) + γ θ' and |θ| - 1e-9, commented as the guard of the θ = 0 singularity: 'F_x = 0' is most likely that guard miscopied. Read as the guard it is a numerical escape from C.14's 1/sin(θ), not a rule of the dynamics (the workbook stops such a run as invalid instead); read as printed, a rule on F_x, it is wrong. Normal force (N) of a sampled slide state evaluated with μ = 0, where F_x = 0.{shared}")).values(json!("F_z > 0"), json!(fz0), "sign").printed_or_corrected(!(d.slide_flight_on_fx && counter), counter)
