@@ -3,8 +3,8 @@
 //! equations).
 
 use super::evidence::{
-    bisect, free_acceleration, point_mass_ratio, rod_lock_angles_closed_form, rod_ratio, Evidence,
-    Ratios,
+    bisect, point_mass_ratio, rod_lock_angles_closed_form, rod_ratio, Evidence,
+    Ratios, FREE_G_MPS2, FREE_SPIN_RAD_S,
 };
 use super::statements::Statements;
 use super::{LENGTH_M, MASS_KG};
@@ -202,15 +202,14 @@ fn self_locking_statement(mu: f64, tight_for_point_mass: bool) -> String {
 /// acceleration by central differences), at rest without gravity and spinning under it.
 pub fn a1_needs_free_acceleration(st: &Statements, ev: &Evidence) -> Claim {
     let theta = ev.at.theta;
-    let (spin, g) = (10.0, 9.81); // rad/s, m/s²: centripetal 7.5 m/s² at L = 0.15 m
+    let (spin, g) = (FREE_SPIN_RAD_S, FREE_G_MPS2);
     let force = ev.normal; // 1 N across the stick, as in the document's derivation
     let e_r = Vector2::new(theta.sin(), theta.cos());
     // formula: (A.1) as printed, in stick coordinates: a_x' = F_x'/m, a_z' = F_z'/(m/4)
     let a1 = force.dot(&e_r) / (st.mass_along * MASS_KG) * e_r
         + force.dot(&ev.normal) / (st.mass_across * MASS_KG) * ev.normal;
     let b = Vector2::new(0.0, -g) + spin * spin * 0.5 * LENGTH_M * e_r; // formula: b = -g e_z + θ'² (L/2) e_r
-    let rest = free_acceleration(theta, 0.0, 0.0, force);
-    let spinning = free_acceleration(theta, spin, g, force);
+    let (rest, spinning) = (ev.free_at_rest, ev.free_spinning); // the second method, at `force`
     let tol = rest.error_mps2.max(spinning.error_mps2) + rel(a1.norm());
     let at_rest_holds = (rest.a_c - a1).norm() <= tol;
     let departure = (spinning.a_c - a1).norm();

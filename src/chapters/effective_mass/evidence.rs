@@ -128,7 +128,17 @@ pub struct Evidence {
     pub at45: Ratios,
     /// The rod's angle of largest ratio (rad), golden-section search.
     pub best_rad: f64,
+    /// C's acceleration by the second method (no mass matrix) at the chosen angle under
+    /// the unit force across the stick: at rest without gravity.
+    pub free_at_rest: FreeAcceleration,
+    /// ... spinning at [`FREE_SPIN_RAD_S`] under [`FREE_G_MPS2`].
+    pub free_spinning: FreeAcceleration,
 }
+
+/// The spin of the second method's spinning state (rad/s): centripetal 7.5 m/s² at L = 0.15 m.
+pub const FREE_SPIN_RAD_S: f64 = 10.0;
+/// Its gravity (m/s²).
+pub const FREE_G_MPS2: f64 = 9.81;
 
 /// The computations at lean angle `theta` (rad).
 pub fn gather(theta: f64) -> Evidence {
@@ -149,6 +159,8 @@ pub fn gather(theta: f64) -> Evidence {
         at30: ratios_at(30f64.to_radians()),
         at45: ratios_at(std::f64::consts::FRAC_PI_4),
         best_rad: golden_max(rod_ratio, 0.0, std::f64::consts::FRAC_PI_2 - 1e-9, 1e-12),
+        free_at_rest: free_acceleration(theta, 0.0, 0.0, stick_normal(theta)),
+        free_spinning: free_acceleration(theta, FREE_SPIN_RAD_S, FREE_G_MPS2, stick_normal(theta)),
     }
 }
 
@@ -169,7 +181,7 @@ pub struct FreeAcceleration {
 
 /// [`FreeAcceleration`] at lean `theta` (rad), spin `spin_rad_s`, gravity `g_mps2`, for
 /// the contact force `force_n` (N, world frame) held constant.
-pub fn free_acceleration(
+fn free_acceleration(
     theta: f64,
     spin_rad_s: f64,
     g_mps2: f64,
