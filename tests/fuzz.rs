@@ -346,10 +346,7 @@ fn violation(case: &Case, code: i32, out: &str, err: &str) -> Option<String> {
         }
         2 => {
             if !out.is_empty() {
-                return Some(format!(
-                    "exit 2 with stdout: {}",
-                    &out[..out.len().min(200)]
-                ));
+                return Some(format!("exit 2 with stdout: {}", head(out, 200)));
             }
             if err.trim_end().lines().count() != 1 {
                 return Some(format!("exit 2 without exactly one stderr line: {err}"));
@@ -360,10 +357,16 @@ fn violation(case: &Case, code: i32, out: &str, err: &str) -> Option<String> {
         1 => Some(format!(
             "exit code 1: {}{}",
             failed_claims(out),
-            &err[..err.len().min(300)]
+            head(err, 300)
         )),
-        c => Some(format!("exit code {c}: {}", &err[..err.len().min(300)])),
+        c => Some(format!("exit code {c}: {}", head(err, 300))),
     }
+}
+
+/// The first `n` characters of `s` (whole characters: the notes print θ and μ), without
+/// the trailing newline.
+fn head(s: &str, n: usize) -> String {
+    s.chars().take(n).collect::<String>().trim_end().to_string()
 }
 
 /// The failed claims in a run's JSON, each as `id: expected E, computed C, tolerance T`
@@ -440,6 +443,8 @@ struct Tally {
     refused: usize,
     slowest_ms: usize,
     failures: Vec<String>,
+    /// Per chapter: cases, accepted, and the seconds they took (wall, summed).
+    per_chapter: std::collections::BTreeMap<String, (usize, usize, f64)>,
 }
 
 /// Runs `cases` on `bin` (each a subprocess) with `jobs` workers, each case under `limit`.
@@ -457,6 +462,12 @@ fn run_all(bin: &str, cases: &[Case], jobs: usize, limit: Duration) -> Tally {
                 t.accepted += usize::from(code == 0 || code == 1);
                 t.refused += usize::from(code == 2);
                 t.slowest_ms = t.slowest_ms.max((secs * 1e3) as usize);
+                let c = t.per_chapter.entry(case.args[0].clone()).or_default();
+                *c = (
+                    c.0 + 1,
+                    c.1 + usize::from(code == 0 || code == 1),
+                    c.2 + secs,
+                );
                 if let Some(why) = why {
                     t.failures
                         .push(format!("workbook {}: {why}", case.args.join(" ")));
@@ -481,6 +492,9 @@ fn fuzzed_inputs_keep_the_contract() {
         "fuzz: {} accepted, {} refused, slowest case {} ms",
         t.accepted, t.refused, t.slowest_ms
     );
+    for (chapter, (runs, accepted, secs)) in &t.per_chapter {
+        eprintln!("fuzz: {chapter:<22} {runs:>3} cases, {accepted:>3} accepted, {secs:>6.1} s");
+    }
     assert!(
         t.failures.is_empty(),
         "seed {seed}: {} of {} cases broke the contract:\n{}",
@@ -655,7 +669,7 @@ fn long_lanes(seed: u64, n: usize, base_s: f64) -> Vec<Lane> {
 }
 
 /// Appends one breach to the findings file (`WORKBOOK_FUZZ_FINDINGS`, if set): the
-/// UTC time of day, the command line and what went wrong, tab-separated.
+/// UTC time of day, the command line and what went wrong, tab-separated, on one line.
 fn log_finding(line: &str) {
     let Ok(path) = std::env::var("WORKBOOK_FUZZ_FINDINGS") else {
         return;
@@ -664,7 +678,7 @@ fn log_finding(line: &str) {
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
     let (h, m, s) = (secs / 3600 % 24, secs / 60 % 60, secs % 60);
-    let text = format!("{h:02}:{m:02}:{s:02} UTC\t{line}\n");
+    let text = format!("{h:02}:{m:02}:{s:02} UTC\t{}\n", line.replace('\n', " | "));
     let file = std::fs::OpenOptions::new()
         .create(true)
         .append(true)
@@ -838,6 +852,8 @@ fn the_checker_sees_what_it_must_refuse() {
     assert!(violation(&case, 0, "{\"x\":null}", "").is_some());
     assert!(violation(&case, 0, "x = inf\n", "").is_some());
     assert!(violation(&case, 2, "", "a\nb\n").is_some());
+    // a long stderr of two-byte characters (θ) is cut between characters
+    assert!(violation(&case, 1, "", &"θ".repeat(400)).is_some());
     assert!(violation(&case, 0, "{\"x\":1}", "").is_none());
     let refuse = Case {
         args: vec![],
