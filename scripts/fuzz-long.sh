@@ -26,7 +26,9 @@
 # ended exit 1, panicked, wrote NaN, inf or null, or broke the contract otherwise.
 #
 # Environment: WORKBOOK_FUZZ_JOBS (threads, default 2); WORKBOOK_FUZZ_FINDINGS=FILE
-# appends every breach to FILE as it is found (UTC time, command line, what failed).
+# appends every breach to FILE as it is found (UTC time, command line, what failed);
+# WORKBOOK_FUZZ_CHAPTERS=id,id runs only those chapters (before a change to one of the
+# slow chapters, e.g. WORKBOOK_FUZZ_CHAPTERS=vertical-shaking scripts/fuzz-long.sh 90).
 # Run it before a change to a model, a tolerance or a flag range; the per-chapter fuzz
 # in `cargo test` (tests/fuzz.rs) is its short version. Everything is built in the
 # release profile, as `cargo test --release` builds it. docs/fuzz.md has the figures.

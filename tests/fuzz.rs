@@ -651,11 +651,13 @@ fn next_case(lanes: &mut [Lane]) -> Option<(usize, Case)> {
 }
 
 /// The long fuzz's draws: accepted values only (inside the documented ranges and at
-/// their ends), every chapter from its own seed, each with `--json`.
-fn long_lanes(seed: u64, n: usize, base_s: f64) -> Vec<Lane> {
+/// their ends), every chapter from its own seed, each with `--json`; only the chapters
+/// named in `only` (comma-separated ids) when it is not empty.
+fn long_lanes(seed: u64, n: usize, base_s: f64, only: &str) -> Vec<Lane> {
+    let wanted = |id: &str| only.is_empty() || only.split(',').any(|c| c.trim() == id);
     table()
         .into_iter()
-        .filter(|(_, flags)| !flags.is_empty())
+        .filter(|(id, flags)| !flags.is_empty() && wanted(id))
         .map(|(chapter, flags)| {
             let mut rng = Rng(chapter_seed(seed, chapter));
             let cases = (0..n)
@@ -726,7 +728,8 @@ fn long_worker(
 /// `--json`, no figures) on `WORKBOOK_FUZZ_JOBS` threads (default 2). Each chapter
 /// runs until it has run its `WORKBOOK_FUZZ_CASES` draws (default 500) or spent its
 /// time budget, `WORKBOOK_FUZZ_CHAPTER_SECONDS` (default 45 thread seconds) times its
-/// [`budget_factor`]; the chapters are interleaved ([`next_case`]), so the wall time
+/// [`budget_factor`] (`WORKBOOK_FUZZ_CHAPTERS=id,id` runs those chapters only); the
+/// chapters are interleaved ([`next_case`]), so the wall time
 /// is at most the sum of the budgets over the threads plus one run. Prints one line per
 /// chapter (runs, accepted, exit 0/1/2, invalid, panics, non-finite, slowest run) and
 /// the command line of every breach; any exit 1, panic, non-finite output or other
@@ -739,7 +742,12 @@ fn long_fuzz_has_no_exit_1() {
     let n: usize = env_or("WORKBOOK_FUZZ_CASES", 500);
     let base_s: f64 = env_or("WORKBOOK_FUZZ_CHAPTER_SECONDS", 45.0);
     let jobs: usize = env_or::<usize>("WORKBOOK_FUZZ_JOBS", 2).max(1);
-    let lanes = long_lanes(seed, n, base_s);
+    let only: String = env_or("WORKBOOK_FUZZ_CHAPTERS", String::new());
+    let lanes = long_lanes(seed, n, base_s, &only);
+    assert!(
+        !lanes.is_empty(),
+        "WORKBOOK_FUZZ_CHAPTERS={only}: no such chapter"
+    );
     let bound_s: f64 = lanes.iter().map(|l| l.budget_s).sum::<f64>() / jobs as f64;
     eprintln!(
         "long fuzz: seed {seed}, {n} draws per chapter, {} chapters, {base_s} s per chapter (x{} vertical-shaking, x{} stick-with-inertia, x{} speed-vs-accuracy), {jobs} threads, in process; at most {bound_s:.0} s of wall time",
