@@ -15,10 +15,11 @@
 //! Seeded per chapter: each chapter draws from the printed seed mixed with its own id
 //! (adding a chapter shifts no other chapter's draws); `WORKBOOK_FUZZ_SEED=<u64>` draws
 //! another set and `WORKBOOK_FUZZ_CASES=<n>` changes the number of cases per chapter
-//! (default 20; vertical-shaking, 20 times slower, 40 % of it). `long_fuzz_has_no_exit_1`
-//! (ignored; `scripts/fuzz-long.sh`) runs thousands of accepted inputs in process,
-//! through the CLI's own entry point, and counts per chapter the accepted, refused,
-//! `invalid` and exit-1 runs.
+//! (default 20; vertical-shaking 40 % of it and stick-with-inertia 50 %, their quick
+//! runs cost seconds). `long_fuzz_has_no_exit_1` (ignored; `scripts/fuzz-long.sh`) runs
+//! thousands of accepted inputs in process, through the CLI's own entry point, each
+//! chapter within its own time budget, and counts per chapter the runs, accepted, exit
+//! 0/1/2, `invalid`, panics and non-finite outputs (docs/fuzz.md).
 
 use std::io::Read;
 use std::process::{Command, Stdio};
@@ -240,18 +241,21 @@ fn chapter_seed(base: u64, id: &str) -> u64 {
 
 /// `per_chapter` cases of every chapter, each chapter drawn from its own seed
 /// ([`chapter_seed`]), interleaved chapter by chapter (so a time budget cuts every
-/// chapter alike). An accepted quick run of vertical-shaking costs ~20 times the
-/// others': it gets 40 % of the cases.
+/// chapter alike). The two chapters whose accepted quick run costs seconds get a share
+/// of the cases (the first ones of their own draws, so no draw moves): vertical-shaking
+/// 40 % (5 to 11 s a run), stick-with-inertia 50 % (3 to 8 s); together they took 40 of
+/// the 50 CPU seconds of the fuzz at 20 and 40 % (measured 27 November 2026). The long
+/// fuzz (`scripts/fuzz-long.sh`) gives them their own time budgets.
 fn cases(base: u64, per_chapter: usize, valid_only: bool) -> Vec<Case> {
     let per_chapter_cases: Vec<Vec<Case>> = table()
         .iter()
         .filter(|(_, flags)| !flags.is_empty()) // a chapter without value flags has none to draw
         .map(|(chapter, flags)| {
             let mut rng = Rng(chapter_seed(base, chapter));
-            let n = if *chapter == "vertical-shaking" {
-                (per_chapter * 2).div_ceil(5)
-            } else {
-                per_chapter
+            let n = match *chapter {
+                "vertical-shaking" => (per_chapter * 2).div_ceil(5),
+                "stick-with-inertia" => per_chapter.div_ceil(2),
+                _ => per_chapter,
             };
             (0..n)
                 .map(|_| make_case(&mut rng, chapter, flags, valid_only))
@@ -346,10 +350,7 @@ fn violation(case: &Case, code: i32, out: &str, err: &str) -> Option<String> {
         }
         2 => {
             if !out.is_empty() {
-                return Some(format!(
-                    "exit 2 with stdout: {}",
-                    &out[..out.len().min(200)]
-                ));
+                return Some(format!("exit 2 with stdout: {}", head(out, 200)));
             }
             if err.trim_end().lines().count() != 1 {
                 return Some(format!("exit 2 without exactly one stderr line: {err}"));
@@ -357,8 +358,48 @@ fn violation(case: &Case, code: i32, out: &str, err: &str) -> Option<String> {
             None
         }
         -1 => Some("timed out".into()),
-        c => Some(format!("exit code {c}: {}", &err[..err.len().min(300)])),
+        1 => Some(format!(
+            "exit code 1: {}{}",
+            failed_claims(out),
+            head(err, 300)
+        )),
+        c => Some(format!("exit code {c}: {}", head(err, 300))),
     }
+}
+
+/// The first `n` characters of `s` (whole characters: the notes print θ and μ), without
+/// the trailing newline.
+fn head(s: &str, n: usize) -> String {
+    s.chars().take(n).collect::<String>().trim_end().to_string()
+}
+
+/// The failed claims in a run's JSON, each as `id: expected E, computed C, tolerance T`
+/// (with `; ` after each), or nothing when the output is not JSON.
+fn failed_claims(out: &str) -> String {
+    fn walk(v: &serde_json::Value, found: &mut String) {
+        match v {
+            serde_json::Value::Object(o) => {
+                if o.get("verdict").and_then(|x| x.as_str()) == Some("failed") {
+                    let field = |k: &str| o.get(k).map_or("-".into(), |x| x.to_string());
+                    found.push_str(&format!(
+                        "failed claim {}: expected {}, computed {}, tolerance {}; ",
+                        field("id"),
+                        field("expected"),
+                        field("computed"),
+                        field("tolerance")
+                    ));
+                }
+                o.values().for_each(|x| walk(x, found));
+            }
+            serde_json::Value::Array(a) => a.iter().for_each(|x| walk(x, found)),
+            _ => {}
+        }
+    }
+    let mut found = String::new();
+    if let Ok(v) = serde_json::from_str::<serde_json::Value>(out.trim()) {
+        walk(&v, &mut found);
+    }
+    found
 }
 
 #[test]
@@ -406,6 +447,8 @@ struct Tally {
     refused: usize,
     slowest_ms: usize,
     failures: Vec<String>,
+    /// Per chapter: cases, accepted, and the seconds they took (wall, summed).
+    per_chapter: std::collections::BTreeMap<String, (usize, usize, f64)>,
 }
 
 /// Runs `cases` on `bin` (each a subprocess) with `jobs` workers, each case under `limit`.
@@ -423,6 +466,12 @@ fn run_all(bin: &str, cases: &[Case], jobs: usize, limit: Duration) -> Tally {
                 t.accepted += usize::from(code == 0 || code == 1);
                 t.refused += usize::from(code == 2);
                 t.slowest_ms = t.slowest_ms.max((secs * 1e3) as usize);
+                let c = t.per_chapter.entry(case.args[0].clone()).or_default();
+                *c = (
+                    c.0 + 1,
+                    c.1 + usize::from(code == 0 || code == 1),
+                    c.2 + secs,
+                );
                 if let Some(why) = why {
                     t.failures
                         .push(format!("workbook {}: {why}", case.args.join(" ")));
@@ -447,6 +496,9 @@ fn fuzzed_inputs_keep_the_contract() {
         "fuzz: {} accepted, {} refused, slowest case {} ms",
         t.accepted, t.refused, t.slowest_ms
     );
+    for (chapter, (runs, accepted, secs)) in &t.per_chapter {
+        eprintln!("fuzz: {chapter:<22} {runs:>3} cases, {accepted:>3} accepted, {secs:>6.1} s");
+    }
     assert!(
         t.failures.is_empty(),
         "seed {seed}: {} of {} cases broke the contract:\n{}",
@@ -456,17 +508,93 @@ fn fuzzed_inputs_keep_the_contract() {
     );
 }
 
+/// The long fuzz's time budget of one chapter, as a multiple of the base budget
+/// (`WORKBOOK_FUZZ_CHAPTER_SECONDS`). A chapter whose quick run is cheap runs all its
+/// draws well inside the base; three chapters pay for evidence sweeps that every run
+/// repeats whatever its flags (no flag selects a smaller piece of them), so they get
+/// more time to reach a useful number of draws: vertical-shaking (a quick run costs
+/// 5 to 11 s: the flight-time, law and viscous sweeps up to Gamma = 32768),
+/// stick-with-inertia (3 to 8 s: the evidence scenes and the rod-mass ladder; the
+/// reader's `--duration-s` is not where the time goes) and speed-vs-accuracy (1 to 3 s:
+/// its work-precision ladders).
+fn budget_factor(chapter: &str) -> f64 {
+    match chapter {
+        "vertical-shaking" => 6.0,
+        "stick-with-inertia" => 3.0,
+        "speed-vs-accuracy" => 2.0,
+        _ => 1.0,
+    }
+}
+
 /// One chapter's share of the long fuzz: its own draws (seeded by [`chapter_seed`]),
-/// how many of them were run and the wall time they took, and the counts by outcome.
+/// its time budget and how much of it the runs took (thread seconds), and the counts
+/// by outcome.
 struct Lane {
     chapter: &'static str,
     cases: Vec<Case>,
     next: usize,
+    budget_s: f64,
     busy_s: f64,
-    accepted: usize,
-    refused: usize,
+    /// Runs that ended with exit code 0, 1 and 2.
+    exits: [usize; 3],
+    /// Runs that panicked (101) or ended with another code.
+    other: usize,
+    /// Exit-0 runs whose JSON says `invalid` somewhere (a run that could not vouch).
     invalid: usize,
-    exit_1: usize,
+    /// Exit-0 runs with NaN, inf or null on stdout.
+    non_finite: usize,
+    /// The slowest run: seconds and command line.
+    slowest: (f64, String),
+}
+
+impl Lane {
+    fn new(chapter: &'static str, cases: Vec<Case>, base_s: f64) -> Self {
+        Lane {
+            chapter,
+            cases,
+            next: 0,
+            budget_s: base_s * budget_factor(chapter),
+            busy_s: 0.0,
+            exits: [0; 3],
+            other: 0,
+            invalid: 0,
+            non_finite: 0,
+            slowest: (0.0, String::new()),
+        }
+    }
+
+    /// Counts one run of `case`.
+    fn record(&mut self, case: &Case, code: i32, out: &str, secs: f64) {
+        self.busy_s += secs;
+        match code {
+            0..=2 => self.exits[code as usize] += 1,
+            _ => self.other += 1,
+        }
+        self.invalid += usize::from(code == 0 && says_invalid(out));
+        self.non_finite += usize::from(code == 0 && has_non_finite(out));
+        if secs > self.slowest.0 {
+            self.slowest = (secs, command_line(case));
+        }
+    }
+
+    /// The summary line: runs, accepted (exit 0 or 1), exit 0/1/2, invalid, the other
+    /// breaches, the slowest run, the time used of the budget and why the lane stopped.
+    fn summary(&self) -> String {
+        let [e0, e1, e2] = self.exits;
+        let stop = if self.next == self.cases.len() {
+            "all draws run"
+        } else if self.busy_s >= self.budget_s {
+            "budget spent"
+        } else {
+            "stopped"
+        };
+        format!(
+            "{:<22} {:>4} runs: {:>4} accepted, exit 0/1/2 = {}/{}/{}, {} invalid, {} panic or other, {} non-finite; slowest {:.2} s; {:.0} of {:.0} s ({}, {} of {} draws)",
+            self.chapter, self.next, e0 + e1, e0, e1, e2, self.invalid, self.other,
+            self.non_finite, self.slowest.0, self.busy_s, self.budget_s, stop, self.next,
+            self.cases.len()
+        )
+    }
 }
 
 /// Whether a run's JSON says that it could not vouch for its answer: an outcome (of
@@ -506,38 +634,30 @@ fn command_line(case: &Case) -> String {
     format!("workbook {}", quoted.join(" "))
 }
 
-/// The lane a free worker takes next: among the chapters with draws left, the one
-/// that has had the least wall time so far (so the cheap chapters run all their draws
-/// in the first seconds and the costly ones share what is left evenly).
+/// The lane a free worker takes next: among the chapters with draws and budget left,
+/// the one that has used the smallest fraction of its budget (so the chapters are
+/// interleaved, the cheap ones run all their draws early and each costly one gets
+/// its own budget, not what the others left).
 fn next_case(lanes: &mut [Lane]) -> Option<(usize, Case)> {
     let i = (0..lanes.len())
-        .filter(|&i| lanes[i].next < lanes[i].cases.len())
-        .min_by(|&a, &b| lanes[a].busy_s.total_cmp(&lanes[b].busy_s))?;
+        .filter(|&i| lanes[i].next < lanes[i].cases.len() && lanes[i].busy_s < lanes[i].budget_s)
+        .min_by(|&a, &b| {
+            let used = |l: &Lane| l.busy_s / l.budget_s;
+            used(&lanes[a]).total_cmp(&used(&lanes[b]))
+        })?;
     let lane = &mut lanes[i];
     lane.next += 1;
     Some((i, lane.cases[lane.next - 1].clone()))
 }
 
-/// The long fuzz (`scripts/fuzz-long.sh`): accepted values only (inside the
-/// documented ranges and at their ends), every chapter from its own seed, run in this
-/// process through the CLI's entry point (`--quick`, `--json`, no figures) on
-/// `WORKBOOK_FUZZ_JOBS` threads (default 2), until each chapter has run
-/// `WORKBOOK_FUZZ_CASES` draws (default 500) or `WORKBOOK_FUZZ_SECONDS` (default 240)
-/// have passed; a free thread takes the chapter with the least wall time so far.
-/// Prints per chapter the accepted runs (exit 0 or 1), the refused ones (exit 2: a
-/// coupled range), those that ended `invalid` and the exit-1 runs, with the command
-/// line of every exit-1 run; any exit 1 or other breach of the contract fails it. A
-/// case still running 120 s after it started ends the test with its command line.
-#[test]
-#[ignore = "minutes long: scripts/fuzz-long.sh"]
-fn long_fuzz_has_no_exit_1() {
-    let seed: u64 = env_or("WORKBOOK_FUZZ_SEED", 0x10c0_2026);
-    let n: usize = env_or("WORKBOOK_FUZZ_CASES", 500);
-    let budget = Duration::from_secs(env_or("WORKBOOK_FUZZ_SECONDS", 240));
-    let jobs: usize = env_or("WORKBOOK_FUZZ_JOBS", 2);
-    let lanes: Vec<Lane> = table()
+/// The long fuzz's draws: accepted values only (inside the documented ranges and at
+/// their ends), every chapter from its own seed, each with `--json`; only the chapters
+/// named in `only` (comma-separated ids) when it is not empty.
+fn long_lanes(seed: u64, n: usize, base_s: f64, only: &str) -> Vec<Lane> {
+    let wanted = |id: &str| only.is_empty() || only.split(',').any(|c| c.trim() == id);
+    table()
         .into_iter()
-        .filter(|(_, flags)| !flags.is_empty())
+        .filter(|(id, flags)| !flags.is_empty() && wanted(id))
         .map(|(chapter, flags)| {
             let mut rng = Rng(chapter_seed(seed, chapter));
             let cases = (0..n)
@@ -549,99 +669,162 @@ fn long_fuzz_has_no_exit_1() {
                     c
                 })
                 .collect();
-            Lane {
-                chapter,
-                cases,
-                next: 0,
-                busy_s: 0.0,
-                accepted: 0,
-                refused: 0,
-                invalid: 0,
-                exit_1: 0,
-            }
+            Lane::new(chapter, cases, base_s)
         })
-        .collect();
+        .collect()
+}
+
+/// Appends one breach to the findings file (`WORKBOOK_FUZZ_FINDINGS`, if set): the
+/// UTC time of day, the command line and what went wrong, tab-separated, on one line.
+fn log_finding(line: &str) {
+    let Ok(path) = std::env::var("WORKBOOK_FUZZ_FINDINGS") else {
+        return;
+    };
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let (h, m, s) = (secs / 3600 % 24, secs / 60 % 60, secs % 60);
+    let text = format!("{h:02}:{m:02}:{s:02} UTC\t{}\n", line.replace('\n', " | "));
+    let file = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(path);
+    if let Ok(mut f) = file {
+        use std::io::Write;
+        let _ = f.write_all(text.as_bytes());
+    }
+}
+
+/// One worker of the long fuzz: takes cases ([`next_case`]) until no lane has draws
+/// and budget left, runs each in process, counts it in its lane and reports every
+/// breach at once (stderr and the findings file). `slot` shows the watchdog the case
+/// it is running.
+fn long_worker(
+    lanes: &Mutex<Vec<Lane>>,
+    failures: &Mutex<Vec<String>>,
+    slot: &Mutex<Option<(Instant, String)>>,
+) {
+    loop {
+        let Some((i, case)) = next_case(&mut lanes.lock().unwrap()) else {
+            break;
+        };
+        *slot.lock().unwrap() = Some((Instant::now(), command_line(&case)));
+        let t0 = Instant::now();
+        let (code, out, err) = run_in_process(&case);
+        let secs = t0.elapsed().as_secs_f64();
+        *slot.lock().unwrap() = None;
+        lanes.lock().unwrap()[i].record(&case, code, &out, secs);
+        if let Some(why) = violation(&case, code, &out, &err) {
+            let line = format!("{}: {why}", command_line(&case));
+            eprintln!("long fuzz: {line}");
+            log_finding(&line);
+            failures.lock().unwrap().push(line);
+        }
+    }
+}
+
+/// The long fuzz (`scripts/fuzz-long.sh`): accepted values only, every chapter from
+/// its own seed, run in this process through the CLI's entry point (`--quick`,
+/// `--json`, no figures) on `WORKBOOK_FUZZ_JOBS` threads (default 2). Each chapter
+/// runs until it has run its `WORKBOOK_FUZZ_CASES` draws (default 500) or spent its
+/// time budget, `WORKBOOK_FUZZ_CHAPTER_SECONDS` (default 45 thread seconds) times its
+/// [`budget_factor`] (`WORKBOOK_FUZZ_CHAPTERS=id,id` runs those chapters only); the
+/// chapters are interleaved ([`next_case`]), so the wall time
+/// is at most the sum of the budgets over the threads plus one run. Prints one line per
+/// chapter (runs, accepted, exit 0/1/2, invalid, panics, non-finite, slowest run) and
+/// the command line of every breach; any exit 1, panic, non-finite output or other
+/// breach of the contract fails it. A case still running 120 s after it started ends
+/// the test with its command line.
+#[test]
+#[ignore = "minutes long: scripts/fuzz-long.sh"]
+fn long_fuzz_has_no_exit_1() {
+    let seed: u64 = env_or("WORKBOOK_FUZZ_SEED", 0x10c0_2026);
+    let n: usize = env_or("WORKBOOK_FUZZ_CASES", 500);
+    let base_s: f64 = env_or("WORKBOOK_FUZZ_CHAPTER_SECONDS", 45.0);
+    let jobs: usize = env_or::<usize>("WORKBOOK_FUZZ_JOBS", 2).max(1);
+    let only: String = env_or("WORKBOOK_FUZZ_CHAPTERS", String::new());
+    let lanes = long_lanes(seed, n, base_s, &only);
+    assert!(
+        !lanes.is_empty(),
+        "WORKBOOK_FUZZ_CHAPTERS={only}: no such chapter"
+    );
+    let bound_s: f64 = lanes.iter().map(|l| l.budget_s).sum::<f64>() / jobs as f64;
     eprintln!(
-        "long fuzz: seed {seed}, {n} draws per chapter, {} chapters, budget {} s, {jobs} threads, in process",
+        "long fuzz: seed {seed}, {n} draws per chapter, {} chapters, {base_s} s per chapter (x{} vertical-shaking, x{} stick-with-inertia, x{} speed-vs-accuracy), {jobs} threads, in process; at most {bound_s:.0} s of wall time",
         lanes.len(),
-        budget.as_secs()
+        budget_factor("vertical-shaking"),
+        budget_factor("stick-with-inertia"),
+        budget_factor("speed-vs-accuracy")
     );
     let start = Instant::now();
     let lanes = Mutex::new(lanes);
     let failures = Mutex::new(Vec::<String>::new());
     let running: Vec<Mutex<Option<(Instant, String)>>> =
-        (0..jobs.max(1)).map(|_| Mutex::new(None)).collect();
+        (0..jobs).map(|_| Mutex::new(None)).collect();
     let done = AtomicUsize::new(0);
     std::thread::scope(|s| {
         for slot in &running {
             let (lanes, failures, done) = (&lanes, &failures, &done);
             s.spawn(move || {
-                while start.elapsed() < budget {
-                    let Some((i, case)) = next_case(&mut lanes.lock().unwrap()) else {
-                        break;
-                    };
-                    *slot.lock().unwrap() = Some((Instant::now(), command_line(&case)));
-                    let t0 = Instant::now();
-                    let (code, out, err) = run_in_process(&case);
-                    let secs = t0.elapsed().as_secs_f64();
-                    *slot.lock().unwrap() = None;
-                    let why = violation(&case, code, &out, &err);
-                    let mut ls = lanes.lock().unwrap();
-                    let lane = &mut ls[i];
-                    lane.busy_s += secs;
-                    lane.accepted += usize::from(code == 0 || code == 1);
-                    lane.refused += usize::from(code == 2);
-                    lane.invalid += usize::from(code == 0 && says_invalid(&out));
-                    lane.exit_1 += usize::from(code == 1);
-                    if let Some(why) = why {
-                        let line = format!("{}: {why}", command_line(&case));
-                        eprintln!("long fuzz: {line}");
-                        failures.lock().unwrap().push(line);
-                    }
-                }
+                long_worker(lanes, failures, slot);
                 done.fetch_add(1, Ordering::SeqCst);
             });
         }
-        // The watchdog: a case that runs past 120 s ends the test with its command line.
-        while done.load(Ordering::SeqCst) < running.len() {
-            std::thread::sleep(Duration::from_millis(200));
-            for slot in &running {
-                if let Some((t0, line)) = slot.lock().unwrap().as_ref() {
-                    if t0.elapsed() > Duration::from_secs(120) {
-                        eprintln!("long fuzz: {line}: still running after 120 s");
-                        std::process::exit(1);
-                    }
-                }
-            }
-        }
+        watchdog(&running, &done);
     });
     let wall_s = start.elapsed().as_secs_f64();
     let lanes = lanes.into_inner().unwrap();
-    let mut total = [0usize; 5];
-    for l in &lanes {
-        eprintln!(
-            "long fuzz: {:<22} {:>5} accepted, {:>4} refused (exit 2), {:>3} invalid, {} exit 1; {:>4} of {} draws run in {:.1} s",
-            l.chapter, l.accepted, l.refused, l.invalid, l.exit_1, l.next, l.cases.len(), l.busy_s
-        );
-        for (t, x) in total
-            .iter_mut()
-            .zip([l.accepted, l.refused, l.invalid, l.exit_1, l.next])
-        {
+    let failures = failures.into_inner().unwrap();
+    let exit_1 = report_lanes(&lanes, wall_s);
+    assert!(
+        failures.is_empty(),
+        "seed {seed}: {} cases broke the contract ({exit_1} exit 1):\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
+
+/// Ends the process when a case has run past 120 s (naming it), until every worker
+/// is done.
+fn watchdog(running: &[Mutex<Option<(Instant, String)>>], done: &AtomicUsize) {
+    while done.load(Ordering::SeqCst) < running.len() {
+        std::thread::sleep(Duration::from_millis(200));
+        for slot in running {
+            if let Some((t0, line)) = slot.lock().unwrap().as_ref() {
+                if t0.elapsed() > Duration::from_secs(120) {
+                    eprintln!("long fuzz: {line}: still running after 120 s");
+                    std::process::exit(1);
+                }
+            }
+        }
+    }
+}
+
+/// Prints the per-chapter lines, each chapter's slowest command and the totals;
+/// returns the number of exit-1 runs.
+fn report_lanes(lanes: &[Lane], wall_s: f64) -> usize {
+    let mut total = [0usize; 6];
+    for l in lanes {
+        eprintln!("long fuzz: {}", l.summary());
+        for (t, x) in total.iter_mut().zip([
+            l.next,
+            l.exits[0] + l.exits[1],
+            l.exits[1],
+            l.exits[2],
+            l.invalid,
+            l.other + l.non_finite,
+        ]) {
             *t += x;
         }
     }
+    for l in lanes {
+        eprintln!("long fuzz: slowest {}: {}", l.chapter, l.slowest.1);
+    }
     eprintln!(
-        "long fuzz: {} accepted, {} refused, {} invalid, {} exit 1 ({} runs) in {wall_s:.0} s wall",
-        total[0], total[1], total[2], total[3], total[4]
+        "long fuzz: {} runs, {} accepted, {} exit 1, {} refused (exit 2), {} invalid, {} panics, other codes or non-finite outputs, in {wall_s:.0} s wall",
+        total[0], total[1], total[2], total[3], total[4], total[5]
     );
-    let failures = failures.into_inner().unwrap();
-    assert!(
-        failures.is_empty(),
-        "seed {seed}: {} cases broke the contract ({} exit 1):\n{}",
-        failures.len(),
-        total[3],
-        failures.join("\n")
-    );
+    total[2]
 }
 
 /// Each chapter's draws depend on its id and the seed only.
@@ -681,6 +864,8 @@ fn the_checker_sees_what_it_must_refuse() {
     assert!(violation(&case, 0, "{\"x\":null}", "").is_some());
     assert!(violation(&case, 0, "x = inf\n", "").is_some());
     assert!(violation(&case, 2, "", "a\nb\n").is_some());
+    // a long stderr of two-byte characters (θ) is cut between characters
+    assert!(violation(&case, 1, "", &"θ".repeat(400)).is_some());
     assert!(violation(&case, 0, "{\"x\":1}", "").is_none());
     let refuse = Case {
         args: vec![],
@@ -688,4 +873,30 @@ fn the_checker_sees_what_it_must_refuse() {
     };
     assert!(violation(&refuse, 0, "{}", "").is_some());
     assert!(violation(&refuse, 2, "", "error: x\n").is_none());
+}
+
+#[test]
+fn the_long_fuzz_interleaves_chapters_within_their_budgets() {
+    let case = |c: &str| Case {
+        args: vec![c.to_string()],
+        must_refuse: false,
+    };
+    let lane = |c: &'static str| Lane::new(c, vec![case(c); 3], 10.0);
+    let mut lanes = vec![lane("vertical-shaking"), lane("effective-mass")];
+    // equal use (none): the first; then the one that has used the smaller fraction
+    assert_eq!(next_case(&mut lanes).map(|(i, _)| i), Some(0));
+    lanes[0].busy_s = 30.0; // half of its 60 s
+    lanes[1].busy_s = 6.0; // 60 % of its 10 s
+    assert_eq!(next_case(&mut lanes).map(|(i, _)| i), Some(0));
+    lanes[0].busy_s = 60.0; // budget spent: the other lane takes its draws, then none
+    assert_eq!(next_case(&mut lanes).map(|(i, _)| i), Some(1));
+    assert_eq!(next_case(&mut lanes).map(|(i, _)| i), Some(1));
+    assert_eq!(next_case(&mut lanes).map(|(i, _)| i), Some(1));
+    assert!(
+        next_case(&mut lanes).is_none(),
+        "all draws run or budgets spent"
+    );
+    let json = r#"{"claims":[{"id":"x","expected":1.0,"computed":2.0,"tolerance":0.1,"verdict":"failed"}]}"#;
+    assert!(violation(&case("x"), 1, json, "")
+        .is_some_and(|w| w.contains("failed claim \"x\": expected 1.0, computed 2.0")));
 }

@@ -19,6 +19,7 @@
 //!   `Gamma(x, y) <= 1 - b`, a band around each nodal line that narrows as `Gamma_0` grows.
 
 use super::scene::{run as run_scene, Model, Scene};
+use crate::numerics::hybrid::Outcome;
 use crate::numerics::ode::{Integrator, Method, StepControl};
 use std::f64::consts::PI;
 
@@ -54,6 +55,10 @@ pub struct DriftTable {
     pub gammas: Vec<f64>,
     /// Mean velocity at each (m/s), from the block model.
     pub speeds_mps: Vec<f64>,
+    /// The Gamma values whose block run did not reach its end (a Zeno stop, a failed
+    /// step), with the run's outcome: their speed is NaN and the demonstration cannot
+    /// vouch for the grains that cross them.
+    pub stopped: Vec<(f64, String)>,
 }
 
 impl DriftTable {
@@ -70,10 +75,22 @@ impl DriftTable {
         gammas.extend_from_slice(extra);
         gammas.sort_by(f64::total_cmp);
         gammas.dedup();
-        let speeds_mps = crate::sweep::par_map(&gammas, "Chladni drift table", |&g| {
-            drift_speed(scene, g, transient, observe)
+        let runs = crate::sweep::par_map(&gammas, "Chladni drift table", |&g| {
+            let st = run_scene(&scene.at_gamma(g), Model::Exact, transient, observe);
+            let stop = (st.run.outcome != Outcome::Completed).then(|| format!("{:?}", st.run.outcome));
+            (st.cycle_velocity_mps, stop)
         });
-        DriftTable { gammas, speeds_mps }
+        let stopped = gammas
+            .iter()
+            .zip(&runs)
+            .filter_map(|(&g, (_, stop))| stop.clone().map(|s| (g, s)))
+            .collect();
+        let speeds_mps = runs.into_iter().map(|(v, _)| v).collect();
+        DriftTable {
+            gammas,
+            speeds_mps,
+            stopped,
+        }
     }
 
     /// `V(Gamma)` by linear interpolation (m/s); 0 below the table, last value above.
@@ -271,6 +288,7 @@ mod tests {
         let t = DriftTable {
             gammas: vec![0.0, 1.0, 2.0],
             speeds_mps: vec![0.0, 0.0, 2e-3],
+            stopped: Vec::new(),
         };
         assert_eq!(t.speed(0.5), 0.0);
         assert_eq!(t.speed(2.0), 2e-3);
