@@ -71,12 +71,17 @@ impl<P: PlateMotion + ?Sized> HybridSystem<4> for BlockSystem<'_, P> {
             (_, 0) => self.normal(t),
             (BlockMode::Stick, 1) => self.mu() * self.normal(t) - self.needed_friction(t), // formula: mu n - f_need
             (BlockMode::Stick, _) => self.mu() * self.normal(t) + self.needed_friction(t), // formula: mu n + f_need
-            // A slip that starts from rest starts its guard at zero, and a guard never
-            // fires from zero: count that start as already moving the slip's way (as the
-            // flight guard does), so that a slip whose velocity reverses within its first
-            // step (the force leaves the cone for less than a step) still ends there.
-            (BlockMode::SlipRight, _) if y[1] == 0.0 => f64::MIN_POSITIVE,
-            (BlockMode::SlipLeft, _) if y[1] == 0.0 => -f64::MIN_POSITIVE,
+            // The slip ends when its velocity reverses beyond its own rounding: the closed
+            // form's w carries the differences of plate velocities (v_zp - v_zp0, v_xp -
+            // v_xp0), which round to ε |v| each, so a slip from rest at the opening edge
+            // of its window (acceleration still near zero) reads w = -6.5e-19 m/s within
+            // its first step: a "reversal" that rest_mode answers with the same slip, 100
+            // times in 1e-6 s (a Zeno stop the long fuzz found, vertical-shaking at
+            // Γ just above 1 - b). The guard is offset by that rounding, so a slip from
+            // rest also starts it above zero (a guard never fires from zero) and a true
+            // reversal within the first step is still seen.
+            (BlockMode::SlipRight, _) => y[1] + self.slip_rounding_mps(t),
+            (BlockMode::SlipLeft, _) => y[1] - self.slip_rounding_mps(t),
             (_, _) => y[1],
         }
     }

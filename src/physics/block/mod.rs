@@ -313,6 +313,21 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
         (f - n).abs() <= 8.0 * f64::EPSILON * (f + n) + drift
     }
 
+    /// The rounding of a slip's relative velocity `w` at `t` (m/s). The closed form
+    /// subtracts the plate's velocities at the slip's start from those at `t`; each is
+    /// the plate's velocity at a rounded time (t carries ε (t + T) of rounding, through
+    /// the phase ω t), so each is off by |a_p| ε (t + T) plus a few ulps of itself, and
+    /// near a switch both ends are the same size: 8 ε [μ (|a_zp| (t + T) + |v_zp|) +
+    /// |a_xp| (t + T) + |v_xp|]. Never below the smallest positive number, so that a slip
+    /// from rest starts its guard above zero.
+    pub(crate) fn slip_rounding_mps(&self, t: f64) -> f64 {
+        let p = self.plate;
+        let span = t.abs() + p.period_s(); // formula: t + T
+        let z = p.az_mps2(t).abs() * span + p.vz_mps(t).abs();
+        let x = p.ax_mps2(t).abs() * span + p.vx_mps(t).abs();
+        (8.0 * f64::EPSILON * (self.mu() * z + x)).max(f64::MIN_POSITIVE) // formula: 8 eps [mu (|a_zp| (t + T) + |v_zp|) + |a_xp| (t + T) + |v_xp|]
+    }
+
     /// The contact mode for relative velocity `w` at `t` (the block touches the plate).
     pub(crate) fn contact_mode(&self, t: f64, w: f64) -> BlockMode {
         match self.params.friction {

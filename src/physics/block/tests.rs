@@ -430,3 +430,18 @@ fn sawtooth_drift_matches_the_closed_forms_in_every_regime() {
     );
     eprintln!("largest block-vs-closed-form drift difference: {worst:e} m/s");
 }
+
+/// The long fuzz's Zeno stop (issue 29): at Γ just above the creep threshold 1 - b a
+/// slip from rest opens its window with an acceleration near zero, and its closed-form
+/// velocity rounds to -1.7e-18 m/s within the first step. Judged against zero, that was
+/// a reversal, answered by the same slip 100 times in 1e-6 s; judged against the slip's
+/// rounding (`slip_rounding_mps`) the run completes.
+#[test]
+fn a_slip_opening_at_the_creep_threshold_is_not_a_zeno_stop() {
+    let (gamma, f, mu, bias) = (0.9501953125, 27.18084237584415, 0.4, 0.05);
+    let omega = TAU * f;
+    let plate = Harmonic::sine(Axis::Z, gamma * G / (omega * omega), f);
+    let params = BlockParams::coulomb(G, mu, bias * mu * G);
+    let run = simulate_block(&params, &plate, 120.0 / f, &BlockOptions::default());
+    assert_eq!(run.outcome, crate::numerics::hybrid::Outcome::Completed);
+}
