@@ -12,6 +12,7 @@
 //!   exact simulation: where within 1 %, and how much cheaper.
 
 pub mod block_part;
+pub mod budget;
 pub mod claims;
 pub mod economy;
 pub mod evidence;
