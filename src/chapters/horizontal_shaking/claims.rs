@@ -104,10 +104,13 @@ fn viscous(st: &Statements, ev: &Evidence) -> Claim {
     let x = PI * v.b_small / 2.0;
     let tol = 2.0 * (2.0 - 2.0 * x.cos()) + 10.0 / (100.0 * 100.0);
     let expected = 2f64.powf(1.0 / st.friction_exponent); // formula: F ~ v^p -> v2/v1 = 2^(1/p)
-                                                          // At Gamma_x = 100 the averaged law is within ~1.4/Gamma_x^2 = 1.4e-4 (see the sweep),
-                                                          // so 1e-3 of c bounds the check.
+    // The exact c against the linear law's: the averaged law's c = b mu g/(V sin x) departs
+    // from the linear 2 mu g/(pi V) by x/sin(x) - 1 (1.6e-4 at b = 0.02), and the averaged
+    // law's own error at Gamma_x = 100 is within 10/Gamma_x^2 (measured 1.4/Gamma_x^2, the
+    // sweep's bound); the exact drift's numerical error (~1e-12 relative) is below both.
+    let c_tol = x / x.sin() - 1.0 + 10.0 / (100.0 * 100.0); // formula: x/sin(x) - 1 + 10/Gamma_x^2
     let holds = (v.doubling - expected).abs() <= tol
-        && (v.c_exact - v.c_law).abs() <= 1e-3 * v.c_law
+        && (v.c_exact - v.c_law).abs() <= c_tol * v.c_law
         && v.departure > 0.1;
     Claim::draft(Check::Simulation, "remaining-friction-viscous", "3.1.1", &format!(
         "As printed: the friction that remains is viscous, growing with velocity and falling with frequency or amplitude. Holds for v << V = δₓ ω and Γₓ >> 1: the mean friction is -(2/π) μ m g arcsin(v/V), linear with c = 2 μ m g/(π V) only at small v (exact c within 1e-3 of it at F = 0.02 μ m g, Γₓ = 100); at F = 0.9 μ m g the linear law overestimates the drift by {:.0} %. Expected/computed: the drift ratio when the force doubles from 0.02 to 0.04 μ m g (2 for a viscous law, 2^(1/p) for F ~ v^p); tolerance 2 (2 - 2 cos(π b/2)) + 10/Γₓ².",
@@ -173,7 +176,7 @@ fn booktop_slides(st: &Statements, ev: &Evidence) -> Claim {
     let bt = &ev.booktop;
     let book = &bt.scene;
     let rapid = book.gamma_x() > 1.0 - book.bias;
-    let moved = bt.drift_mps.abs() > 1e-12 * book.velocity_amplitude_mps();
+    let moved = bt.drift_mps.abs() > bt.drift_err_mps; // formula: |v| > its numerical error bound
     let down = bt.drift_mps > 0.0; // the bias, gravity's component along the book, points to +x
     let slides = !bt.still_slides && moved && down == st.slides_down;
     Claim::draft(Check::Simulation, "booktop-slides-at-small-tilt", "3.1.1 booktop", &format!(
