@@ -113,7 +113,8 @@ fn viscous(st: &Statements, ev: &Evidence) -> Claim {
         && (v.c_exact - v.c_law).abs() <= c_tol * v.c_law
         && v.departure > 0.1;
     Claim::draft(Check::Simulation, "remaining-friction-viscous", "3.1.1", &format!(
-        "As printed: the friction that remains is viscous, growing with velocity and falling with frequency or amplitude. Holds for v << V = δₓ ω and Γₓ >> 1: the mean friction is -(2/π) μ m g arcsin(v/V), linear with c = 2 μ m g/(π V) only at small v (exact c within 1e-3 of it at F = 0.02 μ m g, Γₓ = 100); at F = 0.9 μ m g the linear law overestimates the drift by {:.0} %. Expected/computed: the drift ratio when the force doubles from 0.02 to 0.04 μ m g (2 for a viscous law, 2^(1/p) for F ~ v^p); tolerance 2 (2 - 2 cos(π b/2)) + 10/Γₓ².",
+        "As printed: the friction that remains is viscous, growing with velocity and falling with frequency or amplitude. Holds for v << V = δₓ ω and Γₓ >> 1: the mean friction is -(2/π) μ m g arcsin(v/V), linear with c = 2 μ m g/(π V) only at small v (exact c within {:.1e} of it at F = 0.02 μ m g, Γₓ = 100: x/sin x - 1 + 10/Γₓ², x = π F/(2 μ m g)); at F = 0.9 μ m g the linear law overestimates the drift by {:.0} %. Expected/computed: the drift ratio when the force doubles from 0.02 to 0.04 μ m g (2 for a viscous law, 2^(1/p) for F ~ v^p); tolerance 2 (2 - 2 cos(π b/2)) + 10/Γₓ².",
+        c_tol,
         100.0 * v.departure
     ))
     .values(expected, v.doubling, tol)
