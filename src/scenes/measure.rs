@@ -180,7 +180,7 @@ pub fn stick_speed(model: &StickModel, cycles: f64, opts: &Options) -> (Measured
         value: r.mean_velocity_mps,
         rhs_evals: r.stats.rhs_evals,
         steps: r.stats.accepted,
-        events: r.hops as u64,
+        events: r.event_count as u64,
         completed,
         note: r.outcome.label(),
     };

@@ -113,6 +113,8 @@ pub struct Booktop {
     pub scene: Scene,
     /// Exact drift of the coin on it (m/s, + down the tilt).
     pub drift_mps: f64,
+    /// Bound on the numerical error of `drift_mps` (m/s, `drift::numerical_error_mps`).
+    pub drift_err_mps: f64,
 }
 
 /// The runs of the chapter's scene; `quick` takes 9 instead of 25 sweep points and 12
@@ -392,12 +394,14 @@ fn booktop_runs(scene: &Scene) -> Booktop {
     let critical = critical_tilt_deg(scene.mu, scene.g_mps2);
     let small = 0.25 * scene.mu.atan().to_degrees();
     let book = booktop(scene, small);
+    let steady = steady_drift(&book);
     Booktop {
         critical_tilt_deg: critical,
         small_tilt_deg: small,
         still_slides: critical < small,
         scene: book,
-        drift_mps: steady_drift(&book).drift_mps,
+        drift_mps: steady.drift_mps,
+        drift_err_mps: steady.err_mps,
     }
 }
 

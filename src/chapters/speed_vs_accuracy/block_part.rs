@@ -3,6 +3,7 @@
 //! [`BlockEvidence`]; the claims on them are in `claims.rs`.
 
 use super::block_scene::BlockScene;
+use super::budget::{rounding_mps, Scales};
 use super::failures::{blows_up, stiff, zeno, StiffOutcome, ZenoOutcome};
 use super::measure::{drift_block_model, drift_mj, window, Measured};
 use super::setup::Setup;
@@ -17,6 +18,10 @@ pub struct BlockEvidence {
     pub reference: Measured,
     /// Integrated Dormand-Prince's drift (m/s) at rtol = atol = 1e-10, 1e-11, 1e-12, 1e-13.
     pub dopri5: [(f64, f64); 4],
+    /// The rounding budgets R (m/s) of the four Dormand-Prince runs (`budget.rs`).
+    pub dopri5_rounding_mps: [f64; 4],
+    /// The rounding budget R (m/s) of the reference.
+    pub reference_rounding_mps: f64,
     /// The plate's peak speed v_p = Gamma g / omega (m/s).
     pub v_p_mps: f64,
     /// The rounding floor of the drift, relative (256 ulps of t per event).
@@ -50,6 +55,15 @@ impl BlockEvidence {
             })
             .unwrap_or(f64::NAN)
     }
+
+    /// The runs at `tol` and at the next decade tol/10, each as (drift m/s, rounding
+    /// budget m/s): the pair the reference check bounds DP5's error with; None when
+    /// `tol` is not one of the check's first three tolerances.
+    pub fn decade_pair(&self, tol: f64) -> Option<((f64, f64), (f64, f64))> {
+        let i = self.dopri5[..3].iter().position(|(t, _)| *t == tol)?;
+        let run = |j: usize| (self.dopri5[j].1, self.dopri5_rounding_mps[j]);
+        Some((run(i), run(i + 1)))
+    }
 }
 
 /// The reference, its convergence study and the ladders.
@@ -63,18 +77,22 @@ pub(super) fn gather(s: &Setup<'_>) -> BlockEvidence {
             control: StepControl::tol(tol, tol),
             ..Options::default()
         };
-        (tol, s.block(&opts, false).value)
+        (tol, s.block(&opts, false))
     };
-    let dopri5 = [dp(1e-10), dp(1e-11), dp(1e-12), dp(1e-13)];
+    let runs = [dp(1e-10), dp(1e-11), dp(1e-12), dp(1e-13)];
+    let dopri5 = runs.map(|(t, m)| (t, m.value));
     let omega = std::f64::consts::TAU * args.frequency_hz;
     let v_p_mps = args.gamma * g / omega; // formula: v_p = Gamma g / omega
+    let (t_a, t_b) = win;
+    let scales = Scales::new(v_p_mps, reference.value, t_b, t_b - t_a, s.scene.period_s());
+    let dopri5_rounding_mps = runs.map(|(_, m)| rounding_mps(&m, &scales));
+    let reference_rounding_mps = rounding_mps(&reference, &scales);
     // The rounding floor of the drift: every event time is located to a few ulps of t
     // (a few hundred ulps covers the locator's bracketing and the closed forms' own
     // rounding), and an event-time error dt shifts the displacement by at most the jump
     // of the relative velocity, |v_block - v_plate| <= 2 v_p with v_p = Gamma g / omega,
     // times dt. Summed over the events and divided by the window, it bounds how far two
     // runs agreeing to within the rounding can differ in drift.
-    let (t_a, t_b) = win;
     let floor_abs = 256.0 * f64::EPSILON * t_b * 2.0 * args.gamma * g / omega
         * reference.events.max(1) as f64
         / (t_b - t_a); // formula: F = 256 eps t_end 2 v_p N_events / T_window
@@ -84,6 +102,8 @@ pub(super) fn gather(s: &Setup<'_>) -> BlockEvidence {
     BlockEvidence {
         reference,
         dopri5,
+        dopri5_rounding_mps,
+        reference_rounding_mps,
         v_p_mps,
         rounding_floor_rel,
         next_decade_rel,

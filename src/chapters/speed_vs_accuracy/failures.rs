@@ -1,7 +1,7 @@
 //! The failure scenes of the chapter: each runs the failing method and the good one.
 
 use super::block_scene::BlockScene;
-use super::measure::{drift_block_model, drift_mj, window};
+use super::measure::{drift_block_model, drift_mj, window, Measured};
 use crate::numerics::hybrid::{Options, Outcome};
 use crate::numerics::ode::{Integrator, Method, OdeError, StepControl};
 use crate::numerics::timestepping::{self as mj, ContactStatus, MjOptions};
@@ -144,6 +144,12 @@ pub struct ZenoOutcome {
     pub drift_sticking_mps: f64,
     /// Drift with Moreau-Jean (m/s), NaN if it did not complete.
     pub drift_mj_mps: f64,
+    /// Drift with Moreau-Jean at half and a quarter of the step (m/s, NaN if a run did not
+    /// complete): with `drift_mj_mps` the estimate of Moreau-Jean's error.
+    pub drift_mj_half_quarter_mps: (f64, f64),
+    /// Drift with the sticking transition at a tenth of its threshold, 0.01 mm/s (m/s,
+    /// NaN if it did not complete): the threshold's effect on the drift.
+    pub drift_sticking_tenth_mps: f64,
 }
 
 /// The Zeno scenes with restitution `e`: (1) a ball (the point-mass block, no bias)
@@ -206,18 +212,24 @@ pub fn zeno(
     let chattering = drift_block_model(&s, &Options::default(), true, 64, transient, cycles);
     let s = scene.with_restitution(e, 1e-4);
     let sticking = drift_block_model(&s, &Options::default(), true, 64, transient, cycles);
-    let mj = drift_mj(&s, mj_steps_per_period, window(&s, transient, cycles));
+    let tenth = scene.with_restitution(e, 1e-5);
+    let sticking_tenth =
+        drift_block_model(&tenth, &Options::default(), true, 64, transient, cycles);
+    let win = window(&s, transient, cycles);
+    let mj = drift_mj(&s, mj_steps_per_period, win);
+    let mj_half = drift_mj(&s, 2 * mj_steps_per_period, win);
+    let mj_quarter = drift_mj(&s, 4 * mj_steps_per_period, win);
+    let value = |m: &Measured| if m.completed { m.value } else { f64::NAN };
     ZenoOutcome {
         ball_zeno_at_s,
         ball_t_inf_s,
         ball_mj_rest_s: rest,
         events_chattering: chattering.events,
         events_sticking: sticking.events,
-        drift_sticking_mps: if sticking.completed {
-            sticking.value
-        } else {
-            f64::NAN
-        },
-        drift_mj_mps: if mj.completed { mj.value } else { f64::NAN },
+        drift_sticking_mps: value(&sticking),
+        drift_mj_mps: value(&mj),
+        drift_mj_half_quarter_mps: (value(&mj_half), value(&mj_quarter)),
+        drift_sticking_tenth_mps: value(&sticking_tenth),
     }
 }
+

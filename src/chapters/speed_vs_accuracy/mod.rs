@@ -12,6 +12,7 @@
 //!   exact simulation: where within 1 %, and how much cheaper.
 
 mod block_part;
+mod budget;
 mod claims;
 mod economy;
 mod evidence;

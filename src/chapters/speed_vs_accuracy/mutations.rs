@@ -25,8 +25,12 @@
 //!   (`stick-methods-moreau-jean-gap-within-estimate`, `soft-contact-richardson-gap`,
 //!   ratio 1 within 0.5): the mutation is the estimate with the wrong order (a factor
 //!   3 off);
+//! - the reference checks (`reference-converged`, `stick-reference-converged`): the
+//!   workbook's self-checks of its references, judged against the runs' own error
+//!   budget (`budget.rs`), so no tolerance of theirs is a printed number; the mutation is
+//!   a wrong reference, off by 1e-6 relative, which the budget must see;
 //! - a tolerance or a step range printed as a setting, not a statement about the model
-//!   (`stick-reference-converged`, `stick-unlocated-events-stall`,
+//!   (`stick-unlocated-events-stall`,
 //!   `stick-dop853-cheaper-at-1e-10`, `stick-no-missed-event`): the mutation reverses
 //!   the inequality (a loose reference, "converges", "DP5 cheaper", the uncertified
 //!   search);
@@ -42,12 +46,12 @@ pub const NO_TEN_PERCENT: &[(&str, &str)] = &[
     ("zeno-ball-moreau-jean-rest", DERIVED),
     ("zeno-plate-resolved-two-ways", DERIVED),
     ("viscous-law-economy", DERIVED),
-    ("reference-converged", SETTING),
+    ("reference-converged", REFERENCE),
     ("reference-convergence-study", OWN),
     ("euler-located-order", ORDER),
     ("moreau-jean-order", ORDER),
     ("unlocated-events-stall", SETTING),
-    ("stick-reference-converged", SETTING),
+    ("stick-reference-converged", REFERENCE),
     ("stick-rk4-located-order", ORDER),
     ("stick-euler-located-order", ORDER),
     ("stick-unlocated-events-stall", SETTING),
@@ -67,6 +71,8 @@ const ORDER: &str = "an integer order of convergence: an order off by 10 % is no
 const RATIO: &str = "a ratio whose tolerance is the estimate's own uncertainty (1 within 0.5): the mutation is the estimate with the wrong order, a factor 3 off";
 /// Why a tolerance printed as a setting has none.
 const SETTING: &str = "a tolerance or step range printed as a setting, not a statement about the model: the mutation reverses the inequality";
+/// Why a reference check has none.
+const REFERENCE: &str = "the workbook's self-check of its reference against the runs' own error budget (rounding, and truncation bounded from the runs at tau and tau/10): no printed number; the mutation is a wrong reference, off by 1e-6 relative";
 /// Why the workbook's own statements have none.
 const OWN: &str = "the workbook's own statement about its methods (no printed number of the document): the mutation reverses it";
 
@@ -103,8 +109,8 @@ impl Falsifiable for Document {
 const EDITS: [DocEdit<Statements>; 27] = [
     (
         "reference-converged",
-        "checked against DP5 at 1e-12 -> at 1e-4",
-        |d| d.reference_tol = 1e-4,
+        "a wrong reference: the closed-form drift off by 1e-6 relative",
+        |d| d.reference_offset_rel = 1e-6,
     ),
     (
         "reference-convergence-study",
@@ -163,8 +169,8 @@ const EDITS: [DocEdit<Statements>; 27] = [
     ),
     (
         "stick-reference-converged",
-        "checked against DP5 at 1e-11, 1e-12 -> at 1e-4",
-        |d| d.reference_tol = 1e-4,
+        "a wrong reference: DP5's mean speed at 1e-13 off by 1e-6 relative",
+        |d| d.reference_offset_rel = 1e-6,
     ),
     ("stick-rk4-located-order", "order 4 -> 3", |d| {
         d.rk4_order = 3.0

@@ -2,6 +2,7 @@
 //! chapter's sections), the claims, the tables and the figures.
 
 use super::claims::{self, stick_euler_observed, stick_rk4_observed};
+use super::budget::first_order_error;
 use super::evidence::Evidence;
 use super::failures::Failure;
 use super::statements::Statements;
@@ -56,6 +57,20 @@ fn block_results(ev: &Evidence, r: &mut ChapterReport) {
     r.result(
         "block_drift_reference_floor_rel",
         json!({"rounding": b.rounding_floor_rel, "next_decade": b.next_decade_rel, "dopri5_1e-13": rel(3)}),
+    );
+    let z = &ev.zeno.outcome;
+    r.result(
+        "reference_check_budgets_mps",
+        json!({
+            "block_rounding_reference": b.reference_rounding_mps,
+            "block_rounding_dopri5_1e-12": b.dopri5_rounding_mps[2],
+            "block_rounding_dopri5_1e-13": b.dopri5_rounding_mps[3],
+            "block_difference_1e-12_1e-13": (b.dopri5[2].1 - b.dopri5[3].1).abs(),
+            "stick_rounding_1e-11_1e-12_1e-13": ev.stick.rounding_11_12_13_mps,
+            "stick_difference_1e-11_1e-12": (ev.stick.dopri5_11_12.0 - ev.stick.dopri5_11_12.1).abs(),
+            "zeno_plate_mj_error_estimate": first_order_error((z.drift_mj_mps, z.drift_mj_half_quarter_mps.0, z.drift_mj_half_quarter_mps.1)),
+            "zeno_plate_threshold_difference": (z.drift_sticking_mps - z.drift_sticking_tenth_mps).abs(),
+        }),
     );
     // Observed slopes on the block drift, reported (results) but not claimed as orders:
     // the signed error is a sum of terms of both signs whose balance shifts with h (it

@@ -7,6 +7,9 @@
 pub struct Statements {
     /// The reference is checked against Dormand-Prince at this tolerance (1e-12).
     pub reference_tol: f64,
+    /// The references as the workbook computes them, shifted by this relative amount
+    /// (0): the mutations' wrong reference (1e-6) that the reference checks must see.
+    pub reference_offset_rel: f64,
     /// Errors shrink as the tolerance tightens (`true`) or grow (`false`).
     pub tightening_helps: bool,
     /// Explicit Euler's and Moreau-Jean's order on the block: at least this (1).
@@ -47,6 +50,7 @@ impl Statements {
     /// The statements as printed (or as derived by the workbook).
     pub const PRINTED: Statements = Statements {
         reference_tol: 1e-12,
+        reference_offset_rel: 0.0,
         tightening_helps: true,
         first_order: 1.0,
         rk4_order: 4.0,

@@ -2,6 +2,7 @@
 //! reference check, DOP853 against DP5 and the simulator's speed in drive cycles per
 //! second, gathered once into [`StickEvidence`]; the claims on them are in `claims.rs`.
 
+use super::budget::{rounding_mps, Scales};
 use super::measure::{stick_speed, Measured};
 use super::work_precision::{ladder, measure, rhs_evals_at, Solver, WpPoint};
 use crate::ladder::{timed, Timing};
@@ -19,6 +20,8 @@ pub struct StickEvidence {
     pub reference_mps: f64,
     /// DP5's mean speed at 1e-11 and 1e-12 (m/s).
     pub dopri5_11_12: (f64, f64),
+    /// The rounding budgets R (m/s, `budget.rs`) of the runs at 1e-11, 1e-12 and 1e-13.
+    pub rounding_11_12_13_mps: [f64; 3],
     /// The ladder.
     pub points: Vec<WpPoint>,
     /// Why each run of the ladder that did not complete broke down: (index, reason).
@@ -39,23 +42,6 @@ pub struct StickEvidence {
     pub cycles_per_second: (f64, f64),
 }
 
-impl StickEvidence {
-    /// DP5's mean speed (m/s) at rtol = atol = `tol`: one of the reference check's runs or
-    /// a rung of the ladder; NaN when neither ran at `tol`.
-    pub fn dopri5_at(&self, tol: f64) -> f64 {
-        if tol == 1e-11 {
-            self.dopri5_11_12.0
-        } else if tol == 1e-12 {
-            self.dopri5_11_12.1
-        } else {
-            self.points
-                .iter()
-                .find(|p| p.setting.label() == "dopri5-located" && p.setting.knob() == tol)
-                .map_or(f64::NAN, |p| p.value)
-        }
-    }
-}
-
 /// Runs the stick ladder on the authors' scene (section 4; g = `g_mps2`) over 10
 /// (`quick`) or 50 drive periods.
 pub fn gather(g_mps2: f64, quick: bool) -> StickEvidence {
@@ -68,10 +54,16 @@ pub fn gather(g_mps2: f64, quick: bool) -> StickEvidence {
             control: StepControl::tol(tol, tol),
             ..Options::default()
         };
-        speed(&opts).0.value
+        speed(&opts).0
     };
-    let reference_mps = dp(1e-13);
-    let dopri5_11_12 = (dp(1e-11), dp(1e-12));
+    let runs = [dp(1e-11), dp(1e-12), dp(1e-13)];
+    let reference_mps = runs[2].value;
+    let dopri5_11_12 = (runs[0].value, runs[1].value);
+    let plate = &model.p.plate;
+    let v_p_mps = plate.amplitude_m * plate.omega_rad_s; // formula: v_p = delta omega
+    let t_end_s = cycles * period_s;
+    let scales = Scales::new(v_p_mps, reference_mps, t_end_s, t_end_s, period_s);
+    let rounding_11_12_13_mps = runs.map(|m| rounding_mps(&m, &scales));
     let (steps, tols): (Vec<u32>, Vec<f64>) = if quick {
         (vec![32, 128, 512], vec![1e-4, 1e-7, 1e-10])
     } else {
@@ -111,6 +103,7 @@ pub fn gather(g_mps2: f64, quick: bool) -> StickEvidence {
     StickEvidence {
         reference_mps,
         dopri5_11_12,
+        rounding_11_12_13_mps,
         points,
         broken,
         steps,
