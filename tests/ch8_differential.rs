@@ -3,12 +3,20 @@
 //! within the time-stepper's own error estimate, or the event-driven run must say it
 //! cannot vouch for its answer (`invalid`, `painleve-unresolved`, `zeno`).
 //!
-//! The time-stepper's estimate: it is first order, so from three steps `h, h/2, h/4`
-//! the differences `d1 = x(h) - x(h/2)`, `d2 = x(h/2) - x(h/4)` halve (`d1/d2 ~ 2`) and
-//! the Richardson value `2 x(h/4) - x(h/2)` is within about `|d2|` of the limit. Where
-//! `d1/d2` is not within [1.4, 2.8] (impacts quantized to the step make the error
-//! erratic), the estimate is the spread of the last three values and the reference the
-//! finest. The ladder is `h = T/800 ... T/12800`.
+//! The time-stepper's estimate ([`mj_estimate`]): the ladder of its answers at the steps
+//! `T/800, T/1600, ...` is in its asymptotic range when its differences shrink at an
+//! observed order of at least 1/2; then the differences still to come sum to at most a
+//! geometric tail (an observed order above 1 is not trusted: Moreau-Jean is first order).
+//! Where that tail is wider than [`MJ_CONCLUSIVE_M`], the same estimate of the
+//! ladder's Richardson sequence `2 x(h/2) - x(h)`, which has the same limit, may be
+//! conclusive (a clean first-order ladder whose pre-asymptotic range is long).
+//!
+//! Where the ladder is not conclusive at the end (hopping gaits, issue 29: impacts
+//! quantized to the step make its error erratic, and the gait amplifies it), the two are
+//! compared at the latest whole drive period at which the ladder is conclusive (chosen from
+//! Moreau-Jean's ladder alone, never from the gap), and the verdict states why the end
+//! is out of reach: how far an event-driven run started `PERTURB_RAD` away moves by that
+//! period and by the end ([`Sensitivity`]).
 //!
 //! One more scene per run has a rod light enough for the composite (`alpha >= 1e9`):
 //! there Moreau-Jean is no reference (its steps would have to resolve the rod's own time
@@ -31,10 +39,14 @@ use locomotion_workbook::numerics::hybrid::Options;
 use locomotion_workbook::numerics::ode::{Method, StepControl};
 use locomotion_workbook::physics::stick::StickParams;
 use locomotion_workbook::physics::stick_inertia::run::{
-    initial_state, run_from_rest, InertiaOutcome, InertiaRun,
+    initial_state, run_from_rest, simulate_inertia, InertiaOutcome, InertiaRun,
 };
-use locomotion_workbook::physics::stick_inertia::timestepping::{mj_run, MjSelection};
-use locomotion_workbook::physics::stick_inertia::{ImpactLaw, InertiaModel, InertiaParams, State};
+use locomotion_workbook::physics::stick_inertia::timestepping::{
+    mj_run, mj_run_observed, MjSelection,
+};
+use locomotion_workbook::physics::stick_inertia::{
+    ImpactLaw, InertiaModel, InertiaParams, State, TH, XC,
+};
 
 /// Chapter 8's seed (each chapter's random tests draw from their own);
 /// `WORKBOOK_FUZZ_SEED` replaces it, to try fresh scenes.
@@ -49,8 +61,23 @@ const MJ_STEPS: f64 = 800.0;
 const MJ_CONCLUSIVE_M: f64 = 1e-3;
 /// Finest Moreau-Jean step of the CI run: `T/(800 2^CI_MAX_LEVEL)`.
 const CI_MAX_LEVEL: u32 = 10;
-/// Finest Moreau-Jean step of the long run.
-const LONG_MAX_LEVEL: u32 = 10;
+/// Finest Moreau-Jean step of the long run (`T/3276800`: two levels past the CI's
+/// turned 4 of the 150 long-run scenes from inconclusive to agreeing at the end).
+const LONG_MAX_LEVEL: u32 = 12;
+/// The perturbation of theta(0) (rad) whose effect measures how well-conditioned C's
+/// displacement is: ten times the event-driven run's rtol on an angle of order 1, so
+/// the runs' own tolerance does not drown it.
+const PERTURB_RAD: f64 = 1e-9;
+/// Roache's factor of safety for a convergence study whose observed order is not
+/// verified (P. J. Roache, Verification and Validation in Computational Science and
+/// Engineering, 1998, the grid convergence index: 3, and 1.25 once three or more grids
+/// confirm the order): a gap beyond Moreau-Jean's estimate but within `FS` times it is
+/// not called a disagreement but an inconclusive scene ([`Verdict::Unsure`]): the
+/// estimate is not trusted that far. (On the long run's 23 hopping scenes, 1 of 410
+/// conclusive period samples missed the event-driven answer by 2.6 times its estimate,
+/// long-run scene 91 at 0.95 s, on a plateau of the ladder that finer steps leave; with
+/// two levels fewer, two more by 1.6 and 1.9 times.)
+const FS: f64 = 3.0;
 /// At most this share of the scenes may be inconclusive (Moreau-Jean not converged).
 const MAX_INCONCLUSIVE: f64 = 0.25;
 /// The event-driven runs' rtol and atol.
@@ -96,18 +123,46 @@ fn draw(rng: &mut Rng) -> InertiaParams {
 #[derive(Debug)]
 #[allow(dead_code)]
 enum Verdict {
-    /// Within the time-stepper's estimate plus the event-driven run's tolerance: (gap,
-    /// bound) in m, and whether the time-stepper's preference for separation gives another
-    /// answer (the contact problem had two solutions: the rule decides, not the
-    /// integration).
+    /// Within the time-stepper's estimate plus the event-driven run's tolerance at the
+    /// end: (gap, bound) in m, and whether the time-stepper's preference for separation
+    /// gives another answer (the contact problem had two solutions: the rule decides, not
+    /// the integration).
     Agree(f64, f64, bool),
+    /// Moreau-Jean conclusive only up to a whole drive period before the end: the two
+    /// agree there (time in s, gap and bound in m), and the measured reason the end is out
+    /// of the ladder's reach.
+    AgreeUntil {
+        t_s: f64,
+        gap_m: f64,
+        bound_m: f64,
+        why: Sensitivity,
+    },
+    /// Outside Moreau-Jean's estimate but within [`FS`] times it (the comparison).
+    Unsure(String),
     /// The event-driven run said it cannot vouch for its answer (its outcome).
     SaysInvalid(String),
-    /// Moreau-Jean not converged: its ladder never reached its asymptotic range up to
-    /// the finest step (the ladder), or a step had no contact solution.
-    MjNotConverged(Vec<f64>),
+    /// Moreau-Jean not converged at any whole period: the ladder at the end (m), or
+    /// shorter where a step had no contact solution, and the measured sensitivity.
+    MjNotConverged(Vec<f64>, Sensitivity),
     /// A disagreement (the description).
     Disagree(String),
+}
+
+/// How well-conditioned C's displacement is: the event-driven run started from
+/// `theta(0) + PERTURB_RAD` against the run, at the whole drive periods and the end.
+#[derive(Debug)]
+#[allow(dead_code)]
+struct Sensitivity {
+    /// Largest change of C's displacement up to the comparison's period (m; 0: none).
+    upto_m: f64,
+    /// Its change at the end (m).
+    end_m: f64,
+    /// `end_m / upto_m`: how much a perturbation grows from the comparison to the end
+    /// (a Lyapunov-type factor; infinite when there was no comparison).
+    growth: f64,
+    /// Impacts of the run and of the perturbed run (a different count: a grazing
+    /// landing gained or lost).
+    impacts: (usize, usize),
 }
 
 /// Does any impact of `run` reverse the slip (the laws differ there)? The slip after
@@ -129,6 +184,38 @@ fn event_driven(md: &InertiaModel, dur: f64) -> (InertiaRun, f64) {
     (run, d)
 }
 
+/// Whole drive periods strictly before `t_s` (the samples before the end).
+fn whole_periods(t_s: f64, period_s: f64) -> usize {
+    ((t_s / period_s) * (1.0 - 1e-12)).floor() as usize
+}
+
+/// C's displacement (m) in the event-driven run of `md` from rest, its angle moved by
+/// `dth_rad`, over `dur` at `rtol`: at every whole drive period before the end (`NaN`
+/// where no trace sample fell on it) and at the end; with the run.
+fn event_driven_at(md: &InertiaModel, dur: f64, rtol: f64, dth_rad: f64) -> (InertiaRun, Vec<f64>) {
+    let th = md.p.static_angle().unwrap_or(md.p.base.theta0_rad);
+    let mut y0 = initial_state(md, 0.0, th);
+    y0[TH] += dth_rad;
+    let o = Options {
+        control: StepControl::tol(rtol, rtol),
+        ..opts()
+    };
+    let tp = md.period_s;
+    let run = simulate_inertia(md, 0.0, y0, dur, &o, tp);
+    let n = whole_periods(run.end_time_s, tp);
+    let mut x: Vec<f64> = (1..=n)
+        .map(|j| {
+            let t = j as f64 * tp;
+            run.trace
+                .iter()
+                .find(|s| (s.t_s - t).abs() <= 1e-9 * tp)
+                .map_or(f64::NAN, |s| s.y[XC] - y0[XC])
+        })
+        .collect();
+    x.push(run.mean_velocity_mps * run.end_time_s);
+    (run, x)
+}
+
 /// A Painleve event the run reports must be there, at the same time, when rtol is 100
 /// times tighter (a rounding artefact would move or vanish); `Some(why)` if not.
 fn painleve_persists(md: &InertiaModel, dur: f64, run: &InertiaRun) -> Option<String> {
@@ -147,7 +234,7 @@ fn painleve_persists(md: &InertiaModel, dur: f64, run: &InertiaRun) -> Option<St
     }
 }
 
-/// Moreau-Jean's estimate from the ladder `x` (C's displacement at `h_0, h_0/2, ...`):
+/// The geometric-tail estimate of a ladder `x` (one output at `h_0, h_0/2, ...`):
 /// `Some((reference, estimate))` once the ladder is in its asymptotic range, `None`
 /// before.
 ///
@@ -162,11 +249,14 @@ fn painleve_persists(md: &InertiaModel, dur: f64, run: &InertiaRun) -> Option<St
 /// least 1/2 (`rho <= 2^-1/2`) and the last difference is not larger than both of the
 /// two before it (a growing difference means the step has only begun to resolve something:
 /// scene 95 of the long run, whose last three differences are 6.0e-5, 4.7e-5 and
-/// 9.6e-5 m on the way to the event-driven answer); then the differences still to come sum to at most the
-/// geometric tail `D(n) rho/(1 - rho)`, the estimate, and the reference is the finest
-/// value. For a clean first-order ladder (`rho = 1/2`) the estimate is `D(n)`.
-fn mj_estimate(x: &[f64]) -> Option<(f64, f64)> {
-    let n = x.len() - 1;
+/// 9.6e-5 m on the way to the event-driven answer); then the differences still to come
+/// sum to at most the geometric tail `D(n) rho/(1 - rho)`, the estimate, and the
+/// reference is the finest value. An observed order above 1 is a pre-asymptotic drop,
+/// not the method's (first) order: `rho` counts as at least 1/2, so the estimate is at
+/// least `D(n)` (long run scene 27 at 0.75 s: a drop from 1.7e-3 to 1.1e-4 m gave
+/// `rho = 0.40` and 7.8e-5 m, while the finest value was still 9.2e-5 m off).
+fn tail_estimate(x: &[f64]) -> Option<(f64, f64)> {
+    let n = x.len().checked_sub(1)?;
     if n < 6 {
         return None;
     }
@@ -182,14 +272,50 @@ fn mj_estimate(x: &[f64]) -> Option<(f64, f64)> {
     if !order_half || growing {
         return None; // observed order below 1/2, no differences at all, or the last one grew
     }
+    let rho = rho.max(0.5); // formula: observed order at most 1 (first-order method)
     Some((x[n], big(n) * rho / (1.0 - rho))) // formula: sum_{k>n} |d_k| <= D(n) rho/(1 - rho)
 }
 
-/// Runs Moreau-Jean (the stuck contact persisting, as in the event-driven rules) down
-/// the ladder `T/800, T/1600, ...` to `T/(800 2^max_level)` and stops at the first level
-/// whose conclusive estimate covers the event-driven `d_ev` (within `tol_ev`); otherwise
-/// the finest level's estimate, or `Err(ladder)` when the finest level is not in the
-/// asymptotic range or its estimate is wider than [`MJ_CONCLUSIVE_M`].
+/// Moreau-Jean's conclusive answer from the ladder `x`: the plain ladder's tail estimate
+/// ([`tail_estimate`]) when it is at most [`MJ_CONCLUSIVE_M`], else that of its
+/// Richardson sequence `R_k = 2 x_k - x_{k-1}` (the same limit; where the ladder is a
+/// clean first-order one whose pre-asymptotic range is long, e.g. long-run scene 64,
+/// whose differences halve from 1.3e-2 m to 2.6e-4 m at `T/819200`, `R` settles
+/// within 2.6e-5 m); `None` when neither is conclusive. The plain ladder comes first:
+/// the choice never looks at the event-driven answer.
+fn mj_estimate(x: &[f64]) -> Option<(f64, f64)> {
+    let conclusive = |e: Option<(f64, f64)>| e.filter(|&(_, est)| est <= MJ_CONCLUSIVE_M);
+    conclusive(tail_estimate(x)).or_else(|| {
+        let r: Vec<f64> = x.windows(2).map(|w| 2.0 * w[1] - w[0]).collect(); // formula: R_k = 2 x_k - x_{k-1}
+        conclusive(tail_estimate(&r))
+    })
+}
+
+/// One level of Moreau-Jean's ladder (the stuck contact persisting, as in the
+/// event-driven rules), `steps` steps per drive period over `t`: C's displacement (m) at
+/// every whole period before `t` and at `t`; `None` if a step had no contact solution.
+fn mj_level(md: &InertiaModel, y0: &State, t: f64, steps: u64) -> Option<Vec<f64>> {
+    let n = whole_periods(t, md.period_s);
+    let mut x = Vec::with_capacity(n + 1);
+    let h = md.period_s / steps as f64;
+    let r = mj_run_observed(md, y0, t, h, MjSelection::StickPersists, |k, _, d| {
+        if k % steps == 0 && (k / steps) as usize <= n {
+            x.push(d);
+        }
+    })?;
+    x.push(r.mean_velocity_mps * t);
+    Some(x)
+}
+
+/// The ladder's column at sample `j` (one output at every level).
+fn column(ladder: &[Vec<f64>], j: usize) -> Vec<f64> {
+    ladder.iter().map(|l| l[j]).collect()
+}
+
+/// Runs Moreau-Jean down the ladder `T/800, T/1600, ...` to `T/(800 2^max_level)` and
+/// stops at the first level whose conclusive estimate of the end covers the event-driven
+/// `d_ev` (within `tol_ev`); otherwise the finest level's conclusive estimate, or
+/// `Err(ladder)` (every level's samples, [`mj_level`]) when the end is not conclusive.
 fn mj_answer(
     md: &InertiaModel,
     y0: &State,
@@ -197,23 +323,76 @@ fn mj_answer(
     d_ev: f64,
     tol_ev: f64,
     max_level: u32,
-) -> Result<(f64, f64, f64), Vec<f64>> {
-    let mut x = Vec::new();
-    let h0 = md.period_s / MJ_STEPS;
+) -> Result<(f64, f64, f64), Vec<Vec<f64>>> {
+    let mut ladder = Vec::new();
     for k in 0..=max_level {
-        let h = h0 / f64::from(1u32 << k);
-        match mj_run(md, y0, t, h, MjSelection::StickPersists) {
-            Some(r) => x.push(r.mean_velocity_mps * t),
-            None => return Err(x),
+        let steps = (MJ_STEPS as u64) << k;
+        match mj_level(md, y0, t, steps) {
+            Some(x) => ladder.push(x),
+            None => return Err(ladder),
         }
-        if let Some((reference, est)) = mj_estimate(&x) {
+        let end = column(&ladder, ladder[0].len() - 1);
+        if let Some((reference, est)) = mj_estimate(&end) {
             let covers = (d_ev - reference).abs() <= est + tol_ev;
-            if est <= MJ_CONCLUSIVE_M && (covers || k == max_level) {
-                return Ok((reference, est, h));
+            if covers || k == max_level {
+                return Ok((reference, est, md.period_s / steps as f64));
             }
         }
     }
-    Err(x)
+    Err(ladder)
+}
+
+/// The latest whole drive period at which the ladder is conclusive and the event-driven
+/// sample `x_ev` exists: `(sample index, reference, estimate)`. Chosen from the ladder
+/// alone, never from the gap.
+fn latest_conclusive(ladder: &[Vec<f64>], x_ev: &[f64]) -> Option<(usize, f64, f64)> {
+    let n = ladder.first()?.len();
+    (0..n - 1).rev().find_map(|j| {
+        let (r, e) = x_ev[j]
+            .is_finite()
+            .then(|| mj_estimate(&column(ladder, j)))??;
+        Some((j, r, e))
+    })
+}
+
+/// The measured sensitivity of C's displacement `x_ev` (the run `run` of `md` over
+/// `dur`): an event-driven run from `theta(0) + PERTURB_RAD`, compared up to sample
+/// `upto` (none: `None`) and at the end.
+fn sensitivity(
+    md: &InertiaModel,
+    dur: f64,
+    run: &InertiaRun,
+    x_ev: &[f64],
+    upto: Option<usize>,
+) -> Sensitivity {
+    let (pr, xp) = event_driven_at(md, dur, RTOL, PERTURB_RAD);
+    let diff = |j: usize| xp.get(j).map_or(f64::NAN, |x| (x - x_ev[j]).abs());
+    let upto_m = upto.map_or(0.0, |u| (0..=u).map(diff).fold(0.0, f64::max));
+    let end_m = if xp.len() == x_ev.len() {
+        diff(x_ev.len() - 1)
+    } else {
+        (xp[xp.len() - 1] - x_ev[x_ev.len() - 1]).abs() // a perturbed run that ended elsewhere
+    };
+    Sensitivity {
+        upto_m,
+        end_m,
+        growth: end_m / upto_m, // formula: growth = |dx(end)| / max_{t <= t*} |dx(t)|
+        impacts: (run.impact_count, pr.impact_count),
+    }
+}
+
+/// The event-driven run's own error at `t`: its budget `rtol (L + delta)(1 + t/T)`
+/// (positional tolerance per drive cycle) or, where `gap` exceeds `est` plus the budget,
+/// the larger of it and how much the answer moves at rtol/100 (`tight()`, run only then:
+/// the verdict is the same as if it were always run).
+fn ev_tolerance(md: &InertiaModel, t: f64, gap: f64, est: f64, tight: impl FnOnce() -> f64) -> f64 {
+    let b = &md.p.base;
+    let budget = RTOL * (b.length_m + b.plate.amplitude_m) * (1.0 + t / md.period_s); // formula: rtol (L + delta)(1 + t/T)
+    if gap <= est + budget {
+        budget
+    } else {
+        budget.max(tight())
+    }
 }
 
 /// Compares the event-driven model of `p_ev` with Moreau-Jean on `p` over `dur` (the
@@ -223,7 +402,8 @@ fn compare(p: &InertiaParams, p_ev: &InertiaParams, dur: f64, max_level: u32) ->
     md.impact_law = ImpactLaw::VelocityCoulomb;
     let mut md_ev = InertiaModel::new(*p_ev);
     md_ev.impact_law = ImpactLaw::VelocityCoulomb;
-    let (run, d_ev) = event_driven(&md_ev, dur);
+    let (run, x_ev) = event_driven_at(&md_ev, dur, RTOL, 0.0);
+    let d_ev = x_ev[x_ev.len() - 1];
     if !run.bridges.is_empty() {
         eprintln!("  Moreau-Jean bridges: {:?}", run.bridges);
     }
@@ -238,21 +418,23 @@ fn compare(p: &InertiaParams, p_ev: &InertiaParams, dur: f64, max_level: u32) ->
     if !d_ev.is_finite() {
         return Verdict::Disagree(format!("non-finite displacement {d_ev}"));
     }
-    // the event-driven run's own tolerance: its positional tolerance rtol (L + delta)
-    // per drive cycle (an error budget that grows with the cycles)
-    let b = &p.base;
-    let tol_ev = RTOL * (b.length_m + b.plate.amplitude_m) * (1.0 + t / md.period_s); // formula: rtol (L + delta)(1 + t/T)
-    let y0 = initial_state(&md, 0.0, p.static_angle().unwrap_or(b.theta0_rad));
+    let tol_ev = ev_tolerance(&md_ev, t, 0.0, 0.0, || 0.0); // the budget
+    let y0 = initial_state(&md, 0.0, p.static_angle().unwrap_or(p.base.theta0_rad));
     let (reference, est, h) = match mj_answer(&md, &y0, t, d_ev, tol_ev, max_level) {
         Ok(a) => a,
-        Err(ladder) => return Verdict::MjNotConverged(ladder),
+        Err(ladder) => return until_verdict(&md_ev, dur, &run, &x_ev, &ladder),
     };
     let gap = (d_ev - reference).abs();
+    let tol_ev = ev_tolerance(&md_ev, t, gap, est, || {
+        let (_, tight) = event_driven_at(&md_ev, dur, RTOL / 100.0, 0.0);
+        (tight[tight.len() - 1] - d_ev).abs()
+    });
     if gap > est + tol_ev {
-        return Verdict::Disagree(format!(
+        let w = format!(
             "velocity-Coulomb law: event-driven {d_ev:.9} m, Moreau-Jean {reference:.9} m (estimate {est:.2e} at h = T/{:.0})",
             md.period_s / h
-        ));
+        );
+        return beyond(gap, est, tol_ev, w);
     }
     // the time-stepper's own preference (separation wherever consistent) at the same step
     let open = mj_run(&md, &y0, t, h, MjSelection::FirstOpen);
@@ -270,6 +452,54 @@ fn compare(p: &InertiaParams, p_ev: &InertiaParams, dur: f64, max_level: u32) ->
         ));
     }
     Verdict::Agree(gap, est + tol_ev, rule_dependent)
+}
+
+/// A gap past Moreau-Jean's estimate `est` plus the event-driven tolerance: a
+/// disagreement past [`FS`] times the estimate (or a NaN gap), else unsure (`what`
+/// describes the comparison).
+fn beyond(gap: f64, est: f64, tol_ev: f64, what: String) -> Verdict {
+    if gap.is_nan() || gap > FS * est + tol_ev {
+        Verdict::Disagree(what)
+    } else {
+        Verdict::Unsure(what)
+    }
+}
+
+/// Where Moreau-Jean's ladder is not conclusive at the end: the comparison at the latest
+/// whole drive period at which it is ([`latest_conclusive`]), with the measured reason
+/// the end is out of reach ([`sensitivity`]); `MjNotConverged` when no period is
+/// conclusive. (The Darboux-Keller and rule checks need the end; they are not made here.)
+fn until_verdict(
+    md_ev: &InertiaModel,
+    dur: f64,
+    run: &InertiaRun,
+    x_ev: &[f64],
+    ladder: &[Vec<f64>],
+) -> Verdict {
+    let Some((j, reference, est)) = latest_conclusive(ladder, x_ev) else {
+        let end = ladder.first().map_or(0, |l| l.len() - 1);
+        let why = sensitivity(md_ev, dur, run, x_ev, None);
+        return Verdict::MjNotConverged(column(ladder, end), why);
+    };
+    let t = (j + 1) as f64 * md_ev.period_s;
+    let gap = (x_ev[j] - reference).abs();
+    let tol_ev = ev_tolerance(md_ev, t, gap, est, || {
+        let (_, tight) = event_driven_at(md_ev, dur, RTOL / 100.0, 0.0);
+        tight.get(j).map_or(f64::INFINITY, |x| (x - x_ev[j]).abs())
+    });
+    if gap.is_nan() || gap > est + tol_ev {
+        let w = format!(
+            "at t = {t:.4} s (Moreau-Jean conclusive up to there): event-driven {:.9} m, Moreau-Jean {reference:.9} m (estimate {est:.2e})",
+            x_ev[j]
+        );
+        return beyond(gap, est, tol_ev, w);
+    }
+    Verdict::AgreeUntil {
+        t_s: t,
+        gap_m: gap,
+        bound_m: est + tol_ev,
+        why: sensitivity(md_ev, dur, run, x_ev, Some(j)),
+    }
 }
 
 /// A light rod past the composite's switch (`alpha >= 1e9`, 1 kg tip): the composite
@@ -336,6 +566,7 @@ fn differential(n: usize, dur: f64, max_level: u32) {
     eprintln!("ch8 differential: seed {seed} (WORKBOOK_FUZZ_SEED to change)");
     let mut rng = Rng(seed.max(1));
     let (mut agree, mut said, mut inconclusive, mut rule, mut wrong) = (0, 0, 0, 0, Vec::new());
+    let (mut until, mut compliant) = (0, (0, 0));
     for i in 0..n {
         let p = draw(&mut rng);
         if only.is_some_and(|o| o != i) {
@@ -347,9 +578,20 @@ fn differential(n: usize, dur: f64, max_level: u32) {
             Verdict::Agree(_, _, r) => {
                 agree += 1;
                 rule += usize::from(r);
+                if r {
+                    // which solution a stiff compliant contact takes there
+                    for c in compliant_check(&p, dur) {
+                        compliant.0 += usize::from(compliant_follows_rules(&c));
+                        compliant.1 += 1;
+                        if !compliant_follows_rules(&c) {
+                            wrong.push(format!("scene {i}: a stiff compliant contact leaves the stuck foot elsewhere than the rules: (t_a, t_r, t_c, same kind) = {c:?}"));
+                        }
+                    }
+                }
             }
+            Verdict::AgreeUntil { .. } => until += 1,
             Verdict::SaysInvalid(_) => said += 1,
-            Verdict::MjNotConverged(..) => inconclusive += 1,
+            Verdict::MjNotConverged(..) | Verdict::Unsure(_) => inconclusive += 1,
             Verdict::Disagree(w) => wrong.push(format!("scene {i} {p:?}: {w}")),
         }
     }
@@ -366,15 +608,19 @@ fn differential(n: usize, dur: f64, max_level: u32) {
     }
     let m = if only.is_some() { 1 } else { n };
     eprintln!(
-        "ch8 differential: {m} scenes, {agree} agree ({rule} of them where Moreau-Jean preferring separation differs: two solutions), {said} say invalid, {inconclusive} Moreau-Jean not converged, {} disagree",
+        "ch8 differential: {m} scenes, {agree} agree at the end ({rule} of them where Moreau-Jean preferring separation differs: two solutions), {until} agree up to the latest period Moreau-Jean is conclusive at (sensitivity measured), {said} say invalid, {inconclusive} inconclusive (Moreau-Jean not converged at any period, or the gap within {FS} times its estimate), {} disagree",
         wrong.len()
+    );
+    eprintln!(
+        "two-solution pivots of those scenes: a stiff compliant contact (K = 1e10 N/m) ends the stuck phase where the rules do at {} of {}",
+        compliant.0, compliant.1
     );
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
     assert!(
         inconclusive as f64 <= MAX_INCONCLUSIVE * m as f64,
         "{inconclusive} of {m} scenes inconclusive (Moreau-Jean not converged): at most {MAX_INCONCLUSIVE} of them may be"
     );
-    assert!(agree > 0 || only.is_some());
+    assert!(agree + until > 0 || only.is_some());
 }
 
 #[test]
@@ -400,7 +646,7 @@ fn a_perturbed_event_driven_model_fails_the_comparison() {
                 caught += 1;
                 conclusive += 1;
             }
-            Verdict::Agree(..) => conclusive += 1,
+            Verdict::Agree(..) | Verdict::AgreeUntil { .. } => conclusive += 1,
             _ => {}
         }
     }
@@ -449,8 +695,12 @@ fn chatter_against_moreau_jean(j: u32, max_level: u32) -> (f64, f64, f64, usize)
     let t = run.end_time_s;
     let tol_ev = RTOL * (b.length_m + b.plate.amplitude_m) * (1.0 + t / md.period_s); // formula: rtol (L + delta)(1 + t/T)
     let y0 = initial_state(&md, 0.0, p.static_angle().unwrap_or(b.theta0_rad));
-    let (reference, est, h) = mj_answer(&md, &y0, t, d_ev, tol_ev, max_level)
-        .unwrap_or_else(|x| panic!("Moreau-Jean not converged: {x:?}"));
+    let (reference, est, h) = mj_answer(&md, &y0, t, d_ev, tol_ev, max_level).unwrap_or_else(|x| {
+        panic!(
+            "Moreau-Jean not converged: {:?}",
+            x.iter().map(|l| l[l.len() - 1]).collect::<Vec<_>>()
+        )
+    });
     eprintln!(
         "map scene mu = {:.4}: event-driven {d_ev:.9} m ({} bridges), Moreau-Jean {reference:.9} m (estimate {est:.2e} at h = T/{:.0})",
         b.mu,
@@ -471,6 +721,105 @@ fn chattering_map_runs_agree_with_moreau_jean() {
         assert!(
             (d_ev - reference).abs() <= tol,
             "map scene j = {j}: event-driven {d_ev} m, Moreau-Jean {reference} m, tolerance {tol:.2e}"
+        );
+    }
+}
+
+/// Stiffnesses of the compliant contact's ladder (N/m): the check reads the stiffest.
+const COMPLIANT_K: [f64; 6] = [1e5, 1e6, 1e7, 1e8, 1e9, 1e10];
+/// Trace interval of the event-driven run the compliant check reads (s).
+const COMPLIANT_DT_S: f64 = 2e-6;
+
+/// Which of the two solutions a stiff compliant contact takes (issue 29), on every
+/// pivot of the event-driven run of `p` over `dur` (trace every [`COMPLIANT_DT_S`]) that
+/// ends at `t_r` (the cone's edge or zero normal force) after lift-off has been
+/// consistent since `t_a < t_r` (the free normal acceleration positive while the pivot
+/// still pushes: the second solution, which Moreau-Jean's first-open choice takes).
+/// From the pivot state 0.1 ms before `t_a` a Kelvin-Voigt normal contact of growing
+/// stiffness ([`COMPLIANT_K`]) ends its stuck phase at `t_c(K)`. Returns, per such
+/// pivot, `(t_a, t_r, t_c at the stiffest K, the compliant end is of the rules' kind)`.
+fn compliant_check(p: &InertiaParams, dur: f64) -> Vec<(f64, f64, f64, bool)> {
+    use locomotion_workbook::physics::stick_inertia::compliant::{
+        free_normal_acceleration, pinned_lift_off, pivot_force,
+    };
+    use locomotion_workbook::physics::stick_inertia::Mode;
+    let mut md = InertiaModel::new(*p);
+    md.impact_law = ImpactLaw::VelocityCoulomb;
+    let run = run_from_rest(&md, dur, &opts(), COMPLIANT_DT_S);
+    let tr = &run.trace;
+    let open = |i: usize| free_normal_acceleration(&md, tr[i].t_s, &tr[i].y) >= 0.0;
+    let back = (1e-4 / COMPLIANT_DT_S) as usize;
+    let mut out = Vec::new();
+    let mut start = 0;
+    for end in 1..tr.len() {
+        if tr[end - 1].mode != Mode::Pivot {
+            start = end;
+            continue;
+        }
+        if tr[end].mode == Mode::Pivot {
+            continue;
+        }
+        let ia = (start..end).rev().take_while(|&i| open(i)).last();
+        let Some(ia) = ia.filter(|&ia| end - ia >= 3) else {
+            continue; // no second solution before the pivot ends (within the trace's step)
+        };
+        let (t_a, t_r) = (tr[ia].t_s, tr[end].t_s);
+        let i0 = ia.saturating_sub(back).max(start);
+        let ladder: Vec<_> = COMPLIANT_K
+            .iter()
+            .map(|&k| pinned_lift_off(&md, tr[i0].t_s, &tr[i0].y, k, t_r + 0.002))
+            .collect();
+        // the rules' end: the cone's edge or zero force, whichever margin, extrapolated
+        // from the last two pivot samples, closes first
+        let margins = |i: usize| {
+            let (fx, fz) = pivot_force(&md, tr[i].t_s, &tr[i].y);
+            (p.base.mu * fz - fx.abs(), fz) // formula: margins mu F_z - |F_x|, F_z
+        };
+        let ((c1, z1), (c0, z0)) = (margins(end - 1), margins(end - 2));
+        let closes = |m1: f64, m0: f64| {
+            if m0 > m1 {
+                m1 / (m0 - m1)
+            } else {
+                f64::INFINITY
+            }
+        }; // formula: samples until the margin is 0
+        let cone = closes(c1, c0) < closes(z1, z0);
+        eprintln!(
+            "  two-solution pivot: lift-off consistent from {t_a:.6} s, the rules' pivot ends at {t_r:.6} s (at the cone's edge: {cone}; then {:?}); compliant stuck phase ends at {:?} s for K = {COMPLIANT_K:?} N/m",
+            tr[end].mode,
+            ladder.iter().map(|e| e.map(|e| e.t_s)).collect::<Vec<_>>()
+        );
+        let stiff = ladder[ladder.len() - 1];
+        let t_c = stiff.map_or(f64::NAN, |e| e.t_s);
+        let kind = stiff.is_some_and(|e| e.slides == cone);
+        out.push((t_a, t_r, t_c, kind));
+    }
+    out
+}
+
+/// Does the stiffest compliant contact end the stuck phase where the rules do (within
+/// two trace steps, the resolution of `t_r`, and nearer to it than to `t_a`), and in
+/// the same way (a slide at the cone's edge, or a lift-off at zero force)?
+fn compliant_follows_rules(&(t_a, t_r, t_c, kind): &(f64, f64, f64, bool)) -> bool {
+    kind && (t_c - t_r).abs() <= 2.0 * COMPLIANT_DT_S && (t_c - t_r).abs() < (t_c - t_a).abs()
+}
+
+/// The two-solution scene of seed 32648 (scene 7 of its draw, a 0.374 kg rod, `mu`
+/// beyond the left slide's Painleve bound): its pivot ending at 0.2542 s has lift-off
+/// consistent from 0.2541 s. Measured: the compliant stuck phase ends at 0.25507,
+/// 0.25459, 0.25435, 0.25424, 0.254215, 0.254215 s for K = 1e5 .. 1e10 N/m, each at the
+/// cone's edge, as the rules' pivot does (0.254216 s to the trace's 2 us), not at the
+/// first-open choice's 0.254066 s.
+#[test]
+fn a_stiff_compliant_contact_keeps_the_stuck_foot() {
+    let mut rng = Rng(32648);
+    let p = (0..8).map(|_| draw(&mut rng)).last().expect("eight draws");
+    let pivots = compliant_check(&p, 0.2545);
+    assert!(!pivots.is_empty(), "no two-solution pivot found");
+    for c in &pivots {
+        assert!(
+            compliant_follows_rules(c),
+            "{c:?}: (t_a, t_r, t_c, same kind)"
         );
     }
 }

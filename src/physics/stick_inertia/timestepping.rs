@@ -96,13 +96,27 @@ pub struct MjSummary {
 /// Moreau-Jean with step `h_s` from the static start of the event-driven run (`y0`)
 /// over `duration_s`, choosing by `sel` where a step's contact problem has two
 /// solutions; `None` if a step had none or the state became non-finite.
-#[allow(clippy::needless_range_loop)] // q, v1, m_wn, m_wt: one index over four arrays
 pub fn mj_run(
     md: &InertiaModel,
     y0: &State,
     duration_s: f64,
     h_s: f64,
     sel: MjSelection,
+) -> Option<MjSummary> {
+    mj_run_observed(md, y0, duration_s, h_s, sel, |_, _, _| {})
+}
+
+/// [`mj_run`], calling `obs(k, t, x_C - x_C(0))` after every step `k = 1, 2, ...` (time
+/// `t = k h_s` s, C's displacement in m): a caller samples the displacement at chosen
+/// steps (a drive period is a whole number of steps when `h_s = T/n`).
+#[allow(clippy::needless_range_loop)] // q, v1, m_wn, m_wt: one index over four arrays
+pub fn mj_run_observed(
+    md: &InertiaModel,
+    y0: &State,
+    duration_s: f64,
+    h_s: f64,
+    sel: MjSelection,
+    mut obs: impl FnMut(u64, f64, f64),
 ) -> Option<MjSummary> {
     use crate::numerics::timestepping::{
         contact_solutions, local_problem, solve_contact, ContactStatus,
@@ -144,6 +158,7 @@ pub fn mj_run(
             return None;
         }
         (t, k, prev) = (t1, k + 1, status);
+        obs(k, t, md.mj_xc(&q) - md.mj_xc(&q0));
     }
     Some(MjSummary {
         mean_velocity_mps: (md.mj_xc(&q) - md.mj_xc(&q0)) / duration_s,
