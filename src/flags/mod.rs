@@ -319,7 +319,7 @@ pub const G_MAX_MPS2: f64 = 25.0;
 
 /// `--g-mps2`, the global flag, in the table of every chapter whose results depend on g
 /// (a chapter without it refuses the flag). A chapter validated on a narrower range
-/// lists its own entry (chapter 7: from 3 m/s^2).
+/// would list its own entry (none does).
 pub const G: Flag = Flag::new(
     "--g-mps2",
     "Gravitational acceleration g",

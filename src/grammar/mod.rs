@@ -72,8 +72,7 @@ pub struct Cli {
     pub no_figures: bool,
 
     /// Gravitational acceleration g in m/s^2, 1 <= g <= 25 (table-top scenes on a
-    /// planet's surface, from below the Moon's 1.62 to above Jupiter's 24.8; chapter 7
-    /// needs g >= 3) [default: 9.81; the stick chapter's `authors` scene uses 10 unless
+    /// planet's surface, from below the Moon's 1.62 to above Jupiter's 24.8) [default: 9.81; the stick chapter's `authors` scene uses 10 unless
     /// this flag is given]. It sets the reader's own scene: the stick chapter's run (its
     /// evidence scenes keep the document's g) and chapter 7's block scene (its stick
     /// scene is the authors', g = 10). Refused by the chapters whose results do not
