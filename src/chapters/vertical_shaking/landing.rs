@@ -137,18 +137,9 @@ pub fn located_bound(scene: &Scene, iters: usize) -> (f64, f64) {
 
 #[cfg(test)]
 mod tests {
+    use super::super::tests::scene;
     use super::*;
     use std::f64::consts::TAU;
-
-    fn scene(gamma: f64) -> Scene {
-        Scene {
-            gamma,
-            frequency_hz: 30.0,
-            mu: 0.4,
-            bias: 0.1,
-            g_mps2: 9.81,
-        }
-    }
 
     /// Gamma_c from its closed-form root against a second method: the ballistic flight
     /// found by scan and bisection on the plate lands at the phase 2 pi there.

@@ -14,7 +14,8 @@ use crate::physics::block::{
 use crate::physics::plate::PlateMotion;
 use std::f64::consts::PI;
 
-fn scene(gamma: f64) -> Scene {
+/// The chapter's test scene: 30 Hz, μ = 0.4, bias 0.1, g = 9.81 m/s², at `gamma`.
+pub(super) fn scene(gamma: f64) -> Scene {
     Scene {
         gamma,
         frequency_hz: 30.0,

@@ -16,6 +16,7 @@
 
 use crate::numerics::hybrid::HybridSystem;
 
+use super::contact::ContactEval;
 use super::{
     CollisionAngle, InvalidReason, Mode, State, StickModel, StickStop, OM, TH, VXC, VZC, ZC,
 };
@@ -51,7 +52,7 @@ impl StickModel {
         if allow_pivot
             && e.fz >= 0.0
             && e.fx.abs() <= mu * e.fz
-            && !self.pivot_leaves_at_once(t, &y)
+            && !self.pivot_leaves_at_once(t, &y, &e)
         {
             return Next::To(Mode::Pivot, y);
         }
@@ -91,10 +92,10 @@ impl StickModel {
     /// |F_z|), a few roundings of each (larger margins fall through zero in a later step,
     /// which the event search sees); the sign of the fall from the guards' closed-form
     /// rates ([`StickModel::contact_guard_rates`]).
-    fn pivot_leaves_at_once(&self, t: f64, y: &State) -> bool {
+    /// `e` is the pivot's reaction at `(t, y)`.
+    fn pivot_leaves_at_once(&self, t: f64, y: &State, e: &ContactEval) -> bool {
         let mut g = Vec::with_capacity(4);
         self.guards(Mode::Pivot, t, y, &mut g);
-        let e = self.pivot_eval(t, y);
         let tol = 16.0 * f64::EPSILON * (e.fx.abs() + self.p.mu * e.fz.abs()); // formula: 16 eps (|F_x| + mu |F_z|)
         let f = self.flow(Mode::Pivot, t, y);
         let mut rates = Vec::with_capacity(4);
@@ -260,13 +261,14 @@ mod tests {
         };
         let rising = at_edge(10.0); // past the edge: the reaction turns outside the cone
         assert!(m.pivot_eval(t, &rising).fz > 0.0);
-        assert!(m.pivot_leaves_at_once(t, &rising));
+        assert!(m.pivot_leaves_at_once(t, &rising, &m.pivot_eval(t, &rising)));
         assert!(!matches!(
             m.select_contact(t, &rising),
             Next::To(Mode::Pivot, _)
         ));
         // Falling back into the cone: the pivot holds.
-        assert!(!m.pivot_leaves_at_once(t, &at_edge(-10.0)));
+        let back = at_edge(-10.0);
+        assert!(!m.pivot_leaves_at_once(t, &back, &m.pivot_eval(t, &back)));
     }
 
     #[test]
