@@ -85,7 +85,7 @@ pub struct Ratios {
     pub rod_ne: f64,
     /// The rod's 2x2 inversion as it ran (mobility, inverse, residual).
     pub rod_inversion: Inversion2,
-    /// The rod's 5x5 solve as it ran (system, solution, residuals, inverse).
+    /// The rod's 5x5 solve as it ran (system, solution, residual).
     pub rod_solve: Solve5,
     /// The point mass's 5x5 solve as it ran.
     pub point_mass_solve: Solve5,
@@ -106,8 +106,7 @@ pub fn rod_inversion(theta: f64) -> Inversion2 {
 
 /// The Newton-Euler system `impulse_for_velocity_change` solves for C's velocity change
 /// `dv` (rebuilt entry for entry: its entries are copies of m, I_G and r, no arithmetic),
-/// its solution as that function returns it, the computed residual, a computed inverse
-/// (LU) and that inverse's computed residual.
+/// its solution as that function returns it and the computed residual.
 pub fn newton_euler_solve(body: &RigidBody, off: Vector2<f64>, dv: Vector2<f64>) -> Solve5 {
     let (m, i, p) = (body.mass_kg, body.inertia_kgm2, perp(off));
     #[rustfmt::skip]
@@ -122,14 +121,11 @@ pub fn newton_euler_solve(body: &RigidBody, off: Vector2<f64>, dv: Vector2<f64>)
     let x = impulse_for_velocity_change(body, off, dv)
         .map(|s| Vector5::new(s.dv_g.x, s.dv_g.y, s.domega, s.impulse.x, s.impulse.y))
         .unwrap_or(Vector5::repeat(f64::NAN));
-    let inverse = a.lu().try_inverse().unwrap_or(Matrix5::repeat(f64::NAN));
     Solve5 {
         a,
         b,
         x,
         residual: b - a * x,
-        inverse,
-        inverse_residual: Matrix5::identity() - a * inverse,
     }
 }
 

@@ -23,7 +23,7 @@ pub const TRIG: u32 = 2;
 /// flag's corner 1e-308 degrees): each underflowing operation adds at most η/2
 /// (η = 2^-1074), a quantity passes through fewer than 100 of them and no step
 /// magnifies by more than 1e4 (the 5x5 system's ||A^-1|| is below 1e3): 1e6 η.
-pub const UNDERFLOW: f64 = 1e6 * 4.940_656_458_412_465_4e-324;
+pub const UNDERFLOW: f64 = 5e-318; // formula: >= 1e6 η, η = 2^-1074 = 4.94e-324
 
 /// A bound evaluated in floating point is itself rounded, by a relative γ_k with k
 /// below 100 (1e-14): every bound is multiplied by 1 + 1e-12.
@@ -47,8 +47,8 @@ pub struct Inversion2 {
     pub residual: Matrix2<f64>,
 }
 
-/// A 5x5 solve as it ran: A^ and b as built, the computed x^, the computed residual
-/// fl(b - A^ x^), a computed inverse Z^ of A^ (LU) and its residual fl(I - A^ Z^).
+/// A 5x5 solve as it ran: A^ and b as built and the computed x^ with the computed
+/// residual fl(b - A^ x^).
 #[derive(Debug, Clone, Copy)]
 pub struct Solve5 {
     /// A^ (the Newton-Euler impulse equations, unknowns dv_G, dω, J).
@@ -59,19 +59,10 @@ pub struct Solve5 {
     pub x: Vector5<f64>,
     /// fl(b - A^ x^).
     pub residual: Vector5<f64>,
-    /// Z^ ≈ inv(A^).
-    pub inverse: Matrix5<f64>,
-    /// fl(I - A^ Z^).
-    pub inverse_residual: Matrix5<f64>,
 }
 
 /// Row-sum (∞) norm of a 2x2 matrix's absolute value.
 fn norm2(m: &Matrix2<f64>) -> f64 {
-    m.abs().row_sum().max()
-}
-
-/// Row-sum (∞) norm of a 5x5 matrix's absolute value.
-fn norm5(m: &Matrix5<f64>) -> f64 {
     m.abs().row_sum().max()
 }
 
@@ -81,13 +72,13 @@ pub fn mass_matrix_error(inv: &Inversion2) -> f64 {
     let (w, m) = (&inv.mobility, &inv.inverse);
     // formula: |I - W^ M^| <= |R^| + γ_3 (I + |W^| |M^|), g = its ∞-norm
     let g = norm2(&(inv.residual.abs() + (Matrix2::identity() + w.abs() * m.abs()) * gamma(3)));
-    if !(g < 1.0) {
+    if g.is_nan() || g >= 1.0 {
         return f64::INFINITY;
     }
     let e_inv = norm2(m) * g / (1.0 - g); // formula: ||W^-1 - M^|| <= ||M^|| g/(1 - g)
     let x = norm2(m) + e_inv; // formula: ||inv(W^)|| <= ||M^|| + e_inv
     let d = gamma(13) * norm2(w); // formula: |W^ - W| <= γ_13 |W^| (11 to 12 roundings per entry)
-    if !(x * d < 1.0) {
+    if (x * d).is_nan() || x * d >= 1.0 {
         return f64::INFINITY;
     }
     let e_data = x * x * d / (1.0 - x * d); // formula: ||W^-1 - inv(W^)|| <= ||X||² d/(1 - ||X|| d)
@@ -106,51 +97,73 @@ pub fn stick_error(e_m: f64, inv: &Inversion2) -> f64 {
 /// Error bound of a computed quotient fl(n^/d^) against n/d, with |n^ - n| <= e_n and
 /// |d^ - d| <= e_d: (e_n + |n^/d^| e_d)/(|d^| - e_d) plus the division's rounding.
 pub fn quotient_error(n: f64, d: f64, e_n: f64, e_d: f64) -> f64 {
-    if !(d.abs() > e_d) {
+    if d.is_nan() || e_d.is_nan() || d.abs() <= e_d {
         return f64::INFINITY;
     }
     let q = (n / d).abs() * (1.0 + U);
     OWN * ((e_n + q * e_d) / (d.abs() - e_d) + U * q) + UNDERFLOW // formula: (e_n + |q| e_d)/(|d^| - e_d) + u |q|
 }
 
-/// The rod's J_ℓ/J_v from its mass matrix, M^_xz/M^_zz (`jam_ratio`).
+/// The rod's J_ℓ/J_v from its mass matrix, M^_xz/M^_zz (`jam_ratio`): the smaller of
+/// two rigorous bounds. (a) The inversion's a posteriori bound carried through the
+/// quotient (any inversion method). (b) The formula nalgebra evaluates for a 2x2
+/// inverse, adj(W^)/det^ (pinned by a unit test): det^ cancels exactly from the quotient,
+/// fl(fl(-W^_xz/det^)/fl(W^_xx/det^)) is -W^_xz/W^_xx to γ_3, and W^_xz, W^_xx carry
+/// γ_11 and γ_12 from θ: γ_26 against the exact ratio, γ_27 of the computed one, which
+/// stays relative where the ratio goes to 0 (θ near 0 and 90 degrees).
 pub fn rod_ratio_error(inv: &Inversion2) -> f64 {
     let e = mass_matrix_error(inv);
-    quotient_error(inv.inverse[(0, 1)], inv.inverse[(1, 1)], e, e)
+    let (n, d) = (inv.inverse[(0, 1)], inv.inverse[(1, 1)]);
+    let by_residual = quotient_error(n, d, e, e);
+    let by_formula = OWN * gamma(27) * (n / d).abs() + UNDERFLOW; // formula: γ_27 |ρ^|
+    by_residual.min(by_formula)
 }
 
 /// The point mass's J_ℓ/J_v from its rank-one matrix m u u^T (`effective_mass` with
 /// I_G = 0), as evaluated: fl(fl(m u_x) u_z)/fl(fl(m u_z) u_z) with u = r/|r|,
-/// r = -L (sin θ, cos θ). Every factor cancels but the roundings: 2 (m u) + 2 (· u_z)
-/// + 1 (division) + 2 (normalize: r_x/|r|, r_z/|r|) + 2 (-L sin, -L cos) + 2 TRIG:
+/// r = -L (sin θ, cos θ). Every factor cancels but the roundings: 2 (m u), 2 (times
+/// u_z), 1 (division), 2 (normalize: r_x/|r|, r_z/|r|), 2 (-L sin, -L cos) and 2 TRIG:
 /// a relative γ_13 against tan θ, γ_14 of the computed value.
 pub fn point_mass_ratio_error(ratio: f64) -> f64 {
     OWN * gamma(9 + 2 * TRIG + 1) * ratio.abs() + UNDERFLOW // formula: γ_14 |ρ^|
 }
 
-/// Componentwise error bound of the 5x5 solve x^ against the exact x(θ): Oettli-Prager /
-/// Skeel a posteriori for A^ x = b, |inv(A^)| bounded by the computed inverse Z^ and its
-/// own residual, plus the data error |A^ - A(θ)| <= γ_4 |A^| (r = -(L/2)(sin θ, cos θ)
-/// or -L(...): TRIG + 1 rounding; I_G = m L L/12: 3).
+/// |A^-1| of the Newton-Euler system in closed form, from its entries m, I_G and
+/// r = C - G (A's rows: m v - J = ., I_G w + r_z J_x - r_x J_z = ., v + w perp(r) = .).
+/// Eliminating v and J leaves w (I_G + m |r|²) = r3 - r_z (m r4 - r1) + r_x (m r5 - r2),
+/// a denominator without cancellation; every entry of the inverse is a signed product
+/// over D = I_G + m |r|², so |A^-1| is a sum of products of |r_x|, |r_z|, m and I_G.
+fn abs_inverse(a: &Matrix5<f64>) -> Matrix5<f64> {
+    let (m, i, rz, rx) = (a[(0, 0)], a[(2, 2)], a[(2, 3)], -a[(2, 4)]);
+    let (x, z, xz) = (rx.abs(), rz.abs(), (rx * rz).abs());
+    let (ax, az) = (i + m * rx * rx, i + m * rz * rz); // formula: I_G + m r_x², I_G + m r_z²
+    let d = i + m * (rx * rx + rz * rz); // formula: D = I_G + m |r|²
+    #[rustfmt::skip]
+    let n = Matrix5::new(
+        z * z,  xz,     z,     ax,         m * xz,     // dv_G,x = r4 + r_z w
+        xz,     x * x,  x,     m * xz,     az,         // dv_G,z = r5 - r_x w
+        z,      x,      1.0,   m * z,      m * x,      // w
+        ax,     m * xz, m * z, m * ax,     m * m * xz, // J_x = m dv_G,x - r1
+        m * xz, az,     m * x, m * m * xz, m * az,     // J_z = m dv_G,z - r2
+    );
+    n / d
+}
+
+/// Componentwise error bound of the 5x5 solve x^ against the exact x(θ): with the
+/// true residual r_t = b - A^ x^ and A^ = A(θ) + δA, x(θ) - x^ = A(θ)^-1 (r_t + δA x^),
+/// so (Oettli-Prager / Skeel) |x - x^| <= |A^-1| (|r^| + γ_6 (|A^| |x^| + |b|) +
+/// γ_4 |A^| |x^|): γ_6 the residual's own rounding (5-term dot products), γ_4 the data
+/// (r = -(L/2)(sin θ, cos θ) or -L(...): TRIG + 1 roundings; I_G = m L L/12: 3).
+/// |A^-1| from its closed form ([`abs_inverse`]), evaluated from the rounded entries: a
+/// sum of products of at most 12 rounded factors over D (<= 9): 1 + γ_30 covers it.
+/// (The computed inverse's norm would smear ||A^-1|| over every entry and could not
+/// vouch for J_z ~ m cos²θ near 90 degrees, which the LU gets to full precision.)
 pub fn solve_error(s: &Solve5) -> Vector5<f64> {
-    let inf = Vector5::repeat(f64::INFINITY);
-    let (abs_a, abs_z) = (s.a.abs(), s.inverse.abs());
-    // formula: |I - A^ Z^| <= |R_Z^| + γ_6 (I + |A^| |Z^|)
-    let g = norm5(&(s.inverse_residual.abs() + (Matrix5::identity() + abs_a * abs_z) * gamma(6)));
-    if !(g < 1.0) {
-        return inf;
-    }
-    // formula: |inv(A^)| <= |Z^| + ||Z^|| g/(1 - g) (every entry)
-    let a_inv = abs_z + Matrix5::repeat(norm5(&s.inverse) * g / (1.0 - g));
-    // formula: |x - x^| <= |inv(A^)| (|r^| + γ_6 (|A^| |x^| + |b|))
-    let v = s.residual.abs() + (abs_a * s.x.abs() + s.b.abs()) * gamma(6);
-    let e_solve = a_inv * v;
-    let c = norm5(&(a_inv * abs_a * gamma(4))); // formula: c = || |inv(A^)| γ_4 |A^| ||
-    if !(c < 1.0) {
-        return inf;
-    }
-    let e_data = c * (s.x.amax() + e_solve.amax()) / (1.0 - c); // formula: ||x(θ) - inv(A^) b|| <= c ||x||/(1 - c)
-    (e_solve.add_scalar(e_data) * OWN).add_scalar(UNDERFLOW)
+    let abs_a = s.a.abs();
+    // formula: |r_t| + |δA| |x^| <= |r^| + γ_10 (|A^| |x^| + |b|)
+    let v = s.residual.abs() + (abs_a * s.x.abs() + s.b.abs()) * gamma(10);
+    let e = abs_inverse(&s.a) * v * (1.0 + gamma(30)); // formula: |A^-1| v
+    (e * OWN).add_scalar(UNDERFLOW)
 }
 
 /// J_ℓ/J_v = x_4/x_5 from the 5x5 solve, with [`solve_error`].
