@@ -17,7 +17,7 @@ use crate::report::{fmt_num, is_close, Check, Claim};
 use nalgebra::Vector2;
 
 /// The tolerance sentence of the rounding-bounded claims.
-const BOUND: &str = "Tolerance: a rigorous rounding bound of both sides, from the run's own residuals (chapter text, 'How exact are the checks?').";
+const BOUND: &str = "Tolerance: rigorous rounding bounds of both sides, from the run (chapter text, 'How exact are the checks?').";
 
 /// Every claim of the chapter at friction `mu`, in the order of the report.
 pub fn all(st: &Statements, ev: &Evidence, mu: f64) -> Vec<Claim> {

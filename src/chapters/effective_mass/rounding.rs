@@ -87,11 +87,13 @@ pub fn mass_matrix_error(inv: &Inversion2) -> f64 {
 
 /// Entry error bound (kg) of the mass matrix in stick coordinates, `R^T M^ R` as
 /// computed (`in_stick_frame`), from the world-frame bound `e_m` and the largest entry
-/// of M^: the rotation carries e_m into at most (|sin| + |cos|)² e_m = 2 e_m, the
-/// rounded R (trig) and the two rounded 2x2 products add γ_9 (|R|^T |M^| |R|) <= γ_9 2 max|M^|.
+/// of M^: R^T (M^ - M) R carries e_m into at most (|sin| + |cos|)² (1 + γ_4) e_m <=
+/// 2 (1 + γ_4) e_m; the rounded R (trig, 2u an entry: γ_4 on R^T M R) and the two
+/// rounded 2x2 products (γ_4) add γ_8 |R|^T |M| |R| <= 2 (1 + γ_4) γ_8 (max|M^| + e_m).
 pub fn stick_error(e_m: f64, inv: &Inversion2) -> f64 {
     let big = inv.inverse.amax();
-    OWN * 2.0 * (1.0 + gamma(3)) * (e_m + gamma(9) * big) // formula: 2 (1 + γ_3)(e_M + γ_9 max|M^|)
+    // formula: 2 (1 + γ_4)((1 + γ_9) e_M + γ_9 max|M^|)
+    OWN * 2.0 * (1.0 + gamma(4)) * ((1.0 + gamma(9)) * e_m + gamma(9) * big)
 }
 
 /// Error bound of a computed quotient fl(n^/d^) against n/d, with |n^ - n| <= e_n and
