@@ -2,7 +2,9 @@
 //! contact point (the mobility matrix inverted), the document's force derivation
 //! evaluated as vectors, the impulse ratios from the mass matrices and from the
 //! Newton-Euler impulse equations (a second method) at the chosen angle, at 30 and at
-//! 45 degrees, and the rod's best angle by golden-section search.
+//! 45 degrees, and the rod's best angle by golden-section search; with each, the raw
+//! quantities its rounding bound reads (`rounding.rs`: the matrices as built, the
+//! computed inverse and residuals, the best angle's probe).
 
 use super::rounding::{rod_ratio_error, Inversion2, Solve5};
 use super::{LENGTH_M, MASS_KG};

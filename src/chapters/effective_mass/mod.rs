@@ -9,8 +9,9 @@
 //! against both.
 //!
 //! Shape: `statements.rs` (the statements as data), `evidence.rs` (the computations,
-//! once), `claims.rs` (pure functions of both), `figures.rs` (figures and the jamming
-//! table) with `sketch.rs`, `mutations.rs`; this file: flags and orchestration.
+//! once), `claims.rs` (pure functions of both), `rounding.rs` (the claims' rounding
+//! bounds, arithmetic on the evidence), `figures.rs` (figures and the jamming table)
+//! with `sketch.rs`, `mutations.rs`; this file: flags and orchestration.
 
 mod claims;
 mod evidence;
