@@ -2,14 +2,17 @@
 //! contact point (the mobility matrix inverted), the document's force derivation
 //! evaluated as vectors, the impulse ratios from the mass matrices and from the
 //! Newton-Euler impulse equations (a second method) at the chosen angle, at 30 and at
-//! 45 degrees, and the rod's best angle by golden-section search.
+//! 45 degrees, and the rod's best angle by golden-section search; with each, the raw
+//! quantities its rounding bound reads (`rounding.rs`: the matrices as built, the
+//! computed inverse and residuals, the best angle's probe).
 
+use super::rounding::{rod_ratio_error, Inversion2, Solve5};
 use super::{LENGTH_M, MASS_KG};
 use crate::physics::rigid::{
     contact_acceleration, effective_mass, impulse_for_velocity_change, in_stick_frame, jam_ratio,
-    rod_contact_offset, stick_normal, tip_contact_offset, RigidBody,
+    mobility, perp, rod_contact_offset, stick_normal, tip_contact_offset, RigidBody,
 };
-use nalgebra::{Matrix2, Vector2};
+use nalgebra::{Matrix2, Matrix5, Vector2, Vector5};
 
 /// Golden-section search for the maximum (moved down to the numerics layer).
 pub use crate::numerics::search::golden_max;
@@ -68,7 +71,8 @@ pub fn rod_lock_angles_closed_form(mu: f64) -> Option<(f64, f64)> {
     Some((q1.atan(), q2.atan()))
 }
 
-/// The impulse ratios `J_l/J_v` at one angle, by two methods.
+/// The impulse ratios `J_l/J_v` at one angle, by two methods, with the raw quantities
+/// their rounding bounds read (`rounding.rs`).
 #[derive(Debug, Clone, Copy)]
 pub struct Ratios {
     /// The lean angle (rad).
@@ -81,26 +85,116 @@ pub struct Ratios {
     pub point_mass_ne: f64,
     /// Uniform rod, Newton-Euler impulse equations (a 5x5 linear solve).
     pub rod_ne: f64,
+    /// The rod's 2x2 inversion as it ran (mobility, inverse, residual).
+    pub rod_inversion: Inversion2,
+    /// The rod's 5x5 solve as it ran (system, solution, residual).
+    pub rod_solve: Solve5,
+    /// The point mass's 5x5 solve as it ran.
+    pub point_mass_solve: Solve5,
+}
+
+/// The rod's mobility W^ at `theta` (rad) as `effective_mass` builds it, its computed
+/// inverse (the mass matrix, kg) and the computed residual fl(I - W^ M^).
+pub fn rod_inversion(theta: f64) -> Inversion2 {
+    let off = rod_contact_offset(theta, LENGTH_M);
+    let w = mobility(&rod(), off).unwrap_or(Matrix2::repeat(f64::NAN)); // a rod has I_G > 0
+    let m = effective_mass(&rod(), off);
+    Inversion2 {
+        mobility: w,
+        inverse: m,
+        residual: Matrix2::identity() - w * m,
+    }
+}
+
+/// The Newton-Euler system `impulse_for_velocity_change` solves for C's velocity change
+/// `dv` (rebuilt entry for entry: its entries are copies of m, I_G and r, no arithmetic),
+/// its solution as that function returns it and the computed residual.
+pub fn newton_euler_solve(body: &RigidBody, off: Vector2<f64>, dv: Vector2<f64>) -> Solve5 {
+    let (m, i, p) = (body.mass_kg, body.inertia_kgm2, perp(off));
+    #[rustfmt::skip]
+    let a = Matrix5::new(
+        m,   0.0, 0.0, -1.0,  0.0,
+        0.0, m,   0.0, 0.0,   -1.0,
+        0.0, 0.0, i,   off.y, -off.x,
+        1.0, 0.0, p.x, 0.0,   0.0,
+        0.0, 1.0, p.y, 0.0,   0.0,
+    );
+    let b = Vector5::new(0.0, 0.0, 0.0, dv.x, dv.y);
+    let x = impulse_for_velocity_change(body, off, dv)
+        .map(|s| Vector5::new(s.dv_g.x, s.dv_g.y, s.domega, s.impulse.x, s.impulse.y))
+        .unwrap_or(Vector5::repeat(f64::NAN));
+    Solve5 {
+        a,
+        b,
+        x,
+        residual: b - a * x,
+    }
 }
 
 /// The ratios at `theta` (rad).
 pub fn ratios_at(theta: f64) -> Ratios {
     let (m_rod, m_pm) = matrices(theta);
     let up = Vector2::new(0.0, 1.0);
-    let ne = |b: RigidBody, off: Vector2<f64>| {
-        impulse_for_velocity_change(&b, off, up)
-            .map(|i| i.impulse.x / i.impulse.y)
-            .unwrap_or(f64::NAN)
-    };
+    let rod_solve = newton_euler_solve(&rod(), rod_contact_offset(theta, LENGTH_M), up);
+    let point_mass_solve = newton_euler_solve(
+        &RigidBody::point_mass(MASS_KG),
+        tip_contact_offset(theta, LENGTH_M),
+        up,
+    );
     Ratios {
         theta,
         point_mass: jam_ratio(&m_pm),
         rod: jam_ratio(&m_rod),
-        point_mass_ne: ne(
-            RigidBody::point_mass(MASS_KG),
-            tip_contact_offset(theta, LENGTH_M),
-        ),
-        rod_ne: ne(rod(), rod_contact_offset(theta, LENGTH_M)),
+        point_mass_ne: point_mass_solve.x[3] / point_mass_solve.x[4], // formula: J_l/J_v
+        rod_ne: rod_solve.x[3] / rod_solve.x[4],
+        rod_inversion: rod_inversion(theta),
+        rod_solve,
+        point_mass_solve,
+    }
+}
+
+/// The rod's best angle as found, and the three points that certify it: the rod's ratio
+/// (from its mass matrix) at `theta_rad - h_rad`, `theta_rad` and `theta_rad + h_rad`.
+#[derive(Debug, Clone, Copy)]
+pub struct BestProbe {
+    /// The golden-section argmax (rad).
+    pub theta_rad: f64,
+    /// The probe's half-width (rad).
+    pub h_rad: f64,
+    /// The ratios at θ - h, θ, θ + h.
+    pub ratio: [f64; 3],
+    /// The inversions behind them.
+    pub inversion: [Inversion2; 3],
+}
+
+impl BestProbe {
+    /// Both computed drops from the middle exceed the three ratios' rounding bounds:
+    /// the exact ratio is then larger at θ than at θ ± h, and, unimodal, has its
+    /// maximum within h of θ.
+    pub fn certified(&self) -> bool {
+        let e = self.inversion.map(|i| rod_ratio_error(&i));
+        let drop = |k: usize| self.ratio[1] - self.ratio[k];
+        drop(0) > e[0] + e[1] && drop(2) > e[1] + e[2] // formula: f^(θ) - f^(θ±h) > e(θ) + e(θ±h)
+    }
+}
+
+/// Golden section for the rod's largest ratio, then the smallest probe half-width
+/// h = 1e-9 2^k rad (up to 1e-3 rad) that [`BestProbe::certified`] accepts.
+fn best_probe() -> BestProbe {
+    let theta = golden_max(rod_ratio, 0.0, std::f64::consts::FRAC_PI_2 - 1e-9, 1e-12);
+    let mut h = 1e-9;
+    loop {
+        let inversion = [theta - h, theta, theta + h].map(rod_inversion);
+        let probe = BestProbe {
+            theta_rad: theta,
+            h_rad: h,
+            ratio: inversion.map(|i| jam_ratio(&i.inverse)),
+            inversion,
+        };
+        if probe.certified() || h > 1e-3 {
+            return probe;
+        }
+        h *= 2.0;
     }
 }
 
@@ -126,8 +220,11 @@ pub struct Evidence {
     pub at30: Ratios,
     /// ... at 45 degrees (the document's example).
     pub at45: Ratios,
-    /// The rod's angle of largest ratio (rad), golden-section search.
-    pub best_rad: f64,
+    /// The rod's angle of largest ratio (rad), golden-section search, with its
+    /// certificate.
+    pub best: BestProbe,
+    /// The rod's inversion at the chosen angle (the mass matrix `stick` comes from).
+    pub inversion: Inversion2,
     /// C's acceleration by the second method (no mass matrix) at the chosen angle under
     /// the unit force across the stick: at rest without gravity.
     pub free_at_rest: FreeAcceleration,
@@ -158,7 +255,8 @@ pub fn gather(theta: f64) -> Evidence {
         at: ratios_at(theta),
         at30: ratios_at(30f64.to_radians()),
         at45: ratios_at(std::f64::consts::FRAC_PI_4),
-        best_rad: golden_max(rod_ratio, 0.0, std::f64::consts::FRAC_PI_2 - 1e-9, 1e-12),
+        best: best_probe(),
+        inversion: rod_inversion(theta),
         free_at_rest: free_acceleration(theta, 0.0, 0.0, stick_normal(theta)),
         free_spinning: free_acceleration(theta, FREE_SPIN_RAD_S, FREE_G_MPS2, stick_normal(theta)),
     }

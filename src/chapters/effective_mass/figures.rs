@@ -38,7 +38,7 @@ fn ratio_chart(ev: &Evidence, mu: f64, quick: bool) -> Chart {
         .map(|&a| (a, rod_ratio(a.to_radians())))
         .collect();
     let lock = mu.atan().to_degrees();
-    let best = ev.best_rad;
+    let best = ev.best.theta_rad;
     Chart::new(
         "Sideways impulse of a vertical collision at C",
         "lean angle θ from the vertical (degrees)",

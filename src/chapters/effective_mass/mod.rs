@@ -9,13 +9,15 @@
 //! against both.
 //!
 //! Shape: `statements.rs` (the statements as data), `evidence.rs` (the computations,
-//! once), `claims.rs` (pure functions of both), `figures.rs` (figures and the jamming
-//! table) with `sketch.rs`, `mutations.rs`; this file: flags and orchestration.
+//! once), `claims.rs` (pure functions of both), `rounding.rs` (the claims' rounding
+//! bounds, arithmetic on the evidence), `figures.rs` (figures and the jamming table)
+//! with `sketch.rs`, `mutations.rs`; this file: flags and orchestration.
 
 mod claims;
 mod evidence;
 mod figures;
 mod mutations;
+mod rounding;
 mod sketch;
 mod statements;
 
@@ -106,7 +108,7 @@ fn results(r: &mut ChapterReport, ev: &evidence::Evidence, mu: f64) {
     r.result("ratio_uniform_rod", ev.at.rod);
     r.result("m_parallel_over_m", ev.stick[(0, 0)] / MASS_KG);
     r.result("m_perp_over_m", ev.stick[(1, 1)] / MASS_KG);
-    r.result("best_angle_uniform_rod_deg", ev.best_rad.to_degrees());
+    r.result("best_angle_uniform_rod_deg", ev.best.theta_rad.to_degrees());
     r.result("self_locking", self_locking);
     r.result("rod_jams_under_vertical_impulse", rod_jams);
 }
