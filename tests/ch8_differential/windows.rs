@@ -56,11 +56,12 @@ fn mj_lengths(md: &InertiaModel, s: &MjState) -> [f64; 6] {
 
 /// Moreau-Jean's answer for one component's ladder `x` (`n` steps at the finest level):
 /// [`mj_estimate_within`] `bound_m`, or, where its last three differences are within
-/// the rounding that `n` steps can accumulate (`n u (|x| + L)`, `u` the unit roundoff:
-/// a component the contact holds, e.g. `vx_C` of a stuck foot), that rounding.
+/// the rounding that `n` steps can accumulate (`n eps (|x| + L)`, `eps` = 2.2e-16 the
+/// machine epsilon: a component the contact holds, e.g. `vx_C` of a stuck foot), that
+/// rounding.
 fn component_estimate(x: &[f64], n: u64, l_m: f64, bound_m: f64) -> Option<(f64, f64)> {
     let last = *x.last()?;
-    let floor = n as f64 * f64::EPSILON * (last.abs() + l_m); // formula: n u (|x| + L)
+    let floor = n as f64 * f64::EPSILON * (last.abs() + l_m); // formula: n eps (|x| + L)
     let k = x.len();
     let settled = k >= 4 && (k - 3..k).all(|j| (x[j] - x[j - 1]).abs() <= floor);
     if settled {
