@@ -12,11 +12,12 @@
 //! conclusive (a clean first-order ladder whose pre-asymptotic range is long).
 //!
 //! Where the ladder is not conclusive at the end (hopping gaits, issue 29: impacts
-//! quantized to the step make its error erratic, and the gait amplifies it), the two are
-//! compared at the latest whole drive period at which the ladder is conclusive (chosen from
-//! Moreau-Jean's ladder alone, never from the gap), and the verdict states why the end
-//! is out of reach: how far an event-driven run started `PERTURB_RAD` away moves by that
-//! period and by the end ([`Sensitivity`]).
+//! quantized to the step make its error erratic, and the gait amplifies it), or the gap
+//! is within [`FS`] times its estimate, the run is checked window by window
+//! ([`windows`]): Moreau-Jean started from the event-driven state at the start of every
+//! window of at most a drive period must reach the event-driven state at its end within
+//! its own estimate there; the verdict states why the end is out of reach: how far an
+//! event-driven run started `PERTURB_RAD` away moves by the end ([`Sensitivity`]).
 //!
 //! One more scene per run has a rod light enough for the composite (`alpha >= 1e9`):
 //! there Moreau-Jean is no reference (its steps would have to resolve the rod's own time
@@ -41,12 +42,12 @@ use locomotion_workbook::physics::stick::StickParams;
 use locomotion_workbook::physics::stick_inertia::run::{
     initial_state, run_from_rest, simulate_inertia, InertiaOutcome, InertiaRun,
 };
-use locomotion_workbook::physics::stick_inertia::timestepping::{
-    mj_run, mj_run_observed, MjSelection,
-};
+use locomotion_workbook::physics::stick_inertia::timestepping::{mj_run, MjSelection};
 use locomotion_workbook::physics::stick_inertia::{
-    ImpactLaw, InertiaModel, InertiaParams, State, TH, XC,
+    ImpactLaw, InertiaModel, InertiaParams, State, TH,
 };
+
+mod windows;
 
 /// Chapter 8's seed (each chapter's random tests draw from their own);
 /// `WORKBOOK_FUZZ_SEED` replaces it, to try fresh scenes.
@@ -72,14 +73,13 @@ const PERTURB_RAD: f64 = 1e-9;
 /// verified (P. J. Roache, Verification and Validation in Computational Science and
 /// Engineering, 1998, the grid convergence index: 3, and 1.25 once three or more grids
 /// confirm the order): a gap beyond Moreau-Jean's estimate but within `FS` times it is
-/// not called a disagreement but an inconclusive scene ([`Verdict::Unsure`]): the
-/// estimate is not trusted that far. (On the long run's 23 hopping scenes, 1 of 410
-/// conclusive period samples missed the event-driven answer by 2.6 times its estimate,
-/// long-run scene 91 at 0.95 s, on a plateau of the ladder that finer steps leave; with
-/// two levels fewer, two more by 1.6 and 1.9 times.)
+/// not called a disagreement but unsure ([`Verdict::Unsure`]): the estimate is not
+/// trusted that far. At the end an unsure scene is checked window by window; an unsure
+/// window fails the scene. (On the long run's 23 hopping scenes, 1 of 410 conclusive
+/// period samples of whole-run ladders missed the event-driven answer by 2.6 times its
+/// estimate, long-run scene 91 at 0.95 s, on a plateau of the ladder that finer steps
+/// leave; with two levels fewer, two more by 1.6 and 1.9 times.)
 const FS: f64 = 3.0;
-/// At most this share of the scenes may be inconclusive (Moreau-Jean not converged).
-const MAX_INCONCLUSIVE: f64 = 0.25;
 /// The event-driven runs' rtol and atol.
 const RTOL: f64 = 1e-10;
 
@@ -128,37 +128,39 @@ enum Verdict {
     /// gives another answer (the contact problem had two solutions: the rule decides, not
     /// the integration).
     Agree(f64, f64, bool),
-    /// Moreau-Jean conclusive only up to a whole drive period before the end: the two
-    /// agree there (time in s, gap and bound in m), and the measured reason the end is out
-    /// of the ladder's reach.
-    AgreeUntil {
-        t_s: f64,
-        gap_m: f64,
-        bound_m: f64,
+    /// Moreau-Jean not conclusive at the end; the event-driven run agrees with it on
+    /// every window of at most a drive period, Moreau-Jean started from the
+    /// event-driven state at each window's start ([`windows`]): the windows, how many
+    /// halvings an inconclusive window needed, the largest ratio of a window's gap to its
+    /// bound and that window, and the measured growth of a perturbation to the end.
+    AgreeWindowed {
+        windows: usize,
+        halvings: usize,
+        worst_gap_over_bound: f64,
+        worst: String,
         why: Sensitivity,
     },
-    /// Outside Moreau-Jean's estimate but within [`FS`] times it (the comparison).
+    /// Outside Moreau-Jean's estimate but within [`FS`] times it, or a window not
+    /// conclusive even halved (the comparison).
     Unsure(String),
-    /// The event-driven run said it cannot vouch for its answer (its outcome).
+    /// A run said it cannot vouch for its answer (which run, and its outcome with the
+    /// reason).
     SaysInvalid(String),
-    /// Moreau-Jean not converged at any whole period: the ladder at the end (m), or
-    /// shorter where a step had no contact solution, and the measured sensitivity.
-    MjNotConverged(Vec<f64>, Sensitivity),
     /// A disagreement (the description).
     Disagree(String),
 }
 
-/// How well-conditioned C's displacement is: the event-driven run started from
-/// `theta(0) + PERTURB_RAD` against the run, at the whole drive periods and the end.
+/// How well-conditioned C's displacement at the end is: the event-driven run started
+/// from `theta(0) + PERTURB_RAD` against the run.
 #[derive(Debug)]
 #[allow(dead_code)]
 struct Sensitivity {
-    /// Largest change of C's displacement up to the comparison's period (m; 0: none).
-    upto_m: f64,
-    /// Its change at the end (m).
+    /// The perturbation as P's displacement about C, `L PERTURB_RAD` (m).
+    start_m: f64,
+    /// The change of C's displacement at the end (m).
     end_m: f64,
-    /// `end_m / upto_m`: how much a perturbation grows from the comparison to the end
-    /// (a Lyapunov-type factor; infinite when there was no comparison).
+    /// `end_m / start_m`: how much the dynamics amplify a defect of the state from the
+    /// start to the end (a Lyapunov-type factor).
     growth: f64,
     /// Impacts of the run and of the perturbed run (a different count: a grazing
     /// landing gained or lost).
@@ -184,15 +186,9 @@ fn event_driven(md: &InertiaModel, dur: f64) -> (InertiaRun, f64) {
     (run, d)
 }
 
-/// Whole drive periods strictly before `t_s` (the samples before the end).
-fn whole_periods(t_s: f64, period_s: f64) -> usize {
-    ((t_s / period_s) * (1.0 - 1e-12)).floor() as usize
-}
-
 /// C's displacement (m) in the event-driven run of `md` from rest, its angle moved by
-/// `dth_rad`, over `dur` at `rtol`: at every whole drive period before the end (`NaN`
-/// where no trace sample fell on it) and at the end; with the run.
-fn event_driven_at(md: &InertiaModel, dur: f64, rtol: f64, dth_rad: f64) -> (InertiaRun, Vec<f64>) {
+/// `dth_rad`, over `dur` at `rtol`, with the run.
+fn event_driven_at(md: &InertiaModel, dur: f64, rtol: f64, dth_rad: f64) -> (InertiaRun, f64) {
     let th = md.p.static_angle().unwrap_or(md.p.base.theta0_rad);
     let mut y0 = initial_state(md, 0.0, th);
     y0[TH] += dth_rad;
@@ -200,20 +196,9 @@ fn event_driven_at(md: &InertiaModel, dur: f64, rtol: f64, dth_rad: f64) -> (Ine
         control: StepControl::tol(rtol, rtol),
         ..opts()
     };
-    let tp = md.period_s;
-    let run = simulate_inertia(md, 0.0, y0, dur, &o, tp);
-    let n = whole_periods(run.end_time_s, tp);
-    let mut x: Vec<f64> = (1..=n)
-        .map(|j| {
-            let t = j as f64 * tp;
-            run.trace
-                .iter()
-                .find(|s| (s.t_s - t).abs() <= 1e-9 * tp)
-                .map_or(f64::NAN, |s| s.y[XC] - y0[XC])
-        })
-        .collect();
-    x.push(run.mean_velocity_mps * run.end_time_s);
-    (run, x)
+    let run = simulate_inertia(md, 0.0, y0, dur, &o, 0.0);
+    let d = run.mean_velocity_mps * run.end_time_s;
+    (run, d)
 }
 
 /// A Painleve event the run reports must be there, at the same time, when rtol is 100
@@ -284,7 +269,13 @@ fn tail_estimate(x: &[f64]) -> Option<(f64, f64)> {
 /// within 2.6e-5 m); `None` when neither is conclusive. The plain ladder comes first:
 /// the choice never looks at the event-driven answer.
 fn mj_estimate(x: &[f64]) -> Option<(f64, f64)> {
-    let conclusive = |e: Option<(f64, f64)>| e.filter(|&(_, est)| est <= MJ_CONCLUSIVE_M);
+    mj_estimate_within(x, MJ_CONCLUSIVE_M)
+}
+
+/// [`mj_estimate`] with the conclusive bound `bound_m` (m) instead of
+/// [`MJ_CONCLUSIVE_M`] (a window's share of it, [`windows`]).
+fn mj_estimate_within(x: &[f64], bound_m: f64) -> Option<(f64, f64)> {
+    let conclusive = |e: Option<(f64, f64)>| e.filter(|&(_, est)| est <= bound_m);
     conclusive(tail_estimate(x)).or_else(|| {
         let r: Vec<f64> = x.windows(2).map(|w| 2.0 * w[1] - w[0]).collect(); // formula: R_k = 2 x_k - x_{k-1}
         conclusive(tail_estimate(&r))
@@ -293,29 +284,17 @@ fn mj_estimate(x: &[f64]) -> Option<(f64, f64)> {
 
 /// One level of Moreau-Jean's ladder (the stuck contact persisting, as in the
 /// event-driven rules), `steps` steps per drive period over `t`: C's displacement (m) at
-/// every whole period before `t` and at `t`; `None` if a step had no contact solution.
-fn mj_level(md: &InertiaModel, y0: &State, t: f64, steps: u64) -> Option<Vec<f64>> {
-    let n = whole_periods(t, md.period_s);
-    let mut x = Vec::with_capacity(n + 1);
+/// `t`; `None` if a step had no contact solution.
+fn mj_level(md: &InertiaModel, y0: &State, t: f64, steps: u64) -> Option<f64> {
     let h = md.period_s / steps as f64;
-    let r = mj_run_observed(md, y0, t, h, MjSelection::StickPersists, |k, _, d| {
-        if k % steps == 0 && (k / steps) as usize <= n {
-            x.push(d);
-        }
-    })?;
-    x.push(r.mean_velocity_mps * t);
-    Some(x)
-}
-
-/// The ladder's column at sample `j` (one output at every level).
-fn column(ladder: &[Vec<f64>], j: usize) -> Vec<f64> {
-    ladder.iter().map(|l| l[j]).collect()
+    let r = mj_run(md, y0, t, h, MjSelection::StickPersists)?;
+    Some(r.mean_velocity_mps * t)
 }
 
 /// Runs Moreau-Jean down the ladder `T/800, T/1600, ...` to `T/(800 2^max_level)` and
 /// stops at the first level whose conclusive estimate of the end covers the event-driven
 /// `d_ev` (within `tol_ev`); otherwise the finest level's conclusive estimate, or
-/// `Err(ladder)` (every level's samples, [`mj_level`]) when the end is not conclusive.
+/// `Err(ladder)` (the answers of the levels run) when the end is not conclusive.
 fn mj_answer(
     md: &InertiaModel,
     y0: &State,
@@ -323,7 +302,7 @@ fn mj_answer(
     d_ev: f64,
     tol_ev: f64,
     max_level: u32,
-) -> Result<(f64, f64, f64), Vec<Vec<f64>>> {
+) -> Result<(f64, f64, f64), Vec<f64>> {
     let mut ladder = Vec::new();
     for k in 0..=max_level {
         let steps = (MJ_STEPS as u64) << k;
@@ -331,8 +310,7 @@ fn mj_answer(
             Some(x) => ladder.push(x),
             None => return Err(ladder),
         }
-        let end = column(&ladder, ladder[0].len() - 1);
-        if let Some((reference, est)) = mj_estimate(&end) {
+        if let Some((reference, est)) = mj_estimate(&ladder) {
             let covers = (d_ev - reference).abs() <= est + tol_ev;
             if covers || k == max_level {
                 return Ok((reference, est, md.period_s / steps as f64));
@@ -342,41 +320,19 @@ fn mj_answer(
     Err(ladder)
 }
 
-/// The latest whole drive period at which the ladder is conclusive and the event-driven
-/// sample `x_ev` exists: `(sample index, reference, estimate)`. Chosen from the ladder
-/// alone, never from the gap.
-fn latest_conclusive(ladder: &[Vec<f64>], x_ev: &[f64]) -> Option<(usize, f64, f64)> {
-    let n = ladder.first()?.len();
-    (0..n - 1).rev().find_map(|j| {
-        let (r, e) = x_ev[j]
-            .is_finite()
-            .then(|| mj_estimate(&column(ladder, j)))??;
-        Some((j, r, e))
-    })
-}
-
-/// The measured sensitivity of C's displacement `x_ev` (the run `run` of `md` over
-/// `dur`): an event-driven run from `theta(0) + PERTURB_RAD`, compared up to sample
-/// `upto` (none: `None`) and at the end.
-fn sensitivity(
-    md: &InertiaModel,
-    dur: f64,
-    run: &InertiaRun,
-    x_ev: &[f64],
-    upto: Option<usize>,
-) -> Sensitivity {
-    let (pr, xp) = event_driven_at(md, dur, RTOL, PERTURB_RAD);
-    let diff = |j: usize| xp.get(j).map_or(f64::NAN, |x| (x - x_ev[j]).abs());
-    let upto_m = upto.map_or(0.0, |u| (0..=u).map(diff).fold(0.0, f64::max));
-    let end_m = if xp.len() == x_ev.len() {
-        diff(x_ev.len() - 1)
-    } else {
-        (xp[xp.len() - 1] - x_ev[x_ev.len() - 1]).abs() // a perturbed run that ended elsewhere
-    };
+/// The measured sensitivity of C's displacement `d_ev` at the end of the run `run` of
+/// `md` over `dur`: an event-driven run from `theta(0) + PERTURB_RAD`; the growth is
+/// counted from the perturbation itself as P's displacement about C (`L PERTURB_RAD`),
+/// so it is how much the dynamics amplify a defect of the state from the start to the
+/// end.
+fn sensitivity(md: &InertiaModel, dur: f64, run: &InertiaRun, d_ev: f64) -> Sensitivity {
+    let (pr, dp) = event_driven_at(md, dur, RTOL, PERTURB_RAD);
+    let start_m = md.p.base.length_m * PERTURB_RAD; // formula: L dtheta
+    let end_m = (dp - d_ev).abs();
     Sensitivity {
-        upto_m,
+        start_m,
         end_m,
-        growth: end_m / upto_m, // formula: growth = |dx(end)| / max_{t <= t*} |dx(t)|
+        growth: end_m / start_m, // formula: growth = |dx_C(end)| / (L dtheta(0))
         impacts: (run.impact_count, pr.impact_count),
     }
 }
@@ -398,18 +354,29 @@ fn ev_tolerance(md: &InertiaModel, t: f64, gap: f64, est: f64, tight: impl FnOnc
 /// Compares the event-driven model of `p_ev` with Moreau-Jean on `p` over `dur` (the
 /// two are the same except in the test that a perturbed model fails).
 fn compare(p: &InertiaParams, p_ev: &InertiaParams, dur: f64, max_level: u32) -> Verdict {
+    compare_with(p, p_ev, dur, max_level, forced_windowed())
+}
+
+/// [`compare`]; `windows_only`: the windowed comparison on every scene, the end
+/// comparison skipped ([`windows`]).
+fn compare_with(
+    p: &InertiaParams,
+    p_ev: &InertiaParams,
+    dur: f64,
+    max_level: u32,
+    windows_only: bool,
+) -> Verdict {
     let mut md = InertiaModel::new(*p);
     md.impact_law = ImpactLaw::VelocityCoulomb;
     let mut md_ev = InertiaModel::new(*p_ev);
     md_ev.impact_law = ImpactLaw::VelocityCoulomb;
-    let (run, x_ev) = event_driven_at(&md_ev, dur, RTOL, 0.0);
-    let d_ev = x_ev[x_ev.len() - 1];
+    let (run, d_ev) = event_driven_at(&md_ev, dur, RTOL, 0.0);
     if !run.bridges.is_empty() {
         eprintln!("  Moreau-Jean bridges: {:?}", run.bridges);
     }
     match &run.outcome {
         InertiaOutcome::Completed | InertiaOutcome::Fell => {}
-        o => return Verdict::SaysInvalid(format!("{} {o:?}", o.label())),
+        o => return Verdict::SaysInvalid(format!("the event-driven run: {} {o:?}", o.label())),
     }
     if let Some(w) = painleve_persists(&md_ev, dur, &run) {
         return Verdict::Disagree(w);
@@ -420,21 +387,30 @@ fn compare(p: &InertiaParams, p_ev: &InertiaParams, dur: f64, max_level: u32) ->
     }
     let tol_ev = ev_tolerance(&md_ev, t, 0.0, 0.0, || 0.0); // the budget
     let y0 = initial_state(&md, 0.0, p.static_angle().unwrap_or(p.base.theta0_rad));
+    if windows_only {
+        return windowed(&md, &md_ev, dur, &run, d_ev, max_level);
+    }
     let (reference, est, h) = match mj_answer(&md, &y0, t, d_ev, tol_ev, max_level) {
         Ok(a) => a,
-        Err(ladder) => return until_verdict(&md_ev, dur, &run, &x_ev, &ladder),
+        Err(_) => return windowed(&md, &md_ev, dur, &run, d_ev, max_level),
     };
     let gap = (d_ev - reference).abs();
     let tol_ev = ev_tolerance(&md_ev, t, gap, est, || {
         let (_, tight) = event_driven_at(&md_ev, dur, RTOL / 100.0, 0.0);
-        (tight[tight.len() - 1] - d_ev).abs()
+        (tight - d_ev).abs()
     });
     if gap > est + tol_ev {
         let w = format!(
             "velocity-Coulomb law: event-driven {d_ev:.9} m, Moreau-Jean {reference:.9} m (estimate {est:.2e} at h = T/{:.0})",
             md.period_s / h
         );
-        return beyond(gap, est, tol_ev, w);
+        return match beyond(gap, est, tol_ev, w) {
+            Verdict::Unsure(w) => {
+                eprintln!("  the end is unsure ({w}): checked window by window");
+                windowed(&md, &md_ev, dur, &run, d_ev, max_level)
+            }
+            v => v,
+        };
     }
     // the time-stepper's own preference (separation wherever consistent) at the same step
     let open = mj_run(&md, &y0, t, h, MjSelection::FirstOpen);
@@ -465,41 +441,26 @@ fn beyond(gap: f64, est: f64, tol_ev: f64, what: String) -> Verdict {
     }
 }
 
-/// Where Moreau-Jean's ladder is not conclusive at the end: the comparison at the latest
-/// whole drive period at which it is ([`latest_conclusive`]), with the measured reason
-/// the end is out of reach ([`sensitivity`]); `MjNotConverged` when no period is
-/// conclusive. (The Darboux-Keller and rule checks need the end; they are not made here.)
-fn until_verdict(
+/// The windowed verdict ([`windows`]) of a scene whose end Moreau-Jean (model `md`)
+/// cannot conclude, with the growth of the `PERTURB_RAD` perturbation of `theta(0)` from
+/// the start (as P's displacement about C, `L PERTURB_RAD`) to the end: how much the
+/// dynamics amplify a defect ([`sensitivity`]).
+fn windowed(
+    md: &InertiaModel,
     md_ev: &InertiaModel,
     dur: f64,
     run: &InertiaRun,
-    x_ev: &[f64],
-    ladder: &[Vec<f64>],
+    d_ev: f64,
+    max_level: u32,
 ) -> Verdict {
-    let Some((j, reference, est)) = latest_conclusive(ladder, x_ev) else {
-        let end = ladder.first().map_or(0, |l| l.len() - 1);
-        let why = sensitivity(md_ev, dur, run, x_ev, None);
-        return Verdict::MjNotConverged(column(ladder, end), why);
-    };
-    let t = (j + 1) as f64 * md_ev.period_s;
-    let gap = (x_ev[j] - reference).abs();
-    let tol_ev = ev_tolerance(md_ev, t, gap, est, || {
-        let (_, tight) = event_driven_at(md_ev, dur, RTOL / 100.0, 0.0);
-        tight.get(j).map_or(f64::INFINITY, |x| (x - x_ev[j]).abs())
-    });
-    if gap.is_nan() || gap > est + tol_ev {
-        let w = format!(
-            "at t = {t:.4} s (Moreau-Jean conclusive up to there): event-driven {:.9} m, Moreau-Jean {reference:.9} m (estimate {est:.2e})",
-            x_ev[j]
-        );
-        return beyond(gap, est, tol_ev, w);
-    }
-    Verdict::AgreeUntil {
-        t_s: t,
-        gap_m: gap,
-        bound_m: est + tol_ev,
-        why: sensitivity(md_ev, dur, run, x_ev, Some(j)),
-    }
+    let why = || sensitivity(md_ev, dur, run, d_ev);
+    windows::windowed_verdict(md, md_ev, run.end_time_s, max_level, why)
+}
+
+/// `CH8_DIFF_WINDOWED=1`: every scene is checked window by window, the end comparison
+/// skipped (a cross-check of the windowed comparison on scenes whose end is conclusive).
+fn forced_windowed() -> bool {
+    std::env::var("CH8_DIFF_WINDOWED").is_ok_and(|v| v == "1")
 }
 
 /// A light rod past the composite's switch (`alpha >= 1e9`, 1 kg tip): the composite
@@ -515,7 +476,10 @@ fn compare_composite(p: &InertiaParams, dur: f64) -> Verdict {
     assert!(uses_composite(p), "{p:?}");
     let c = composite(p, dur, &opts());
     if c.reference.outcome != InertiaOutcome::Completed {
-        return Verdict::SaysInvalid(c.reference.outcome.label().to_string());
+        return Verdict::SaysInvalid(format!(
+            "the composite's reference run: {:?}",
+            c.reference.outcome
+        ));
     }
     let below = InertiaParams {
         rod_mass_kg: 3e-9 * (p.base.mass_kg + p.rod_mass_kg),
@@ -523,7 +487,10 @@ fn compare_composite(p: &InertiaParams, dur: f64) -> Verdict {
     };
     let full = run_from_rest(&InertiaModel::new(below), dur, &opts(), 0.0);
     if full.outcome != InertiaOutcome::Completed {
-        return Verdict::SaysInvalid(full.outcome.label().to_string());
+        return Verdict::SaysInvalid(format!(
+            "the full model below the switch: {:?}",
+            full.outcome
+        ));
     }
     let cb = composite(&below, dur, &opts());
     // the speed's change from the light rod to the rod below the switch is the
@@ -555,21 +522,22 @@ fn seed() -> u64 {
 }
 
 /// Draws `n` scenes of `dur` and compares them (Moreau-Jean refined to at most
-/// `T/(800 2^max_level)`); panics on a disagreement, when more than
-/// [`MAX_INCONCLUSIVE`] of the scenes are inconclusive (Moreau-Jean not converged), or
-/// when none agrees. `CH8_DIFF_ONLY=i` runs scene `i` alone (the draws stay the same).
+/// `T/(800 2^max_level)`); panics on a disagreement, on a scene that is inconclusive
+/// (neither agreeing, at the end or window by window, nor said invalid: issue 29 allows
+/// no third outcome), or when none agrees. `CH8_DIFF_ONLY=i,j,...` runs those scenes alone (the draws stay the
+/// same).
 fn differential(n: usize, dur: f64, max_level: u32) {
     let seed = seed();
-    let only: Option<usize> = std::env::var("CH8_DIFF_ONLY")
+    let only: Option<Vec<usize>> = std::env::var("CH8_DIFF_ONLY")
         .ok()
-        .and_then(|s| s.parse().ok());
+        .map(|s| s.split(',').filter_map(|i| i.trim().parse().ok()).collect());
     eprintln!("ch8 differential: seed {seed} (WORKBOOK_FUZZ_SEED to change)");
     let mut rng = Rng(seed.max(1));
     let (mut agree, mut said, mut inconclusive, mut rule, mut wrong) = (0, 0, 0, 0, Vec::new());
-    let (mut until, mut compliant) = (0, (0, 0));
+    let (mut windowed, mut compliant) = (0, (0, 0));
     for i in 0..n {
         let p = draw(&mut rng);
-        if only.is_some_and(|o| o != i) {
+        if only.as_ref().is_some_and(|o| !o.contains(&i)) {
             continue;
         }
         let v = compare(&p, &p, dur, max_level);
@@ -589,9 +557,9 @@ fn differential(n: usize, dur: f64, max_level: u32) {
                     }
                 }
             }
-            Verdict::AgreeUntil { .. } => until += 1,
+            Verdict::AgreeWindowed { .. } => windowed += 1,
             Verdict::SaysInvalid(_) => said += 1,
-            Verdict::MjNotConverged(..) | Verdict::Unsure(_) => inconclusive += 1,
+            Verdict::Unsure(_) => inconclusive += 1,
             Verdict::Disagree(w) => wrong.push(format!("scene {i} {p:?}: {w}")),
         }
     }
@@ -606,9 +574,11 @@ fn differential(n: usize, dur: f64, max_level: u32) {
             wrong.push(format!("composite scene {p:?}: {w}"));
         }
     }
-    let m = if only.is_some() { 1 } else { n };
+    let m = only
+        .as_ref()
+        .map_or(n, |o| o.iter().filter(|&&i| i < n).count());
     eprintln!(
-        "ch8 differential: {m} scenes, {agree} agree at the end ({rule} of them where Moreau-Jean preferring separation differs: two solutions), {until} agree up to the latest period Moreau-Jean is conclusive at (sensitivity measured), {said} say invalid, {inconclusive} inconclusive (Moreau-Jean not converged at any period, or the gap within {FS} times its estimate), {} disagree",
+        "ch8 differential: {m} scenes, {agree} agree at the end ({rule} of them where Moreau-Jean preferring separation differs: two solutions), {windowed} agree window by window (the end out of Moreau-Jean's reach; growth measured), {said} say invalid, {inconclusive} inconclusive (a window not conclusive, or a gap within {FS} times its estimate), {} disagree",
         wrong.len()
     );
     eprintln!(
@@ -617,10 +587,10 @@ fn differential(n: usize, dur: f64, max_level: u32) {
     );
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
     assert!(
-        inconclusive as f64 <= MAX_INCONCLUSIVE * m as f64,
-        "{inconclusive} of {m} scenes inconclusive (Moreau-Jean not converged): at most {MAX_INCONCLUSIVE} of them may be"
+        inconclusive == 0,
+        "{inconclusive} of {m} scenes inconclusive: neither agreeing nor said invalid"
     );
-    assert!(agree + until > 0 || only.is_some());
+    assert!(agree + windowed > 0 || only.is_some());
 }
 
 #[test]
@@ -646,13 +616,53 @@ fn a_perturbed_event_driven_model_fails_the_comparison() {
                 caught += 1;
                 conclusive += 1;
             }
-            Verdict::Agree(..) | Verdict::AgreeUntil { .. } => conclusive += 1,
+            Verdict::Agree(..) | Verdict::AgreeWindowed { .. } => conclusive += 1,
             _ => {}
         }
     }
     assert!(
         caught > 0 && 2 * caught >= conclusive,
         "a 1 % stiffer spring was caught on {caught} of {conclusive} conclusive scenes"
+    );
+}
+
+/// The windowed comparison ([`windows`]) on the CI scenes, whose ends are conclusive:
+/// every scene agrees window by window (or its run says it cannot vouch for it); with
+/// the event-driven spring 1 % too stiff no scene agrees, and at least half disagree
+/// outright (a window past [`FS`] times Moreau-Jean's estimate). Measured at the default
+/// seed: 8 of 8 agree, 8 of 8 perturbed disagree; at the seeds 1 to 7, 32648, 8453,
+/// 17445 and 10877 87 of 88 perturbed scenes disagree and one (seed 8453, scene 4) is
+/// unsure, its last three windows off by 1.6 to 2.2 times their estimates.
+#[test]
+fn the_windowed_comparison_agrees_and_catches_a_stiffer_spring() {
+    let mut rng = Rng(seed().max(1));
+    let (mut wrong, mut passed, mut caught) = (Vec::new(), Vec::new(), 0);
+    for i in 0..CI_SCENES {
+        let p = draw(&mut rng);
+        let v = compare_with(&p, &p, 0.3, CI_MAX_LEVEL, true);
+        eprintln!("scene {i}, window by window: {v:?}");
+        if !matches!(v, Verdict::AgreeWindowed { .. } | Verdict::SaysInvalid(_)) {
+            wrong.push(format!("scene {i}: {v:?}"));
+        }
+        let mut q = p;
+        q.base.stiffness_nm_per_rad *= 1.01;
+        let v = compare_with(&p, &q, 0.3, CI_MAX_LEVEL, true);
+        eprintln!("perturbed scene {i}, window by window: {v:?}");
+        match v {
+            Verdict::Disagree(_) => caught += 1,
+            Verdict::AgreeWindowed { .. } => passed.push(format!("scene {i}: {v:?}")),
+            _ => {}
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert!(
+        passed.is_empty(),
+        "a 1 % stiffer spring agrees:\n{}",
+        passed.join("\n")
+    );
+    assert!(
+        2 * caught >= CI_SCENES,
+        "a 1 % stiffer spring caught on {caught} of {CI_SCENES} scenes"
     );
 }
 
@@ -695,12 +705,8 @@ fn chatter_against_moreau_jean(j: u32, max_level: u32) -> (f64, f64, f64, usize)
     let t = run.end_time_s;
     let tol_ev = RTOL * (b.length_m + b.plate.amplitude_m) * (1.0 + t / md.period_s); // formula: rtol (L + delta)(1 + t/T)
     let y0 = initial_state(&md, 0.0, p.static_angle().unwrap_or(b.theta0_rad));
-    let (reference, est, h) = mj_answer(&md, &y0, t, d_ev, tol_ev, max_level).unwrap_or_else(|x| {
-        panic!(
-            "Moreau-Jean not converged: {:?}",
-            x.iter().map(|l| l[l.len() - 1]).collect::<Vec<_>>()
-        )
-    });
+    let (reference, est, h) = mj_answer(&md, &y0, t, d_ev, tol_ev, max_level)
+        .unwrap_or_else(|x| panic!("Moreau-Jean not converged: {x:?}"));
     eprintln!(
         "map scene mu = {:.4}: event-driven {d_ev:.9} m ({} bridges), Moreau-Jean {reference:.9} m (estimate {est:.2e} at h = T/{:.0})",
         b.mu,
