@@ -2,7 +2,8 @@
 
 use super::energy::Budget;
 use super::{
-    InvalidReason, Mode, State, StickModel, StickStop, NSTATE, OM, TH, VXC, VZC, W_PLATE, XC, ZC,
+    InvalidReason, Mode, State, StickModel, StickStop, D_DAMP, D_FRIC, NSTATE, OM, ROD_X, ROD_Z,
+    TH, VXC, VZC, W_PLATE, XC, ZC,
 };
 use crate::numerics::events::CertifyStats;
 use crate::numerics::hybrid::{simulate, HybridSystem, Observer, Options, Outcome, Segment};
@@ -97,6 +98,48 @@ pub struct Violations {
     pub checked: usize,
 }
 
+/// What the energy budget's error bound needs to know of a run (chapter 6's
+/// `c6-c14-energy-budget`), recorded with [`Recording::check_invariants`] at the ends
+/// of every accepted step (the states the error control weighs) and at every event.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Extents {
+    /// Accepted steps seen (segments of the integrated modes).
+    pub steps: u64,
+    /// Largest `|theta'|` (rad/s).
+    pub omega_max_rad_s: f64,
+    /// Largest `|theta|` (rad).
+    pub theta_max_rad: f64,
+    /// Largest `|theta - theta_0|` (rad).
+    pub spring_max_rad: f64,
+    /// Largest `|xdot_c|` (m/s).
+    pub vxc_max_mps: f64,
+    /// Largest speed of P, `|v_P|` (m/s).
+    pub v_tip_max_mps: f64,
+    /// Largest `|theta''|` in contact (rad/s^2).
+    pub theta_dd_max_rad_s2: f64,
+    /// Largest contact force `|F|` (N).
+    pub force_max_n: f64,
+    /// Largest value of the mode's own (restarted) plate work, friction and damper
+    /// accumulators (J).
+    pub acc_max_j: f64,
+    /// Integral over the integrated steps of the carried rod direction's distance from
+    /// `(sin theta, cos theta)`, taken at each step's start (s): the exact flow keeps
+    /// that distance constant, so it changes only at step ends.
+    pub rod_drift_s: f64,
+    /// Largest such distance (1).
+    pub rod_drift_max: f64,
+    /// Sum over landings of `|h_c|` at the located event (m): the height the landing's
+    /// reset puts C onto the plate by.
+    pub landing_gap_sum_m: f64,
+    /// Sum over stops of a slide of `|xdot_c|` at the located stop (m/s): the slip the
+    /// pivot test's reset sets to zero.
+    pub stop_slip_sum_mps: f64,
+    /// The same sum of squares (m^2/s^2).
+    pub stop_slip_sq_sum: f64,
+    /// Events (mode switches and stops).
+    pub events: u64,
+}
+
 /// One sample of a trace.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sample {
@@ -165,6 +208,8 @@ pub struct RunSummary {
     pub sequence: String,
     /// Table 1 violations.
     pub violations: Violations,
+    /// The run's extents for the energy budget's bound (with `check_invariants`).
+    pub extents: Extents,
     /// Trace samples (canonical states; energy accumulators are running totals).
     pub trace: Vec<Sample>,
     /// Events: (time s, from, to) with `to = None` for the stop; at most [`LIST_CAP`].
@@ -251,6 +296,17 @@ struct Watch<'a> {
 impl Watch<'_> {
     fn check(&mut self, mode: Mode, t: f64, y: &State) {
         let m = self.model;
+        let x = &mut self.sum.extents;
+        let [_, _, vxp, vzp] = m.tip(y);
+        x.omega_max_rad_s = x.omega_max_rad_s.max(y[OM].abs());
+        x.theta_max_rad = x.theta_max_rad.max(y[TH].abs());
+        x.spring_max_rad = x.spring_max_rad.max((y[TH] - m.p.theta0_rad).abs());
+        x.vxc_max_mps = x.vxc_max_mps.max(y[VXC].abs());
+        x.v_tip_max_mps = x.v_tip_max_mps.max(vxp.hypot(vzp));
+        if let Some(e) = m.contact_eval(mode, t, y) {
+            x.theta_dd_max_rad_s2 = x.theta_dd_max_rad_s2.max(e.theta_dd.abs());
+            x.force_max_n = x.force_max_n.max(e.fx.hypot(e.fz));
+        }
         let v = &mut self.sum.violations;
         v.checked += 1;
         match m.contact_eval(mode, t, y) {
@@ -296,6 +352,19 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
             self.enter(mode);
         }
         if self.rec.check_invariants {
+            if mode != Mode::Flight {
+                let x = &mut self.sum.extents;
+                x.steps += 1;
+                let drift = |y: &State| {
+                    let (s, c) = crate::numerics::trig::sin_cos(y[TH]);
+                    (y[ROD_X] - s).hypot(y[ROD_Z] - c)
+                };
+                x.rod_drift_s += (seg.t1 - seg.t0) * drift(&seg.y0);
+                x.rod_drift_max = x.rod_drift_max.max(drift(&seg.y0)).max(drift(&seg.y1));
+                for k in [W_PLATE, D_FRIC, D_DAMP] {
+                    x.acc_max_j = x.acc_max_j.max(seg.y0[k].abs()).max(seg.y1[k].abs());
+                }
+            }
             let y1 = self.model.canonical(mode, seg.t1, &seg.y1);
             self.check(mode, seg.t1, &y1);
         }
@@ -328,6 +397,17 @@ impl Observer<Mode, NSTATE> for Watch<'_> {
     ) {
         let to = after.map(|(m, _)| m);
         self.sum.event_count += 1;
+        if self.rec.check_invariants {
+            let x = &mut self.sum.extents;
+            x.events += 1;
+            if from == Mode::Flight && guard == 0 {
+                x.landing_gap_sum_m += self.model.h_c(t, _before).abs();
+            } else if from != Mode::Flight && from != Mode::Pivot && guard == 2 {
+                let slip = _before[VXC].abs();
+                x.stop_slip_sum_mps += slip;
+                x.stop_slip_sq_sum += slip * slip;
+            }
+        }
         if self.rec.sequence_cap > 0 && self.sum.events.len() < self.rec.list_cap() {
             self.sum.events.push((t, from, to));
             if self.sum.switches.len() < self.rec.sequence_cap {
@@ -420,6 +500,7 @@ fn empty_summary(t0: f64, y0: State) -> RunSummary {
         cycles: 0.0,
         sequence: String::new(),
         violations: Violations::default(),
+        extents: Extents::default(),
         trace: Vec::new(),
         events: Vec::new(),
         event_count: 0,
