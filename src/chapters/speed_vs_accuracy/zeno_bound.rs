@@ -147,4 +147,16 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn the_bound_is_finite_and_at_least_a_step_at_the_flag_box_corners() {
+        // --restitution accepts any e in (0, 0.8]: the envelopes must stay finite at
+        // e -> 0 (x_k and p overflow to infinity there and are never evaluated).
+        for e in [1e-300, 1e-12, 1e-6, 0.8] {
+            for g in [1.0, 25.0] {
+                let b = mj_rest_bound_s(e, g, 1e-3, 1.0);
+                assert!((1e-3..0.2).contains(&b), "e {e} g {g}: {b}");
+            }
+        }
+    }
 }
