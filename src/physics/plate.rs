@@ -52,6 +52,11 @@ pub trait PlateMotion: Send + Sync {
     fn breakpoint_after(&self, _t: f64) -> Option<f64> {
         None
     }
+    /// Bounds over all t of `[|v_xp|, |a_xp|, |v_zp|, |a_zp|]` (m/s, m/s^2), where the
+    /// motion knows them (`None`: unknown; the block then reads the values at t).
+    fn peak_rates(&self) -> Option<[f64; 4]> {
+        None
+    }
 }
 
 /// `u = amplitude_m sin(omega t + phase_rad)` along `axis`.
@@ -159,6 +164,16 @@ impl PlateMotion for Harmonic {
     fn period_s(&self) -> f64 {
         TAU / self.omega_rad_s
     }
+    fn peak_rates(&self) -> Option<[f64; 4]> {
+        let (v, a) = (
+            self.peak_velocity_mps().abs(),
+            self.peak_acceleration_mps2().abs(),
+        ); // formula: |v| <= delta w, |a| <= delta w^2
+        Some(match self.axis {
+            Axis::X => [v, a, 0.0, 0.0],
+            Axis::Z => [0.0, 0.0, v, a],
+        })
+    }
 }
 
 /// Two-velocity horizontal sawtooth: `+slow_velocity_mps` for `slow_duration_s`, then
@@ -252,6 +267,13 @@ impl PlateMotion for Sawtooth {
     fn breakpoint_after(&self, t: f64) -> Option<f64> {
         Some(self.breakpoint(self.piece_index(t) + 1))
     }
+    fn peak_rates(&self) -> Option<[f64; 4]> {
+        let v = self
+            .slow_velocity_mps
+            .abs()
+            .max(self.fast_velocity_mps.abs()); // formula: |v| <= max(v_s, v_f), a = 0 between jumps
+        Some([v, 0.0, 0.0, 0.0])
+    }
 }
 
 /// Smooth asymmetric horizontal drive `v_p = V (sin(omega t) + eps cos(2 omega t))`,
@@ -293,6 +315,14 @@ impl PlateMotion for Biharmonic {
     }
     fn period_s(&self) -> f64 {
         TAU / self.omega_rad_s
+    }
+    fn peak_rates(&self) -> Option<[f64; 4]> {
+        let (v, w, e) = (
+            self.velocity_amplitude_mps.abs(),
+            self.omega_rad_s.abs(),
+            self.asymmetry.abs(),
+        );
+        Some([v * (1.0 + e), v * w * (1.0 + 2.0 * e), 0.0, 0.0]) // formula: |v_p| <= V (1 + eps), |a_p| <= V w (1 + 2 eps)
     }
 }
 

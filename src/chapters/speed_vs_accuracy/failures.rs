@@ -6,8 +6,9 @@ use crate::numerics::hybrid::{Options, Outcome};
 use crate::numerics::ode::{Integrator, Method, OdeError, StepControl};
 use crate::numerics::timestepping::{self as mj, ContactStatus, MjOptions};
 use crate::physics::block::contact_form::BlockContact;
-use crate::physics::block::{simulate_block, BlockOptions};
+use crate::physics::block::{simulate_block, BlockOptions, BlockParams};
 use crate::physics::plate::{Axis, Harmonic};
+use super::zeno_bound::mj_rest_bound_s;
 use serde_json::{json, Value};
 
 /// One observed failure: `{method, scene, symptom}`.
@@ -136,6 +137,8 @@ pub struct ZenoOutcome {
     pub ball_t_inf_s: f64,
     /// Ball: time from which Moreau-Jean (h = 1 ms) keeps it at rest (s), NaN if never.
     pub ball_mj_rest_s: f64,
+    /// Ball: the derived bound on |t_rest - t_inf| for that run (s), `zeno_bound.rs`.
+    pub ball_mj_rest_bound_s: f64,
     /// Block on the plate without a rest threshold: events over the run.
     pub events_chattering: u64,
     /// Block with the sticking transition: events over the run.
@@ -189,25 +192,7 @@ pub fn zeno(
         Outcome::Zeno { t_s, .. } => Some(t_s),
         _ => None,
     };
-    let mut rest = f64::NAN;
-    if let Some(contact) = BlockContact::new(ball, &floor) {
-        let _ = mj::simulate(
-            &contact,
-            0.0,
-            [0.0, 1.0],
-            [0.0, 0.0],
-            t_run,
-            &MjOptions::midpoint(1e-3),
-            |s| {
-                let resting = s.impulse.status == ContactStatus::Stick && s.v1[1].abs() < 1e-12;
-                if !resting {
-                    rest = f64::NAN;
-                } else if rest.is_nan() {
-                    rest = s.t1;
-                }
-            },
-        );
-    }
+    let rest = mj_ball_rest_s(ball, &floor, t_run);
     let s = scene.with_restitution(e, 0.0);
     let chattering = drift_block_model(&s, &Options::default(), true, 64, transient, cycles);
     let s = scene.with_restitution(e, 1e-4);
@@ -224,6 +209,7 @@ pub fn zeno(
         ball_zeno_at_s,
         ball_t_inf_s,
         ball_mj_rest_s: rest,
+        ball_mj_rest_bound_s: mj_rest_bound_s(e, g, MJ_BALL_STEP_S, 1.0),
         events_chattering: chattering.events,
         events_sticking: sticking.events,
         drift_sticking_mps: value(&sticking),
@@ -233,3 +219,32 @@ pub fn zeno(
     }
 }
 
+/// Moreau-Jean's step on the Zeno ball (s).
+pub(super) const MJ_BALL_STEP_S: f64 = 1e-3;
+
+/// The time (s) from which Moreau-Jean (h = 1 ms, theta = 1/2) keeps the `ball` (its
+/// params, dropped from 1 m) at rest on the `floor` over `[0, t_run]`: the end of the
+/// first step of the final run of sticking steps ending with |v| < 1e-12 m/s; NaN if
+/// it never rests.
+pub(super) fn mj_ball_rest_s(ball: BlockParams, floor: &Harmonic, t_run: f64) -> f64 {
+    let mut rest = f64::NAN;
+    if let Some(contact) = BlockContact::new(ball, floor) {
+        let _ = mj::simulate(
+            &contact,
+            0.0,
+            [0.0, 1.0],
+            [0.0, 0.0],
+            t_run,
+            &MjOptions::midpoint(MJ_BALL_STEP_S),
+            |s| {
+                let resting = s.impulse.status == ContactStatus::Stick && s.v1[1].abs() < 1e-12;
+                if !resting {
+                    rest = f64::NAN;
+                } else if rest.is_nan() {
+                    rest = s.t1;
+                }
+            },
+        );
+    }
+    rest
+}

@@ -30,6 +30,7 @@ mod stick_methods_soft;
 mod stick_part;
 mod tables;
 mod work_precision;
+mod zeno_bound;
 
 use super::Context;
 // the block's benchmark scene and the timed runs (`crate::scenes`), as `super::...` here

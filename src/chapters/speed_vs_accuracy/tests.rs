@@ -6,10 +6,12 @@
 //! mutations and bad input per flag: `tests/speed_vs_accuracy.rs`.
 
 use super::economy::flight_map_drift;
-use super::failures::blows_up;
+use super::failures::{blows_up, mj_ball_rest_s};
+use super::zeno_bound::mj_rest_bound_s;
 use super::Document;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::Method;
+use crate::physics::plate::{Axis, Harmonic};
 use crate::report::falsify::quick_evidence;
 use crate::scenes::block::BlockScene;
 use crate::scenes::measure::{drift_block_model, Measured};
@@ -64,5 +66,35 @@ fn the_measured_blow_up_thresholds_lie_just_beyond_the_stability_limits() {
         let limit = if m == Method::Euler { 2.0 } else { 2.7853 };
         assert!(b - a <= 1e-8, "{m:?}: bracket {a} .. {b}");
         assert!(limit <= a && b <= 1.02 * limit, "{m:?}: {a} .. {b}");
+    }
+}
+
+#[test]
+fn moreau_jean_rests_within_the_derived_bound_over_the_flag_box() {
+    // The real Moreau-Jean ball (h = 1 ms, dropped from 1 m) over a grid of the flags
+    // the chapter accepts (0 < e <= 0.8, 1 <= g <= 25 m/s^2): |t_rest - t_inf| within
+    // the derived bound everywhere, and the bound not loose: within 20 times the
+    // largest error of its row (at one point the error may pass near zero, as the
+    // phases of the impacts in the step grid change with g, so a pointwise ratio has
+    // no limit).
+    let floor = Harmonic::sine(Axis::Z, 0.0, 1.0);
+    let gs = [1.0, 1.62, 2.5, 4.0, 6.0, 9.81, 12.0, 16.0, 20.0, 25.0];
+    for e in [1e-6, 0.01, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8] {
+        let (mut worst_err, mut worst_ratio, mut bound_max) = (0.0_f64, 0.0_f64, 0.0_f64);
+        for g in gs {
+            let mut ball = BlockScene::new(30.0, 2.5, 0.4, 0.05, g).params;
+            ball.bias_mps2 = 0.0;
+            ball.restitution = e;
+            ball.rest_velocity_mps = 0.0;
+            let t_inf = (2.0 / g).sqrt() * (1.0 + e) / (1.0 - e); // formula: t_inf = t1 (1 + e)/(1 - e)
+            let err = (mj_ball_rest_s(ball, &floor, t_inf + 1.0) - t_inf).abs();
+            let bound = mj_rest_bound_s(e, g, 1e-3, 1.0);
+            assert!(err <= bound, "e {e} g {g}: |t_rest - t_inf| = {err} > {bound}");
+            worst_err = worst_err.max(err);
+            worst_ratio = worst_ratio.max(err / bound);
+            bound_max = bound_max.max(bound);
+        }
+        assert!(bound_max < 20.0 * worst_err, "e {e}: bound {bound_max} vs error {worst_err}");
+        eprintln!("e {e}: max error {worst_err:.3e} s, max bound {bound_max:.3e} s, max error/bound {worst_ratio:.3}");
     }
 }

@@ -166,6 +166,8 @@ pub struct BlockSystem<'a, P: PlateMotion + ?Sized> {
     /// Guard sampling interval of closed-form modes and longest step of integrated ones (s).
     pub sample_s: f64,
     has_breakpoints: bool,
+    /// The plate's [`PlateMotion::peak_rates`], read once.
+    peak_rates: Option<[f64; 4]>,
 }
 
 impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
@@ -178,6 +180,7 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
             closed_forms: true,
             sample_s: plate.period_s() / 64.0,
             has_breakpoints,
+            peak_rates: plate.peak_rates(),
         }
     }
 
@@ -318,13 +321,25 @@ impl<'a, P: PlateMotion + ?Sized> BlockSystem<'a, P> {
     /// the plate's velocity at a rounded time (t carries ε (t + T) of rounding, through
     /// the phase ω t), so each is off by |a_p| ε (t + T) plus a few ulps of itself, and
     /// near a switch both ends are the same size: 8 ε [μ (|a_zp| (t + T) + |v_zp|) +
-    /// |a_xp| (t + T) + |v_xp|]. Never below the smallest positive number, so that a slip
-    /// from rest starts its guard above zero.
+    /// |a_xp| (t + T) + |v_xp|]. Where the plate knows its peak rates
+    /// ([`PlateMotion::peak_rates`]) they stand for the values at t: an upper bound of
+    /// the same floor, so still a valid rounding guard, without the two to four
+    /// plate evaluations (trigonometric for a harmonic plate) per guard evaluation.
+    /// Never below the smallest positive number, so that a slip from rest starts its
+    /// guard above zero.
     pub(crate) fn slip_rounding_mps(&self, t: f64) -> f64 {
         let p = self.plate;
         let span = t.abs() + p.period_s(); // formula: t + T
-        let z = p.az_mps2(t).abs() * span + p.vz_mps(t).abs();
-        let x = p.ax_mps2(t).abs() * span + p.vx_mps(t).abs();
+        let [vx, ax, vz, az] = self.peak_rates.unwrap_or_else(|| {
+            [
+                p.vx_mps(t).abs(),
+                p.ax_mps2(t).abs(),
+                p.vz_mps(t).abs(),
+                p.az_mps2(t).abs(),
+            ]
+        });
+        let z = az * span + vz;
+        let x = ax * span + vx;
         (8.0 * f64::EPSILON * (self.mu() * z + x)).max(f64::MIN_POSITIVE) // formula: 8 eps [mu (|a_zp| (t + T) + |v_zp|) + |a_xp| (t + T) + |v_xp|]
     }
 

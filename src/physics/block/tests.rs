@@ -445,3 +445,44 @@ fn a_slip_opening_at_the_creep_threshold_is_not_a_zeno_stop() {
     let run = simulate_block(&params, &plate, 120.0 / f, &BlockOptions::default());
     assert_eq!(run.outcome, crate::numerics::hybrid::Outcome::Completed);
 }
+
+/// The slip guard's rounding floor reads the plates' peak rates instead of their values
+/// at t (`slip_rounding_mps`): they must bound those values at every t, or the floor
+/// would be smaller than the one it replaces.
+#[test]
+fn the_plates_peak_rates_bound_their_velocities_and_accelerations() {
+    use crate::physics::plate::{Biharmonic, PlateMotion, Sawtooth};
+    use crate::physics::sawtooth::Mirrored;
+    let saw = Sawtooth {
+        slow_velocity_mps: 0.1,
+        fast_velocity_mps: 0.3,
+        slow_duration_s: 0.03,
+    };
+    let bi = |asymmetry: f64| Biharmonic {
+        velocity_amplitude_mps: 0.2,
+        omega_rad_s: TAU * 7.0,
+        asymmetry,
+    };
+    let plates: Vec<Box<dyn PlateMotion>> = vec![
+        Box::new(Harmonic::sine(Axis::X, 0.02, 5.0)),
+        Box::new(Harmonic::sine(Axis::Z, 1e-3, 30.0)),
+        Box::new(Harmonic::cosine(Axis::Z, 2e-3, 12.0)),
+        Box::new(bi(0.3)),
+        Box::new(bi(-0.2)),
+        Box::new(saw),
+        Box::new(Mirrored(saw)),
+    ];
+    for p in &plates {
+        let peak = p.peak_rates().expect("every plate here knows its peaks");
+        for i in 0..20_000 {
+            let t = 3.0 * p.period_s() * f64::from(i) / 20_000.0;
+            let at = [p.vx_mps(t), p.ax_mps2(t), p.vz_mps(t), p.az_mps2(t)];
+            for (v, bound) in at.iter().zip(peak) {
+                assert!(
+                    v.abs() <= bound * (1.0 + 1e-12),
+                    "t {t}: {at:?} vs {peak:?}"
+                );
+            }
+        }
+    }
+}

@@ -178,6 +178,9 @@ impl<P: PlateMotion> PlateMotion for Mirrored<P> {
     fn breakpoint_after(&self, t: f64) -> Option<f64> {
         self.0.breakpoint_after(t)
     }
+    fn peak_rates(&self) -> Option<[f64; 4]> {
+        self.0.peak_rates()
+    }
 }
 
 #[cfg(test)]
