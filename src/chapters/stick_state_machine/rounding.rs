@@ -80,6 +80,23 @@ pub fn free_landing_bound(at: &Impact) -> f64 {
     OWN * gamma(8) * (vzp.abs() + vs.abs() + 2.0 * (vzp - vs).abs()) + UNDERFLOW
 }
 
+/// Bound (m/s²) on |x_p''(C.10/C.13) - F_x/m| at a slide sample, both sides from the
+/// same computed F_z: fl(fl(±μ F_z)/m) each, 2 roundings and an exact sign, so each side
+/// is within γ_2 ≤ γ_3 of ±μ F_z/m: 2 γ_3 μ |F_z|/m.
+pub fn x_row_bound(friction_mps2: f64) -> f64 {
+    OWN * 2.0 * gamma(3) * friction_mps2 + UNDERFLOW // formula: 2 γ_3 μ |F_z|/m
+}
+
+/// Bound (m/s²) on the difference of C.14's x_c'' row and C.1 differentiated twice at a
+/// slide sample (the same computed F_z, θ', θ'', sin, cos): each side is ±μ F_z/m (3
+/// roundings with its subtraction) minus L (θ'' cos - θ'² sin) (θ'θ', times sin, θ''
+/// cos, their sum, times L, the subtraction: 6): 2 (γ_3 μ|F_z|/m + γ_6 L (θ'²|sin| +
+/// |θ''||cos|)), `lever` being the last sum (m/s²).
+pub fn xc_row_bound(friction_mps2: f64, lever_mps2: f64) -> f64 {
+    // formula: 2 (γ_3 μ|F_z|/m + γ_6 L (θ'²|sin| + |θ''||cos|)), its own sum rounded (1 + γ_2)
+    OWN * (1.0 + gamma(2)) * 2.0 * (gamma(3) * friction_mps2 + gamma(6) * lever_mps2) + UNDERFLOW
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::at_states::impact;
@@ -126,6 +143,30 @@ mod tests {
             assert!((vzp + l * om * s - vs).abs() <= bound);
             let off = om * (1.0 + 1e-9);
             assert!((vzp + l * off * s - vs).abs() > bound, "bound {bound:e}");
+        }
+    }
+
+    #[test]
+    fn the_x_row_bounds_hold_and_a_1e9_relative_error_exceeds_them() {
+        let (mu, mass, l) = (0.4f64, 1.0f64, 0.15f64);
+        let states: [(f64, f64, f64, f64); 3] =
+        [(3.0, 2.0, -40.0, 0.7), (0.2, -9.0, 300.0, -1.1), (12.0, 0.1, 5.0, 0.05)];
+        for (fz, w, thdd, th) in states {
+            let (s, co) = f64::sin_cos(th);
+            let fx = -mu * fz;
+            let friction = mu * f64::abs(fz) / mass;
+            let xpdd = -mu * fz / mass;
+            assert!((xpdd - fx / mass).abs() <= x_row_bound(friction));
+            assert!((xpdd * (1.0 + 1e-9) - fx / mass).abs() > x_row_bound(friction));
+            let lever = l * w * w * s.abs() + l * thdd.abs() * co.abs();
+            let bound = xc_row_bound(friction, lever);
+            let doc = -mu * fz / mass - l * (-w * w * s + thdd * co);
+            let kin = fx / mass - l * (thdd * co - w * w * s);
+            assert!((doc - kin).abs() <= bound);
+            assert!(bound < 2e-15 * (friction + lever));
+            // a 1e-9 relative error in the friction term or in C.1's lever term fails
+            assert!(((-mu * fz / mass) * (1.0 + 1e-9) - l * (-w * w * s + thdd * co) - kin).abs() > bound);
+            assert!((doc - fx / mass + l * (thdd * co - w * w * s) * (1.0 + 1e-9)).abs() > bound);
         }
     }
 }
