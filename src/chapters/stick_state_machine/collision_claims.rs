@@ -5,7 +5,7 @@
 
 use super::at_states::Impact;
 use super::evidence::Ctx;
-use super::rounding::c15_rate_bound;
+use super::rounding::{c15_rate_bound, AXIS_BOUND};
 use super::statements::Statements;
 use crate::physics::stick::TH;
 use crate::report::{Check, Claim};
@@ -45,7 +45,7 @@ pub fn c15_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
         n += 1;
     }
     v.push(c15_every_collision(d, states));
-    v.push(Claim::draft(Check::ClosedForm, "c15-axis", "C.15", "As printed: H = ((x_p - x_c)(z_p' - z_c') - (z_p - z_c) x_p') m k, along k, the vertical. Correct: in the x-z plane r x v points along j (out of the plane): r x (v_p - z_s' k) = ((z_p - z_c) x_p' - (x_p - x_c)(z_p' - z_s')) j, so the printed bracket is the component along -j (the formula C.15 uses is right, its axis is not). |axis x (r x v)| / |r x v| at the landing states (0: parallel).").values(json!(0.0), json!(off), "1e-12").printed_or_corrected(n > 0 && off <= 1e-12, n > 0));
+    v.push(Claim::draft(Check::ClosedForm, "c15-axis", "C.15", "As printed: H = ((x_p - x_c)(z_p' - z_c') - (z_p - z_c) x_p') m k, along k, the vertical. Correct: in the x-z plane r x v points along j (out of the plane): r x (v_p - z_s' k) = ((z_p - z_c) x_p' - (x_p - x_c)(z_p' - z_s')) j, so the printed bracket is the component along -j (the formula C.15 uses is right, its axis is not). |axis x (r x v)| / |r x v| at the landing states (0: parallel; its evaluation rounds relatively, so an exact 0 stays exactly 0 and the rounding bound is 0).").values(json!(0.0), json!(off), "0 (rounding bound)").printed_or_corrected(n > 0 && off <= AXIS_BOUND, n > 0));
     v
 }
 

@@ -97,6 +97,22 @@ pub fn xc_row_bound(friction_mps2: f64, lever_mps2: f64) -> f64 {
     OWN * (1.0 + gamma(2)) * 2.0 * (gamma(3) * friction_mps2 + gamma(6) * lever_mps2) + UNDERFLOW
 }
 
+/// Bound (N) on |F_z - m (g + z_s'')| + |F_x| for the vertical stick at rest (θ = θ₀ = 0,
+/// θ' = 0 exactly): sin 0 = 0 and the torque vanish exactly, so the pivot equations' θ''
+/// and F_x are exactly 0 and their F_z is fl(m fl(z_s'' + g)), the closed form
+/// fl(m fl(g + z_s'')): each within γ_2 of m (g + z_s''), the sum's rounding being
+/// relative to its result: 2 γ_2 (1 + γ_2) |closed|.
+pub fn vertical_pivot_bound(closed_n: f64) -> f64 {
+    OWN * 2.0 * gamma(2) * (1.0 + gamma(2)) * closed_n.abs() + UNDERFLOW // formula: 2 γ_2 (1 + γ_2) |m (g + z_s'')|
+}
+
+/// Bound on C.15's axis test, `off` = |a x h|/|h| as computed (h = (0, h_y, 0), its zero
+/// components exact): every component of a x h is one product of two entries (or one
+/// minus an exact 0), the norm and the quotient round relatively: the computed value
+/// is within γ_5 of the exact |a x ĥ|, relatively, so it is exactly 0 when (and only
+/// when, barring underflow) the axis is parallel: the bound is 0.
+pub const AXIS_BOUND: f64 = 0.0; // formula: |off^ - off| <= γ_5 off^, off = 0 <=> off^ = 0
+
 #[cfg(test)]
 mod tests {
     use super::super::at_states::impact;
@@ -168,5 +184,20 @@ mod tests {
             assert!(((-mu * fz / mass) * (1.0 + 1e-9) - l * (-w * w * s + thdd * co) - kin).abs() > bound);
             assert!((doc - fx / mass + l * (thdd * co - w * w * s) * (1.0 + 1e-9)).abs() > bound);
         }
+    }
+
+    #[test]
+    fn the_vertical_pivot_and_axis_bounds_reject_a_1e9_relative_error() {
+        let (m, g) = (1.0f64, 9.81f64);
+        for a_s in [-4.9f64, 0.0, 3.3] {
+            let closed = m * (g + a_s);
+            let fz = m * (a_s + g);
+            assert!((fz - closed).abs() <= vertical_pivot_bound(closed));
+            assert!((fz * (1.0 + 1e-9) - closed).abs() > vertical_pivot_bound(closed));
+        }
+        // an axis tilted by 1e-9 rad off j: |a x h|/|h| = 1e-9 > 0
+        let (a, hy) = ([1e-9f64, -1.0, 0.0], 0.37f64);
+        let off = (a[0] * hy).abs().max((a[2] * hy).abs()) / hy.abs();
+        assert!(off > AXIS_BOUND);
     }
 }
