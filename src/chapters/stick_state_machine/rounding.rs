@@ -98,7 +98,7 @@ pub fn xc_row_bound(friction_mps2: f64, lever_mps2: f64) -> f64 {
 }
 
 /// Bound (N) on |F_z - m (g + z_s'')| + |F_x| for the vertical stick at rest (θ = θ₀ = 0,
-/// θ' = 0 exactly): sin 0 = 0 and the torque vanish exactly, so the pivot equations' θ''
+/// θ' = 0 exactly): the table's sin_cos(0) = (0, 1) (a unit test) and the torque vanish exactly, so the pivot equations' θ''
 /// and F_x are exactly 0 and their F_z is fl(m fl(z_s'' + g)), the closed form
 /// fl(m fl(g + z_s'')): each within γ_2 of m (g + z_s''), the sum's rounding being
 /// relative to its result: 2 γ_2 (1 + γ_2) |closed|.
@@ -188,6 +188,8 @@ mod tests {
 
     #[test]
     fn the_vertical_pivot_and_axis_bounds_reject_a_1e9_relative_error() {
+        // the bound rests on the pivot equations' trigonometry being exact at 0
+        assert_eq!(crate::numerics::trig::sin_cos(0.0), (0.0, 1.0));
         let (m, g) = (1.0f64, 9.81f64);
         for a_s in [-4.9f64, 0.0, 3.3] {
             let closed = m * (g + a_s);
