@@ -95,11 +95,21 @@ pub struct Impact {
     pub mu: f64,
     /// The Newton-Euler impulse (`impulse.rs`).
     pub ne: NewtonEuler,
+    /// Mass m (kg).
+    pub mass_kg: f64,
+    /// The Newton-Euler system's residual fl(b - A^ x^) as computed at `ne` (rows in
+    /// m/s, m/s, N s), for its rounding bound (`rounding.rs`).
+    pub ne_residual: [f64; 3],
     /// The run's landing, for the recorded states only.
     pub recorded: Option<RecordedLanding>,
 }
 
 impl Impact {
+    /// The Newton-Euler solution as a vector `(J_x, J_z, ω+)`.
+    pub fn ne_x(&self) -> [f64; 3] {
+        [self.ne.jx, self.ne.jz, self.ne.omega_after]
+    }
+
     /// Relative velocity `(x_p', z_p' - z_s')` (m/s) and `r_CP` (m), read from C to P
     /// (`from_c`) or from P to C.
     pub fn geometry(&self, from_c: bool) -> ((f64, f64), (f64, f64)) {
@@ -234,8 +244,9 @@ fn sample(scene: usize, m: &StickModel, q: &StickParams, x: &crate::physics::sti
 }
 
 /// The impact at state `y` (time `t`) of scene `scene`.
-fn impact(scene: usize, m: &StickModel, t: f64, y: State, to: Mode) -> Impact {
+pub(super) fn impact(scene: usize, m: &StickModel, t: f64, y: State, to: Mode) -> Impact {
     let [_, _, vxp, vzp] = m.tip(&y);
+    let ne = newton_euler(m, t, &y);
     Impact {
         scene,
         y,
@@ -244,9 +255,28 @@ fn impact(scene: usize, m: &StickModel, t: f64, y: State, to: Mode) -> Impact {
         plate_v_mps: m.plate(t).1,
         length_m: m.p.length_m,
         mu: m.p.mu,
-        ne: newton_euler(m, t, &y),
+        ne,
+        mass_kg: m.p.mass_kg,
+        ne_residual: ne_residual(m, t, &y, &ne),
         recorded: None,
     }
+}
+
+/// The residual fl(b - A^ x^) of `impulse.rs`'s system as built there (the same rows,
+/// the same roundings), at its computed solution.
+fn ne_residual(m: &StickModel, t: f64, y: &State, ne: &NewtonEuler) -> [f64; 3] {
+    let (mass, l) = (m.p.mass_kg, m.p.length_m);
+    let [_, _, vxp, vzp] = m.tip(y);
+    let vs = m.plate(t).1;
+    let (s, c) = y[TH].sin_cos();
+    let a = [
+        [1.0 / mass, 0.0, -l * c, -vxp],
+        [0.0, 1.0 / mass, l * s, vs - vzp],
+        [-c, s, 0.0, 0.0],
+    ];
+    let x = [ne.jx, ne.jz, ne.omega_after];
+    // formula: r = b - A x, row by row
+    a.map(|row| row[3] - (row[0] * x[0] + row[1] * x[1] + row[2] * x[2]))
 }
 
 /// Every landing with a traced state, followed by its mirror image.

@@ -8,6 +8,7 @@
 
 use super::at_states::Lagrange;
 use super::evidence::{flight_error, pendulum_error, Ctx, Evidence, PENDULUM_EPS};
+use super::rounding::{x_row_bound, xc_row_bound};
 use super::statements::{Statements, PRINTED};
 use super::{collision_claims, gap_claims, rule_claims, table1_claims};
 use crate::physics::stick::run::{RunSummary, StickOutcome};
@@ -144,6 +145,10 @@ struct SlideResiduals {
     rows_x: f64,
     /// Largest relative difference of C.14's x_c'' row from C.1 differentiated twice.
     row_xc: f64,
+    /// The smallest rounding bound of the two x rows relative to their scale.
+    x_tol: f64,
+    /// Whether every x-row difference is within its sample's rounding bound.
+    x_within: bool,
 }
 
 /// C.8 to C.14 evaluated as stated in `d` at the slide samples.
@@ -155,6 +160,7 @@ fn slide_residuals(d: &Statements, c: &Ctx) -> SlideResiduals {
     // from Table 1), and C.14's x_c'' row against C.1 differentiated twice (x_c'' = x_p''
     // - L (theta'' cos - theta'^2 sin)), relative to mu F_z/m + L theta'^2 + L |theta''|
     let (mut rows_x, mut row_xc) = (0.0f64, 0.0f64);
+    let (mut x_tol, mut x_within) = (f64::INFINITY, true);
     let slides = c
         .samples()
         .filter(|(x, _)| matches!(x.mode, Mode::SlideLeft | Mode::SlideRight));
@@ -182,10 +188,18 @@ fn slide_residuals(d: &Statements, c: &Ctx) -> SlideResiduals {
         let xpdd = row * mu * fz / mass; // C.10 / C.13 first row as stated
         let scale_x = mu * fz.abs() / mass + l * w * w + l * thdd.abs();
         rows_x = rows_x.max((xpdd - fx / mass).abs() / scale_x); // formula: Newton, m x_p'' = F_x
+        let friction = mu * fz.abs() / mass;
+        let bound_x = x_row_bound(friction); // formula: 2 γ_3 μ |F_z|/m
+        x_within &= (xpdd - fx / mass).abs() <= bound_x;
+        x_tol = x_tol.min(bound_x / scale_x);
         if sigma < 0.0 {
             let xcdd_doc = -mu * fz / mass - l * (d.c14_xc_w2 * w * w * s + thdd * co); // C.14 third row as stated
             let xcdd_kin = fx / mass - l * (thdd * co - w * w * s); // formula: C.1 twice
             row_xc = row_xc.max((xcdd_doc - xcdd_kin).abs() / scale_x);
+            // formula: 2 (γ_3 μ |F_z|/m + γ_6 L (θ'² |sin| + |θ''| |cos|))
+            let bound_c = xc_row_bound(friction, l * w * w * s.abs() + l * thdd.abs() * co.abs());
+            x_within &= (xcdd_doc - xcdd_kin).abs() <= bound_c;
+            x_tol = x_tol.min(bound_c / scale_x);
         }
         let zcdd = zpdd - l * (-w * w * co - thdd * s); // C.4
         c8 = c8.max(res8.abs());
@@ -211,6 +225,8 @@ fn slide_residuals(d: &Statements, c: &Ctx) -> SlideResiduals {
         vz2: vz_rms,
         rows_x,
         row_xc,
+        x_tol,
+        x_within,
     }
 }
 
@@ -227,6 +243,8 @@ fn slide_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
         vz2: vz_rms,
         rows_x,
         row_xc,
+        x_tol,
+        x_within,
     } = slide_residuals(d, c);
     let mut v = Vec::new();
     let tol8 = 1e-9 * scale;
@@ -238,8 +256,8 @@ fn slide_claims(d: &Statements, c: &Ctx) -> Vec<Claim> {
         0.0
     };
     let vertical = ratio <= 1e-3;
-    // roundings of a few terms of the scale: 1e-12
-    v.push(Claim::draft(Check::ClosedForm, "c10-c13-c14-x-rows", "C.10, C.13, C.14", "The horizontal rows: C.10 x_p'' = μ F_z/m (sliding left), C.13 x_p'' = -μ F_z/m (sliding right) against Newton's law for P with Table 1's friction (m x_p'' = F_x = +-μ F_z), and C.14's third row x_c'' = -μ F_z/m - L(-θ'² sin θ + θ'' cos θ) against C.1 differentiated twice (x_c'' = x_p'' - L(θ'' cos θ - θ'² sin θ)), at the slide samples of both scenes. Largest difference relative to μ F_z/m + L θ'² + L |θ''|.").values(0.0, rows_x.max(row_xc), 1e-12).confirmed_if(n > 0 && rows_x <= 1e-12 && row_xc <= 1e-12));
+    // each sample against its own rounding bound (rounding.rs); the smallest is shown
+    v.push(Claim::draft(Check::ClosedForm, "c10-c13-c14-x-rows", "C.10, C.13, C.14", "The horizontal rows: C.10 x_p'' = μ F_z/m (sliding left), C.13 x_p'' = -μ F_z/m (sliding right) against Newton's law for P with Table 1's friction (m x_p'' = F_x = +-μ F_z), and C.14's third row x_c'' = -μ F_z/m - L(-θ'² sin θ + θ'' cos θ) against C.1 differentiated twice (x_c'' = x_p'' - L(θ'' cos θ - θ'² sin θ)), at the slide samples of both scenes. Largest difference relative to μ F_z/m + L θ'² + L |θ''|; each sample is judged against its own rounding bound (the smallest shown, relative).").values(0.0, rows_x.max(row_xc), x_tol).confirmed_if(n > 0 && x_within));
     // C.12: the sliding-left angle equation is not printed. Derived (the C.14 row with
     // C.9's F_z: theta'' = ((z_s'' - z_p'')/L - theta'^2 cos)/sin), it keeps the foot on
     // the plate (C.4: z_c'' = z_s'') at every slide-left sample: the C.4 residual.

@@ -29,6 +29,7 @@ mod maps;
 mod mutations;
 mod printed_table;
 mod rest_scan;
+mod rounding;
 mod rule_claims;
 mod sensitivity;
 mod slide_rules;

@@ -4,6 +4,7 @@
 //! run at every instant (`Continuous`); each reading gets its own claim.
 
 use super::evidence::Ctx;
+use super::rounding::{c15_rate_bound, free_landing_bound, vertical_pivot_bound};
 use super::evidence::{cone_exterior, cone_interior, keeps_cone};
 use super::statements::{Statements, Test};
 use crate::physics::stick::{Mode, TH, VXC, ZC};
@@ -107,14 +108,15 @@ fn alg1(d: &Statements, c: &Ctx) -> Vec<Claim> {
     v.push(Claim::draft(Check::ClosedForm, "a1-flight-test", "Alg. 1", &format!("As printed: if F_z > 0 -> FLIGHT. Correct: lift off when F_z < 0 (a tensile reaction), and only if the flight moves C away from the plate. {reading} Fraction of the cone's interior (F_z > 0) at which the stated test fires.")).values(json!(0.0), json!(frac(fires, n)), "0").printed_or_corrected(n > 0 && fires == 0, n > 0));
     v.push(alg1_on_violation(d, c));
     // a vertical stick at rest on a plate with Gamma = 0.5: F_z = m (g + z_s''), F_x = 0
-    let (mut dev, mut fz_min) = (0.0f64, f64::INFINITY);
+    let (mut dev, mut fz_min, mut within) = (0.0f64, f64::INFINITY, true);
     for &(fx, fz, closed) in &c.ev.vertical_pivot {
         dev = dev.max((fz - closed).abs() + fx.abs());
+        // each phase against its rounding bound (rounding.rs): 2 γ_2 (1 + γ_2) |m (g + z_s'')|
+        within &= (fz - closed).abs() + fx.abs() <= vertical_pivot_bound(closed);
         fz_min = fz_min.min(fz);
     }
-    // closed form and pivot_eval agree to rounding of m g ~ 10 N: 1e-12 N
-    let pivot_ok = dev <= 1e-12 && fz_min > 0.0;
-    v.push(Claim::draft(Check::ClosedForm, "a1-vertical-flight", "Alg. 1", "As printed: with |θ| = 0 (and μ F_z + F_x > 0) the HINGE goes to FLIGHT. What the line is for (the authors' code, fsm.m, HINGE, case SLIP_POS: 'if abs(th) < 1e-9 nextPhase = FLIGHT', commented 'to take care of the 1/sin(th) singularity'): a numerical escape taken at a slip exit near the vertical, where the slide's C.14 divides by sin(θ). As a rule of the dynamics, which is how the document prints it, it is wrong: a vertical stick on a plate is an ordinary pivot, F_z = m (g + z_s'') > 0 and F_x = 0 while the plate's acceleration stays below g, and a compressive contact cannot start a flight; only the slides are singular there (the workbook stops such a run as invalid, C.14). Smallest pivot normal force (N) over a cycle of a vertical stick on a plate at Γ = 0.5 (closed form and pivot equations agree to 1e-12 N).").values(json!("F_z > 0: pivot"), json!(fz_min), "sign").printed_or_corrected(!d.a1_vertical_flight && pivot_ok, pivot_ok));
+    let pivot_ok = within && fz_min > 0.0;
+    v.push(Claim::draft(Check::ClosedForm, "a1-vertical-flight", "Alg. 1", "As printed: with |θ| = 0 (and μ F_z + F_x > 0) the HINGE goes to FLIGHT. What the line is for (the authors' code, fsm.m, HINGE, case SLIP_POS: 'if abs(th) < 1e-9 nextPhase = FLIGHT', commented 'to take care of the 1/sin(th) singularity'): a numerical escape taken at a slip exit near the vertical, where the slide's C.14 divides by sin(θ). As a rule of the dynamics, which is how the document prints it, it is wrong: a vertical stick on a plate is an ordinary pivot, F_z = m (g + z_s'') > 0 and F_x = 0 while the plate's acceleration stays below g, and a compressive contact cannot start a flight; only the slides are singular there (the workbook stops such a run as invalid, C.14). Smallest pivot normal force (N) over a cycle of a vertical stick on a plate at Γ = 0.5 (closed form and pivot equations agree within a rounding bound at every phase).").values(json!("F_z > 0: pivot"), json!(fz_min), "sign").printed_or_corrected(!d.a1_vertical_flight && pivot_ok, pivot_ok));
     let (mut fires, mut fires_fix, mut total) = (0usize, 0usize, 0usize);
     for (x, _) in c.samples().filter(|(x, _)| x.mode != Mode::Flight) {
         let (zp, zs) = (x.tip[1], x.plate.0);
@@ -248,9 +250,9 @@ fn impulse_branch(d: &Statements, c: &Ctx) -> Vec<Claim> {
         let l = at.length_m;
         let om = d.a2_theta_sign * (rx * uz - rz * ux) / (l * l);
         let om_fix = -d.a2_theta_sign * (fx * uz - fz * ux) / (l * l); // the sign of C.15 added
-        let scale = ne.omega_after.abs() + 1.0;
-        dis_th += usize::from((om - ne.omega_after).abs() > 1e-12 * scale);
-        dis_th_fix += usize::from((om_fix - ne.omega_after).abs() > 1e-12 * scale);
+        let bound = c15_rate_bound(at); // formula: C.15's and the solve's rounding (rounding.rs)
+        dis_th += usize::from((om - ne.omega_after).abs() > bound);
+        dis_th_fix += usize::from((om_fix - ne.omega_after).abs() > bound);
         k += 1;
     }
     // The reading of r_CP is decided by the authors' code, as for the other claims of
@@ -265,7 +267,7 @@ fn impulse_branch(d: &Statements, c: &Ctx) -> Vec<Claim> {
         "r_CP read from P to C (the reading the authors' fsm.m rules out)"
     };
     v.push(Claim::draft(Check::SecondMethod, "a2-shortening-branch", "Alg. 2", &format!("As printed: if (x_p' i + (z_p' - z_s') k) . r_CP < 0 compute the hinge forces without an impulse, else (\"rod not shortening\") apply the angular-momentum map. Reading: {reading}, the tie-breaker as for the other claims. Then a product < 0 is a shortening rod, and the branches are swapped: the Newton-Euler impulse is compressive (the map applies) only when the rod shortens; fsm.m applies the map in that branch (then the hinge-force test) and slides without an impulse in the other. Sticking candidates (|tan| <= μ, both scenes and mirrors) at which the printed branch disagrees with the sign of the Newton-Euler impulse.")).values(json!(0), json!(dis), "exact").printed_or_corrected(k > 0 && dis == 0, k > 0 && dis_fix == 0));
-    v.push(Claim::draft(Check::SecondMethod, "a2-theta-dot-sign", "Alg. 2", &format!("As printed: θ' = (r_CP x (v_p - v_s))/L², without the minus sign of C.15. Reading: {reading}. Then the printed rate has the wrong sign: C.15, the Newton-Euler impulse and fsm.m (`cross(vec_rcp, vec_vs - vec_vp) / L^2`, i.e. -(r_CP x (v_p - v_s))/L²) agree on the minus. Sticking candidates at which the stated θ' differs from the Newton-Euler rate (1e-12 relative: the elimination and the cross product each round a few times, 1e3 ulps).")).values(json!(0), json!(dis_th), "exact").printed_or_corrected(k > 0 && dis_th == 0, k > 0 && dis_th_fix == 0));
+    v.push(Claim::draft(Check::SecondMethod, "a2-theta-dot-sign", "Alg. 2", &format!("As printed: θ' = (r_CP x (v_p - v_s))/L², without the minus sign of C.15. Reading: {reading}. Then the printed rate has the wrong sign: C.15, the Newton-Euler impulse and fsm.m (`cross(vec_rcp, vec_vs - vec_vp) / L^2`, i.e. -(r_CP x (v_p - v_s))/L²) agree on the minus. Sticking candidates at which the stated θ' differs from the Newton-Euler rate by more than a rounding bound (both evaluations' running-error bound at that state).")).values(json!(0), json!(dis_th), "exact").printed_or_corrected(k > 0 && dis_th == 0, k > 0 && dis_th_fix == 0));
     v
 }
 
@@ -273,6 +275,7 @@ fn impulse_branch(d: &Statements, c: &Ctx) -> Vec<Claim> {
 fn free_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
     let mut v = Vec::new();
     let (mut res, mut res_fix, mut order_dis, mut n) = (0.0f64, 0.0f64, 0usize, 0usize);
+    let (mut within, mut within_fix, mut tol) = (true, true, f64::INFINITY);
     for at in &c.ev.at.impacts {
         let Some(l) = at.recorded.map(|r| r.landing) else {
             continue; // a mirror image
@@ -290,6 +293,10 @@ fn free_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
         let om_fix = -(vzp - vs) / (len * s);
         let xc_new = vxp + (vzp - vs) * co / s; // x_c' <- x_p' + (z_p' - z_s') cot
                                                 // C.3: z_c' = z_p' + L theta' sin must equal z_s' (C on the plate)
+        let bound = free_landing_bound(at); // formula: γ_8 (|z_p'| + |z_s'| + 2 |z_p' - z_s'|)
+        within &= (vzp + len * om * s - vs).abs() <= bound;
+        within_fix &= (vzp + len * om_fix * s - vs).abs() <= bound;
+        tol = tol.min(bound);
         res = res.max((vzp + len * om * s - vs).abs());
         res_fix = res_fix.max((vzp + len * om_fix * s - vs).abs());
         let tested = if d.a2_test_before_assign {
@@ -300,8 +307,8 @@ fn free_landing(d: &Statements, c: &Ctx) -> Vec<Claim> {
         order_dis += usize::from((tested > 0.0) != (xc_new > 0.0));
         n += 1;
     }
-    // |z_p' - z_s'| ~ 1 m/s: rounding 1e-15 m/s; 1e-12 m/s
-    v.push(Claim::draft(Check::ClosedForm, "a2-impulse-free-landing", "Alg. 2", "tan(θ) > μ: θ' <- -(z_p' - z_s')/(L sin(θ)), x_c' <- x_p' + (z_p' - z_s') cot(θ): P keeps its velocity and C moves with the plate. Largest |z_c' - z_s'| (m/s) after the stated assignment (C.3) at the impulse-free landings of both scenes.").values(json!(0.0), json!(res), "1e-12 m/s").printed_or_corrected(n > 0 && res <= 1e-12, n > 0 && res_fix <= 1e-12));
+    // each landing against its own rounding bound (rounding.rs); the smallest is shown
+    v.push(Claim::draft(Check::ClosedForm, "a2-impulse-free-landing", "Alg. 2", "tan(θ) > μ: θ' <- -(z_p' - z_s')/(L sin(θ)), x_c' <- x_p' + (z_p' - z_s') cot(θ): P keeps its velocity and C moves with the plate. Largest |z_c' - z_s'| (m/s) after the stated assignment (C.3) at the impulse-free landings of both scenes, each judged against its own rounding bound (the smallest shown).").values(json!(0.0), json!(res), format!("{tol:.1e} m/s (rounding bound)")).printed_or_corrected(n > 0 && within, n > 0 && within_fix));
     v.push(Claim::draft(Check::LiteralExecution, "a2-free-landing-order", "Alg. 2", "As printed (tan(θ) > μ branch): 'if x_c' > 0 then SLIDE RIGHT, x_c' <- x_p' + (z_p' - z_s') cot(θ)': read in order, the test sees C's velocity in flight, before the assignment. Correct: assign first, then choose the slide the new x_c' points to. Impulse-free landings of both scenes at which the two orders choose different slides (literal execution; Table 1's re-selection then repairs the choice at the same instant, see the table of printed rules).").values(json!(0), json!(order_dis), "exact").printed_or_corrected(n > 0 && order_dis == 0, n > 0));
     v
 }

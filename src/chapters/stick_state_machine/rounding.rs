@@ -1,0 +1,205 @@
+//! Rounding bounds of chapter 6's identities at single recorded states (issue 29 §2):
+//! rigorous running-error bounds from the magnitudes at each state, replacing the fixed
+//! relative floor of 1e-12. Pure arithmetic on the raw quantities `at_states.rs` carries
+//! in an [`Impact`]; the derivation is in `chapters/06-stick-state-machine.md` ("How exact
+//! are the collision checks?") and the measured headroom in `docs/stick-internals.md`.
+//!
+//! Model (as chapter 2's `effective_mass/rounding.rs`): IEEE binary64, u = 2^-53,
+//! `fl(a op b) = (a op b)(1 + δ)`, |δ| <= u, `γ_k = k u/(1 - k u)`, γ_a + γ_b <= γ_{a+b};
+//! sin and cos of the platform's libm within 1 ulp (a relative 2u each). The "exact"
+//! value is the exact mathematics at the doubles the run holds: θ, the tip's velocity
+//! (x_p', z_p'), the plate's z_s', L and m.
+
+use super::at_states::Impact;
+use crate::physics::stick::TH;
+
+/// The unit roundoff u = 2^-53.
+pub const U: f64 = f64::EPSILON / 2.0;
+
+/// A bound evaluated in floating point is itself rounded, by a relative γ_k with k
+/// below 100 (1e-14): every bound is multiplied by 1 + 1e-12.
+pub const OWN: f64 = 1.0 + 1e-12;
+
+/// An absolute allowance for gradual underflow (never reached at the chapter's states).
+pub const UNDERFLOW: f64 = 5e-318;
+
+/// `γ_k = k u / (1 - k u)`.
+pub fn gamma(k: u32) -> f64 {
+    let ku = k as f64 * U;
+    ku / (1.0 - ku) // formula: γ_k = k u/(1 - k u)
+}
+
+/// Bound (rad/s) on |ω^_C.15 - ω^_NE|: the rate after a sticking landing from C.15
+/// (`σ (r_x u_z - r_z u_x)/(L L)`, r = L (sin, cos), u = (x_p', z_p' - z_s'), σ = -1)
+/// against the Newton-Euler solve's ω+ (`impulse.rs`), both against the exact solution
+/// ω* = (c x_p' - s (z_p' - z_s'))/(L q) of the Newton-Euler system at the doubles
+/// s = fl(sin θ), c = fl(cos θ), q = s² + c².
+///
+/// C.15 as evaluated: every term of its numerator passes through at most 6 roundings
+/// (L s, z_p' - z_s', the product, the difference, L L, the quotient): γ_6 T/L with
+/// T = |s||z_p' - z_s'| + |c||x_p'|; its exact value is q ω*, and |q - 1| <= (1 + 2u)² - 1
+/// <= γ_5, so |1 - 1/q| <= γ_10: together γ_16 T/L.
+///
+/// The solve (Oettli-Prager / Skeel): with r^ = fl(b - A^ x^) as computed, the true
+/// residual and the data's rounding (1/m, L c, L s and z_s' - z_p': one each) give
+/// |x* - x^| <= |A^-1| v, v = |r^| + γ_6 (|b^| + |A^| |x^|) (γ_4 the residual's own
+/// 3-term dot products, γ_1 the data; γ_6 covers both); the ω row of A^-1 in closed form
+/// is (-c, s, -1/m)/(L q): e_ω = (|c| v_1 + |s| v_2 + v_3/m)/(L q), evaluated with 8
+/// roundings (1 + γ_8).
+pub fn c15_rate_bound(at: &Impact) -> f64 {
+    let (vxp, vzp) = at.tip_v_mps;
+    let (l, m, x) = (at.length_m, at.mass_kg, at.ne_x());
+    let (s, c) = at.y[TH].sin_cos();
+    let uz = vzp - at.plate_v_mps;
+    let t = s.abs() * uz.abs() + c.abs() * vxp.abs(); // formula: T = |s||z_p' - z_s'| + |c||x_p'|
+    let c15 = gamma(16) * t / l; // formula: γ_6 T/L + γ_10 T/L
+    // |A^| |x^| + |b^| row by row (rows: J_x/m - L c ω = -x_p'; J_z/m + L s ω = z_s' - z_p'; -c J_x + s J_z = 0)
+    let size = [
+        x[0].abs() / m + (l * c).abs() * x[2].abs() + vxp.abs(),
+        x[1].abs() / m + (l * s).abs() * x[2].abs() + uz.abs(),
+        c.abs() * x[0].abs() + s.abs() * x[1].abs(),
+    ];
+    let v: Vec<f64> = (0..3)
+        .map(|i| at.ne_residual[i].abs() + gamma(6) * size[i]) // formula: v = |r^| + γ_6 (|A^||x^| + |b^|)
+        .collect();
+    let q = s * s + c * c; // formula: q = s² + c²
+    // formula: e_ω = (|c| v_1 + |s| v_2 + v_3/m)/(L q)
+    let solve = (1.0 + gamma(8)) * (c.abs() * v[0] + s.abs() * v[1] + v[2] / m) / (l * q);
+    OWN * (c15 + solve) + UNDERFLOW
+}
+
+/// Bound (m/s) on |z_p' + L θ' sin θ - z_s'| after Algorithm 2's impulse-free assignment
+/// θ' = -(z_p' - z_s')/(L sin θ) (C.3's z_c', exactly z_s' in exact arithmetic):
+/// L θ' sin carries 5 roundings of |z_p' - z_s'| (the difference, L s, the quotient,
+/// L θ', the product with s), the two sums one each of their operands:
+/// γ_5 |z_p' - z_s'| + γ_2 (|z_p'| + |z_s'| + (1 + γ_5)|z_p' - z_s'|) <= γ_8 (|z_p'| + |z_s'| + 2 |z_p' - z_s'|).
+pub fn free_landing_bound(at: &Impact) -> f64 {
+    let (_, vzp) = at.tip_v_mps;
+    let vs = at.plate_v_mps;
+    // formula: γ_8 (|z_p'| + |z_s'| + 2 |z_p' - z_s'|)
+    OWN * gamma(8) * (vzp.abs() + vs.abs() + 2.0 * (vzp - vs).abs()) + UNDERFLOW
+}
+
+/// Bound (m/s²) on |x_p''(C.10/C.13) - F_x/m| at a slide sample, both sides from the
+/// same computed F_z: fl(fl(±μ F_z)/m) each, 2 roundings and an exact sign, so each side
+/// is within γ_2 ≤ γ_3 of ±μ F_z/m: 2 γ_3 μ |F_z|/m.
+pub fn x_row_bound(friction_mps2: f64) -> f64 {
+    OWN * 2.0 * gamma(3) * friction_mps2 + UNDERFLOW // formula: 2 γ_3 μ |F_z|/m
+}
+
+/// Bound (m/s²) on the difference of C.14's x_c'' row and C.1 differentiated twice at a
+/// slide sample (the same computed F_z, θ', θ'', sin, cos): each side is ±μ F_z/m (3
+/// roundings with its subtraction) minus L (θ'' cos - θ'² sin) (θ'θ', times sin, θ''
+/// cos, their sum, times L, the subtraction: 6): 2 (γ_3 μ|F_z|/m + γ_6 L (θ'²|sin| +
+/// |θ''||cos|)), `lever` being the last sum (m/s²).
+pub fn xc_row_bound(friction_mps2: f64, lever_mps2: f64) -> f64 {
+    // formula: 2 (γ_3 μ|F_z|/m + γ_6 L (θ'²|sin| + |θ''||cos|)), its own sum rounded (1 + γ_2)
+    OWN * (1.0 + gamma(2)) * 2.0 * (gamma(3) * friction_mps2 + gamma(6) * lever_mps2) + UNDERFLOW
+}
+
+/// Bound (N) on |F_z - m (g + z_s'')| + |F_x| for the vertical stick at rest (θ = θ₀ = 0,
+/// θ' = 0 exactly): the table's sin_cos(0) = (0, 1) (a unit test) and the torque vanish exactly, so the pivot equations' θ''
+/// and F_x are exactly 0 and their F_z is fl(m fl(z_s'' + g)), the closed form
+/// fl(m fl(g + z_s'')): each within γ_2 of m (g + z_s''), the sum's rounding being
+/// relative to its result: 2 γ_2 (1 + γ_2) |closed|.
+pub fn vertical_pivot_bound(closed_n: f64) -> f64 {
+    OWN * 2.0 * gamma(2) * (1.0 + gamma(2)) * closed_n.abs() + UNDERFLOW // formula: 2 γ_2 (1 + γ_2) |m (g + z_s'')|
+}
+
+/// Bound on C.15's axis test, `off` = |a x h|/|h| as computed (h = (0, h_y, 0), its zero
+/// components exact): every component of a x h is one product of two entries (or one
+/// minus an exact 0), the norm and the quotient round relatively: the computed value
+/// is within γ_5 of the exact |a x ĥ|, relatively, so it is exactly 0 when (and only
+/// when, barring underflow) the axis is parallel: the bound is 0.
+pub const AXIS_BOUND: f64 = 0.0; // formula: |off^ - off| <= γ_5 off^, off = 0 <=> off^ = 0
+
+#[cfg(test)]
+mod tests {
+    use super::super::at_states::impact;
+    use super::*;
+    use crate::physics::stick::{authors_scene, Mode, StickModel, NSTATE, OM, VXC, VZC, ZC};
+
+    /// Landing states of the authors' scene at several angles and rates, both leanings.
+    fn landings() -> Vec<Impact> {
+        let m = StickModel::new(authors_scene(10.0));
+        let mut v = Vec::new();
+        for th in [-1.2, -0.3, 0.05, 0.3, 0.9] {
+            for om in [-3.0, 0.5, 2.0] {
+                let mut y = [0.0; NSTATE];
+                (y[TH], y[OM], y[VXC], y[VZC]) = (th, om, 0.4, -1.0);
+                y[ZC] = m.plate(0.01).0;
+                v.push(impact(0, &m, 0.01, y, Mode::Pivot));
+            }
+        }
+        v
+    }
+
+    #[test]
+    fn the_c15_bound_holds_and_a_1e9_relative_error_exceeds_it() {
+        for at in landings() {
+            let ((ux, uz), (rx, rz)) = at.geometry(true);
+            let l = at.length_m;
+            let om = -(rx * uz - rz * ux) / (l * l);
+            let (ne, bound) = (at.ne.omega_after, c15_rate_bound(&at));
+            assert!((om - ne).abs() <= bound, "{om} vs {ne}: bound {bound:e}");
+            assert!(bound < 1e-13 * ne.abs(), "bound {bound:e} at ω {ne}");
+            assert!((om * (1.0 + 1e-9) - ne).abs() > bound);
+            assert!((om - ne * (1.0 + 1e-9)).abs() > bound);
+        }
+    }
+
+    #[test]
+    fn the_free_landing_bound_holds_and_a_1e9_relative_error_exceeds_it() {
+        for at in landings() {
+            let (_, vzp) = at.tip_v_mps;
+            let vs = at.plate_v_mps;
+            let (l, s) = (at.length_m, at.y[TH].sin());
+            let bound = free_landing_bound(&at);
+            let om = -(vzp - vs) / (l * s);
+            assert!((vzp + l * om * s - vs).abs() <= bound);
+            let off = om * (1.0 + 1e-9);
+            assert!((vzp + l * off * s - vs).abs() > bound, "bound {bound:e}");
+        }
+    }
+
+    #[test]
+    fn the_x_row_bounds_hold_and_a_1e9_relative_error_exceeds_them() {
+        let (mu, mass, l) = (0.4f64, 1.0f64, 0.15f64);
+        let states: [(f64, f64, f64, f64); 3] =
+        [(3.0, 2.0, -40.0, 0.7), (0.2, -9.0, 300.0, -1.1), (12.0, 0.1, 5.0, 0.05)];
+        for (fz, w, thdd, th) in states {
+            let (s, co) = f64::sin_cos(th);
+            let fx = -mu * fz;
+            let friction = mu * f64::abs(fz) / mass;
+            let xpdd = -mu * fz / mass;
+            assert!((xpdd - fx / mass).abs() <= x_row_bound(friction));
+            assert!((xpdd * (1.0 + 1e-9) - fx / mass).abs() > x_row_bound(friction));
+            let lever = l * w * w * s.abs() + l * thdd.abs() * co.abs();
+            let bound = xc_row_bound(friction, lever);
+            let doc = -mu * fz / mass - l * (-w * w * s + thdd * co);
+            let kin = fx / mass - l * (thdd * co - w * w * s);
+            assert!((doc - kin).abs() <= bound);
+            assert!(bound < 2e-15 * (friction + lever));
+            // a 1e-9 relative error in the friction term or in C.1's lever term fails
+            assert!(((-mu * fz / mass) * (1.0 + 1e-9) - l * (-w * w * s + thdd * co) - kin).abs() > bound);
+            assert!((doc - fx / mass + l * (thdd * co - w * w * s) * (1.0 + 1e-9)).abs() > bound);
+        }
+    }
+
+    #[test]
+    fn the_vertical_pivot_and_axis_bounds_reject_a_1e9_relative_error() {
+        // the bound rests on the pivot equations' trigonometry being exact at 0
+        assert_eq!(crate::numerics::trig::sin_cos(0.0), (0.0, 1.0));
+        let (m, g) = (1.0f64, 9.81f64);
+        for a_s in [-4.9f64, 0.0, 3.3] {
+            let closed = m * (g + a_s);
+            let fz = m * (a_s + g);
+            assert!((fz - closed).abs() <= vertical_pivot_bound(closed));
+            assert!((fz * (1.0 + 1e-9) - closed).abs() > vertical_pivot_bound(closed));
+        }
+        // an axis tilted by 1e-9 rad off j: |a x h|/|h| = 1e-9 > 0
+        let (a, hy) = ([1e-9f64, -1.0, 0.0], 0.37f64);
+        let off = (a[0] * hy).abs().max((a[2] * hy).abs()) / hy.abs();
+        assert!(off > AXIS_BOUND);
+    }
+}
