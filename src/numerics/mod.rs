@@ -6,12 +6,14 @@
 //! - [`fit`]: least-squares slopes (the observed order of a convergence study).
 //! - [`hybrid`]: the event-driven hybrid-automaton driver: modes, flows (integrated or
 //!   in closed form), guards, resets, scheduled breakpoints and a Zeno guard.
+//! - [`rounding`]: the unit roundoff and γ_k of the chapters' rounding bounds.
 //! - [`trig`]: sine and cosine together by a table and angle addition (inner loops).
 
 pub mod events;
 pub mod fit;
 pub mod hybrid;
 pub mod ode;
+pub mod rounding;
 pub mod search;
 pub mod timestepping;
 pub mod trig;

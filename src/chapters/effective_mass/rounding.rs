@@ -11,29 +11,14 @@
 //! the exact mathematics at the double θ the run holds and at the double constants
 //! (L = fl(0.15), m = 1 kg), with I_G = m L²/12 exact.
 
+pub use crate::numerics::rounding::{gamma, OWN, U, UNDERFLOW};
 use nalgebra::{Matrix2, Matrix5, Vector5};
-
-/// The unit roundoff u = 2^-53.
-pub const U: f64 = f64::EPSILON / 2.0;
 
 /// A libm sin, cos or tan within 1 ulp: a relative error below 2u, two roundings.
 pub const TRIG: u32 = 2;
 
-/// An absolute allowance for gradual underflow (only at |θ| below ~1e-300 rad, the
-/// flag's corner 1e-308 degrees): each underflowing operation adds at most η/2
-/// (η = 2^-1074), a quantity passes through fewer than 100 of them and no step
-/// magnifies by more than 1e4 (the 5x5 system's ||A^-1|| is below 1e3): 1e6 η.
-pub const UNDERFLOW: f64 = 5e-318; // formula: >= 1e6 η, η = 2^-1074 = 4.94e-324
-
-/// A bound evaluated in floating point is itself rounded, by a relative γ_k with k
-/// below 100 (1e-14): every bound is multiplied by 1 + 1e-12.
-pub const OWN: f64 = 1.0 + 1e-12;
-
-/// `γ_k = k u / (1 - k u)`.
-pub fn gamma(k: u32) -> f64 {
-    let ku = k as f64 * U;
-    ku / (1.0 - ku) // formula: γ_k = k u/(1 - k u)
-}
+// UNDERFLOW (numerics::rounding) is reached only at |θ| below ~1e-300 rad, the flag's
+// corner 1e-308 degrees; the 5x5 system's ||A^-1|| is below 1e3 there.
 
 /// A 2x2 inversion as it ran: the mobility W^ as built, its computed inverse M^ (the
 /// rod's world-frame mass matrix, kg) and the computed residual fl(I - W^ M^).

@@ -11,23 +11,8 @@
 //! (x_p', z_p'), the plate's z_s', L and m.
 
 use super::at_states::Impact;
+use crate::numerics::rounding::{gamma, OWN, UNDERFLOW};
 use crate::physics::stick::TH;
-
-/// The unit roundoff u = 2^-53.
-pub const U: f64 = f64::EPSILON / 2.0;
-
-/// A bound evaluated in floating point is itself rounded, by a relative γ_k with k
-/// below 100 (1e-14): every bound is multiplied by 1 + 1e-12.
-pub const OWN: f64 = 1.0 + 1e-12;
-
-/// An absolute allowance for gradual underflow (never reached at the chapter's states).
-pub const UNDERFLOW: f64 = 5e-318;
-
-/// `γ_k = k u / (1 - k u)`.
-pub fn gamma(k: u32) -> f64 {
-    let ku = k as f64 * U;
-    ku / (1.0 - ku) // formula: γ_k = k u/(1 - k u)
-}
 
 /// Bound (rad/s) on |ω^_C.15 - ω^_NE|: the rate after a sticking landing from C.15
 /// (`σ (r_x u_z - r_z u_x)/(L L)`, r = L (sin, cos), u = (x_p', z_p' - z_s'), σ = -1)
