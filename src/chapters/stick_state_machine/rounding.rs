@@ -91,6 +91,27 @@ pub fn vertical_pivot_bound(closed_n: f64) -> f64 {
     OWN * 2.0 * gamma(2) * (1.0 + gamma(2)) * closed_n.abs() + UNDERFLOW // formula: 2 γ_2 (1 + γ_2) |m (g + z_s'')|
 }
 
+/// Bound (N m) on C.8's residual at a pivot sample, q_t + F_x L cos - F_z L sin with F
+/// from C.7 and θ'' from C.6 (q_t = k(θ - θ₀) + γ θ'). In exact arithmetic at the
+/// computed θ'' it is (q - 1) m L² θ'' + m L² q e, q = s² + c² (|q - 1| <= γ_5), e the
+/// error of θ'': θ'' = ((g + z_s'') m L s - q_t)/(m L L) rounds its numerator 5 times and
+/// the quotient 4 (with m L L), e <= γ_9 τ/(m L²), τ = |g + z_s''| m L |s| + |k(θ - θ₀)| +
+/// |γ θ'| (`torques`): together γ_15 τ. Its evaluation takes at most 10 roundings of every
+/// expanded term: γ_10 times the same expression with every term's absolute value
+/// (`terms`): |k(θ - θ₀)| + |γ θ'| + m L² |c| (θ'²|s| + |θ''||c|) + m L |s| (|z_s''| + g +
+/// L (θ'²|c| + |θ''||s|)).
+pub fn pivot_balance_bound(terms_nm: f64, torques_nm: f64) -> f64 {
+    // formula: γ_10 terms + γ_16 τ, the sum rounded (1 + γ_2)
+    OWN * (1.0 + gamma(2)) * (gamma(10) * terms_nm + gamma(16) * torques_nm) + UNDERFLOW
+}
+
+/// Bound (N m) on |m L² θ''| from C.6 where the torques cancel exactly (angular momentum
+/// conserved): θ'' is within γ_9 τ/(m L²) (see [`pivot_balance_bound`]) and m L L θ''
+/// rounds 3 times more: γ_12 τ, τ = `torques`.
+pub fn conserved_rate_bound(torques_nm: f64) -> f64 {
+    OWN * gamma(12) * torques_nm + UNDERFLOW // formula: γ_12 (|g + z_s''| m L |s| + |k(θ - θ₀)| + |γ θ'|)
+}
+
 /// Bound on C.15's axis test, `off` = |a x h|/|h| as computed (h = (0, h_y, 0), its zero
 /// components exact): every component of a x h is one product of two entries (or one
 /// minus an exact 0), the norm and the quotient round relatively: the computed value
