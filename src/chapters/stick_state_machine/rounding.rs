@@ -112,6 +112,20 @@ pub fn conserved_rate_bound(torques_nm: f64) -> f64 {
     OWN * gamma(12) * torques_nm + UNDERFLOW // formula: γ_12 (|g + z_s''| m L |s| + |k(θ - θ₀)| + |γ θ'|)
 }
 
+/// Bound (m/s²) on C.4's residual z_c'' - z_s'' at a slide-left sample, z_c'' = z_p'' -
+/// L(-θ'² c - θ'' s) with θ'' = ((z_s'' - z_p'')/L + θ'² c)/s (the derived C.12): exactly
+/// 0 at the computed z_p'', s, c (no trigonometric identity used). θ'' is within
+/// γ_4 (|z_s'' - z_p''|/L + θ'²|c|)/|s| (4 roundings), an error that passes through the
+/// residual's 4 later roundings (γ_4 (1 + γ_4) <= γ_8 after the product with L s); the
+/// evaluation rounds every expanded term at most 6 times: γ_6 (|z_p''| + |z_s''| +
+/// L θ'²|c| + L |θ''||s|) + γ_8 (|z_s'' - z_p''| + L θ'²|c|).
+pub fn left_c4_bound(zpdd_mps2: f64, zsdd_mps2: f64, lever_mps2: f64, thdd_lever_mps2: f64) -> f64 {
+    // formula: γ_6 (|z_p''| + |z_s''| + L θ'²|c| + L|θ''||s|) + γ_8 (|z_s'' - z_p''| + L θ'²|c|), summed (1 + γ_2)
+    let terms = zpdd_mps2.abs() + zsdd_mps2.abs() + lever_mps2 + thdd_lever_mps2;
+    let quotient = (zsdd_mps2 - zpdd_mps2).abs() + lever_mps2;
+    OWN * (1.0 + gamma(2)) * (gamma(6) * terms + gamma(8) * quotient) + UNDERFLOW
+}
+
 /// Bound on C.15's axis test, `off` = |a x h|/|h| as computed (h = (0, h_y, 0), its zero
 /// components exact): every component of a x h is one product of two entries (or one
 /// minus an exact 0), the norm and the quotient round relatively: the computed value
