@@ -126,6 +126,18 @@ pub fn left_c4_bound(zpdd_mps2: f64, zsdd_mps2: f64, lever_mps2: f64, thdd_lever
     OWN * (1.0 + gamma(2)) * (gamma(6) * terms + gamma(8) * quotient) + UNDERFLOW
 }
 
+/// Bound (rad/s) on C.3's relaxation residual θ' + (k/γ)(θ - θ₀) at a sample, the flight's
+/// closed form (`flight.rs`) having set d = θ - θ₀, θ = fl(θ₀ + d) and θ' = fl(-(k/γ) d),
+/// k/γ rounded once on each side: fl(θ₀ + d) carries an absolute u|θ| (3 roundings more
+/// in the residual: γ_5 (k/γ)|θ|); the d terms differ by (1 + δ)² against (1 + δ)³ and the
+/// sum rounds once: γ_6 (|θ'| + (k/γ)|θ - θ₀|). Together
+/// γ_6 (|θ'| + (k/γ)(|θ - θ₀| + |θ|)), `rate` = k/γ (1/s).
+pub fn relaxation_bound(omega_rad_s: f64, rate_per_s: f64, dev_rad: f64, theta_rad: f64) -> f64 {
+    // formula: γ_6 (|θ'| + (k/γ)(|θ - θ₀| + |θ|)), its own sum rounded (1 + γ_2)
+    OWN * (1.0 + gamma(2)) * gamma(6) * (omega_rad_s.abs() + rate_per_s.abs() * (dev_rad.abs() + theta_rad.abs()))
+        + UNDERFLOW
+}
+
 /// Bound on C.15's axis test, `off` = |a x h|/|h| as computed (h = (0, h_y, 0), its zero
 /// components exact): every component of a x h is one product of two entries (or one
 /// minus an exact 0), the norm and the quotient round relatively: the computed value
