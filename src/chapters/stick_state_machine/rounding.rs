@@ -219,6 +219,38 @@ mod tests {
     }
 
     #[test]
+    fn the_pivot_c4_and_relaxation_bounds_hold_and_a_1e9_relative_error_exceeds_them() {
+        let (m, l, g, k, gam, th0) = (0.01f64, 0.15f64, 9.81f64, 0.05f64, 0.002f64, 0.1f64);
+        for (th, w, a_s) in [(0.3f64, 2.0f64, -40.0f64), (-1.1, -9.0, 300.0), (0.05, 0.1, 5.0)] {
+            let (s, co) = th.sin_cos();
+            let q_t = k * (th - th0) + gam * w;
+            let thdd = ((g + a_s) * m * l * s - q_t) / (m * l * l);
+            let (fx, fz) = (m * l * (-w * w * s + thdd * co), m * (a_s + l * (-w * w * co - thdd * s) + g));
+            let c8 = q_t + fx * l * co - fz * l * s;
+            let tau = (g + a_s).abs() * m * l * s.abs() + q_t.abs().max((k * (th - th0)).abs() + (gam * w).abs());
+            let terms = (k * (th - th0)).abs() + (gam * w).abs() + m * l * l * co.abs() * (w * w * s.abs() + thdd.abs() * co.abs())
+                + m * l * s.abs() * (a_s.abs() + g + l * (w * w * co.abs() + thdd.abs() * s.abs()));
+            let b = pivot_balance_bound(terms, tau);
+            assert!(c8.abs() <= b && (fz * l * s * 1e-9).abs() > b, "{c8:e} vs {b:e}");
+            assert!((m * l * l * thdd).abs() > conserved_rate_bound(tau));
+            // C.4 with the derived C.12, and a 1e-9 relative error in θ''
+            let zpdd = 3.0 * a_s.signum() - g;
+            let t12 = ((a_s - zpdd) / l - w * w * co) / s;
+            let (lever, tl) = (l * w * w * co.abs(), l * (t12 * s).abs());
+            let b4 = left_c4_bound(zpdd, a_s, lever, tl);
+            let r4 = (zpdd - l * (-w * w * co - t12 * s) - a_s).abs();
+            assert!(r4 <= b4, "{th} {r4:e} {b4:e}");
+            assert!((zpdd - l * (-w * w * co - t12 * (1.0 + 1e-9) * s) - a_s).abs() > b4);
+            // C.3 after the flight's closed form, and a 1e-9 relative error in θ'
+            let (rate, d) = (k / gam, (th - th0) * 0.37);
+            let (tf, wf) = (th0 + d, -(k / gam) * d);
+            let br = relaxation_bound(wf, rate, tf - th0, tf);
+            assert!((wf + rate * (tf - th0)).abs() <= br);
+            assert!((wf * (1.0 + 1e-9) + rate * (tf - th0)).abs() > br);
+        }
+    }
+
+    #[test]
     fn the_vertical_pivot_and_axis_bounds_reject_a_1e9_relative_error() {
         // the bound rests on the pivot equations' trigonometry being exact at 0
         assert_eq!(crate::numerics::trig::sin_cos(0.0), (0.0, 1.0));
