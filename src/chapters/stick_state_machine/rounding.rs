@@ -91,6 +91,53 @@ pub fn vertical_pivot_bound(closed_n: f64) -> f64 {
     OWN * 2.0 * gamma(2) * (1.0 + gamma(2)) * closed_n.abs() + UNDERFLOW // formula: 2 γ_2 (1 + γ_2) |m (g + z_s'')|
 }
 
+/// Bound (N m) on C.8's residual at a pivot sample, q_t + F_x L cos - F_z L sin with F
+/// from C.7 and θ'' from C.6 (q_t = k(θ - θ₀) + γ θ'). In exact arithmetic at the
+/// computed θ'' it is (q - 1) m L² θ'' + m L² q e, q = s² + c² (|q - 1| <= γ_5), e the
+/// error of θ'': θ'' = ((g + z_s'') m L s - q_t)/(m L L) rounds its numerator 5 times and
+/// the quotient 4 (with m L L), e <= γ_9 τ/(m L²), τ = |g + z_s''| m L |s| + |k(θ - θ₀)| +
+/// |γ θ'| (`torques`): together γ_15 τ. Its evaluation takes at most 10 roundings of every
+/// expanded term: γ_10 times the same expression with every term's absolute value
+/// (`terms`): |k(θ - θ₀)| + |γ θ'| + m L² |c| (θ'²|s| + |θ''||c|) + m L |s| (|z_s''| + g +
+/// L (θ'²|c| + |θ''||s|)).
+pub fn pivot_balance_bound(terms_nm: f64, torques_nm: f64) -> f64 {
+    // formula: γ_10 terms + γ_16 τ, the sum rounded (1 + γ_2)
+    OWN * (1.0 + gamma(2)) * (gamma(10) * terms_nm + gamma(16) * torques_nm) + UNDERFLOW
+}
+
+/// Bound (N m) on |m L² θ''| from C.6 where the torques cancel exactly (angular momentum
+/// conserved): θ'' is within γ_9 τ/(m L²) (see [`pivot_balance_bound`]) and m L L θ''
+/// rounds 3 times more: γ_12 τ, τ = `torques`.
+pub fn conserved_rate_bound(torques_nm: f64) -> f64 {
+    OWN * gamma(12) * torques_nm + UNDERFLOW // formula: γ_12 (|g + z_s''| m L |s| + |k(θ - θ₀)| + |γ θ'|)
+}
+
+/// Bound (m/s²) on C.4's residual z_c'' - z_s'' at a slide-left sample, z_c'' = z_p'' -
+/// L(-θ'² c - θ'' s) with θ'' = ((z_s'' - z_p'')/L + θ'² c)/s (the derived C.12): exactly
+/// 0 at the computed z_p'', s, c (no trigonometric identity used). θ'' is within
+/// γ_4 (|z_s'' - z_p''|/L + θ'²|c|)/|s| (4 roundings), an error that passes through the
+/// residual's 4 later roundings (γ_4 (1 + γ_4) <= γ_8 after the product with L s); the
+/// evaluation rounds every expanded term at most 6 times: γ_6 (|z_p''| + |z_s''| +
+/// L θ'²|c| + L |θ''||s|) + γ_8 (|z_s'' - z_p''| + L θ'²|c|).
+pub fn left_c4_bound(zpdd_mps2: f64, zsdd_mps2: f64, lever_mps2: f64, thdd_lever_mps2: f64) -> f64 {
+    // formula: γ_6 (|z_p''| + |z_s''| + L θ'²|c| + L|θ''||s|) + γ_8 (|z_s'' - z_p''| + L θ'²|c|), summed (1 + γ_2)
+    let terms = zpdd_mps2.abs() + zsdd_mps2.abs() + lever_mps2 + thdd_lever_mps2;
+    let quotient = (zsdd_mps2 - zpdd_mps2).abs() + lever_mps2;
+    OWN * (1.0 + gamma(2)) * (gamma(6) * terms + gamma(8) * quotient) + UNDERFLOW
+}
+
+/// Bound (rad/s) on C.3's relaxation residual θ' + (k/γ)(θ - θ₀) at a sample, the flight's
+/// closed form (`flight.rs`) having set d = θ - θ₀, θ = fl(θ₀ + d) and θ' = fl(-(k/γ) d),
+/// k/γ rounded once on each side: fl(θ₀ + d) carries an absolute u|θ| (3 roundings more
+/// in the residual: γ_5 (k/γ)|θ|); the d terms differ by (1 + δ)² against (1 + δ)³ and the
+/// sum rounds once: γ_6 (|θ'| + (k/γ)|θ - θ₀|). Together
+/// γ_6 (|θ'| + (k/γ)(|θ - θ₀| + |θ|)), `rate` = k/γ (1/s).
+pub fn relaxation_bound(omega_rad_s: f64, rate_per_s: f64, dev_rad: f64, theta_rad: f64) -> f64 {
+    // formula: γ_6 (|θ'| + (k/γ)(|θ - θ₀| + |θ|)), its own sum rounded (1 + γ_2)
+    OWN * (1.0 + gamma(2)) * gamma(6) * (omega_rad_s.abs() + rate_per_s.abs() * (dev_rad.abs() + theta_rad.abs()))
+        + UNDERFLOW
+}
+
 /// Bound on C.15's axis test, `off` = |a x h|/|h| as computed (h = (0, h_y, 0), its zero
 /// components exact): every component of a x h is one product of two entries (or one
 /// minus an exact 0), the norm and the quotient round relatively: the computed value
@@ -168,6 +215,38 @@ mod tests {
             // a 1e-9 relative error in the friction term or in C.1's lever term fails
             assert!(((-mu * fz / mass) * (1.0 + 1e-9) - l * (-w * w * s + thdd * co) - kin).abs() > bound);
             assert!((doc - fx / mass + l * (thdd * co - w * w * s) * (1.0 + 1e-9)).abs() > bound);
+        }
+    }
+
+    #[test]
+    fn the_pivot_c4_and_relaxation_bounds_hold_and_a_1e9_relative_error_exceeds_them() {
+        let (m, l, g, k, gam, th0) = (0.01f64, 0.15f64, 9.81f64, 0.05f64, 0.002f64, 0.1f64);
+        for (th, w, a_s) in [(0.3f64, 2.0f64, -40.0f64), (-1.1, -9.0, 300.0), (0.05, 0.1, 5.0)] {
+            let (s, co) = th.sin_cos();
+            let q_t = k * (th - th0) + gam * w;
+            let thdd = ((g + a_s) * m * l * s - q_t) / (m * l * l);
+            let (fx, fz) = (m * l * (-w * w * s + thdd * co), m * (a_s + l * (-w * w * co - thdd * s) + g));
+            let c8 = q_t + fx * l * co - fz * l * s;
+            let tau = (g + a_s).abs() * m * l * s.abs() + q_t.abs().max((k * (th - th0)).abs() + (gam * w).abs());
+            let terms = (k * (th - th0)).abs() + (gam * w).abs() + m * l * l * co.abs() * (w * w * s.abs() + thdd.abs() * co.abs())
+                + m * l * s.abs() * (a_s.abs() + g + l * (w * w * co.abs() + thdd.abs() * s.abs()));
+            let b = pivot_balance_bound(terms, tau);
+            assert!(c8.abs() <= b && (fz * l * s * 1e-9).abs() > b, "{c8:e} vs {b:e}");
+            assert!((m * l * l * thdd).abs() > conserved_rate_bound(tau));
+            // C.4 with the derived C.12, and a 1e-9 relative error in θ''
+            let zpdd = 3.0 * a_s.signum() - g;
+            let t12 = ((a_s - zpdd) / l - w * w * co) / s;
+            let (lever, tl) = (l * w * w * co.abs(), l * (t12 * s).abs());
+            let b4 = left_c4_bound(zpdd, a_s, lever, tl);
+            let r4 = (zpdd - l * (-w * w * co - t12 * s) - a_s).abs();
+            assert!(r4 <= b4, "{th} {r4:e} {b4:e}");
+            assert!((zpdd - l * (-w * w * co - t12 * (1.0 + 1e-9) * s) - a_s).abs() > b4);
+            // C.3 after the flight's closed form, and a 1e-9 relative error in θ'
+            let (rate, d) = (k / gam, (th - th0) * 0.37);
+            let (tf, wf) = (th0 + d, -(k / gam) * d);
+            let br = relaxation_bound(wf, rate, tf - th0, tf);
+            assert!((wf + rate * (tf - th0)).abs() <= br);
+            assert!((wf * (1.0 + 1e-9) + rate * (tf - th0)).abs() > br);
         }
     }
 
