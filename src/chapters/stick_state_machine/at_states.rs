@@ -265,15 +265,7 @@ pub(super) fn impact(scene: usize, m: &StickModel, t: f64, y: State, to: Mode) -
 /// The residual fl(b - A^ x^) of `impulse.rs`'s system as built there (the same rows,
 /// the same roundings), at its computed solution.
 fn ne_residual(m: &StickModel, t: f64, y: &State, ne: &NewtonEuler) -> [f64; 3] {
-    let (mass, l) = (m.p.mass_kg, m.p.length_m);
-    let [_, _, vxp, vzp] = m.tip(y);
-    let vs = m.plate(t).1;
-    let (s, c) = y[TH].sin_cos();
-    let a = [
-        [1.0 / mass, 0.0, -l * c, -vxp],
-        [0.0, 1.0 / mass, l * s, vs - vzp],
-        [-c, s, 0.0, 0.0],
-    ];
+    let a = super::impulse::system(m, t, y);
     let x = [ne.jx, ne.jz, ne.omega_after];
     // formula: r = b - A x, row by row
     a.map(|row| row[3] - (row[0] * x[0] + row[1] * x[1] + row[2] * x[2]))

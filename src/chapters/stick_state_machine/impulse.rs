@@ -28,19 +28,25 @@ impl NewtonEuler {
     }
 }
 
-/// Solves the three equations at the landing state `y` (time `t`).
-pub fn newton_euler(m: &StickModel, t: f64, y: &State) -> NewtonEuler {
+/// The three equations at the landing state `y` (time `t`) as an augmented 3x4 matrix
+/// [A | b], unknowns (J_x, J_z, θ'+): what `newton_euler` solves and `at_states.rs`
+/// takes the residual of.
+pub fn system(m: &StickModel, t: f64, y: &State) -> [[f64; 4]; 3] {
     let (mass, l) = (m.p.mass_kg, m.p.length_m);
     let [_, _, vxp, vzp] = m.tip(y);
     let vs = m.plate(t).1;
     let (s, c) = y[TH].sin_cos();
     // rows: J_x / m - L c w = -vxp ; J_z / m + L s w = vs - vzp ; -c J_x + s J_z = 0
-    let mut a = [
+    [
         [1.0 / mass, 0.0, -l * c, -vxp],
         [0.0, 1.0 / mass, l * s, vs - vzp],
         [-c, s, 0.0, 0.0],
-    ];
-    let x = solve3(&mut a);
+    ]
+}
+
+/// Solves the three equations at the landing state `y` (time `t`).
+pub fn newton_euler(m: &StickModel, t: f64, y: &State) -> NewtonEuler {
+    let x = solve3(&mut system(m, t, y));
     NewtonEuler {
         jx: x[0],
         jz: x[1],
