@@ -8,7 +8,7 @@
 //! inequality, a sign), the claim applies the statement to them.
 
 use super::impulse::{newton_euler, NewtonEuler};
-use super::lagrange;
+use super::lagrange::{self, Derivative};
 use crate::physics::stick::contact::ContactEval;
 use crate::physics::stick::rules::Next;
 use crate::physics::stick::run::{Landing, RunSummary};
@@ -29,16 +29,16 @@ pub fn state_at(run: &RunSummary, t: f64, mode: Mode) -> Option<State> {
 pub enum Lagrange {
     /// A flight sample: `z_p''` (m/s²) and θ' (rad/s).
     Flight {
-        /// `(z_p'', its error)` (m/s²).
-        z_p_dd: (f64, f64),
-        /// `(θ', its error)` (rad/s).
-        theta_d: (f64, f64),
+        /// z_p'' (m/s²) with its halved-step change and rounding bound.
+        z_p_dd: Derivative,
+        /// θ' (rad/s) with its halved-step change and rounding bound.
+        theta_d: Derivative,
     },
     /// A pivot sample: θ'' (rad/s²), and the plate's acceleration from std
     /// trigonometry, `-A ω² sin(ω t + φ)` (m/s², not the model's table).
     Pivot {
-        /// `(θ'', its error)` (rad/s²).
-        theta_dd: (f64, f64),
+        /// θ'' (rad/s²) with its halved-step change, rounding bound and step ratio.
+        theta_dd: Derivative,
         /// z_s'' (m/s²).
         plate_acc_mps2: f64,
     },

@@ -5,6 +5,7 @@ use super::{run_scene, Scene};
 use crate::chapters::Context;
 use crate::numerics::hybrid::Options;
 use crate::numerics::ode::{Integrator, Method, StepControl};
+use crate::numerics::rounding::{gamma, OWN};
 use crate::physics::stick::run::{Recording, RunSummary};
 use crate::physics::stick::{
     CollisionAngle, StickModel, StickParams, NSTATE, OM, TH, VXC, VZC, XC, ZC,
@@ -222,12 +223,19 @@ pub fn pendulum_error(base: &StickParams, trace: &[(f64, f64)], eps: f64, spring
 /// 20 ms C's position and the angle `(t s, [x_c m, z_c m, θ rad])`; beside it the same
 /// samples from a Dormand-Prince integration of the same equations.
 pub struct FlightReference {
+    /// The rod's length (m).
+    pub length_m: f64,
     /// The closed form's samples.
     pub at: Vec<(f64, [f64; 3])>,
-    /// `[x_c m, z_c m, θ rad]` at the times of `at` from [`flight_integrated`]; `None` if
-    /// the integration failed.
-    pub integrated: Option<Vec<[f64; 3]>>,
+    /// `[x_c m, z_c m, θ rad]` at the times of `at` from [`flight_integrated`] at
+    /// rtol [`FLIGHT_RTOL`], with the run's accepted steps; `None` if the integration failed.
+    pub integrated: Option<(Vec<[f64; 3]>, u64)>,
+    /// The same at rtol [`FLIGHT_RTOL`]/10: the reference run's error estimate.
+    pub finer: Option<(Vec<[f64; 3]>, u64)>,
 }
+
+/// Tolerance of the Dormand-Prince run the closed-form flight is compared with.
+pub const FLIGHT_RTOL: f64 = 1e-12;
 
 /// The model's closed-form flight of `p` from a state in the air (θ₀ + 0.05 rad, C 2 cm
 /// up, moving): the angle relaxes within a few γ/k = 1 ms, so samples every 0.5 ms.
@@ -250,23 +258,27 @@ pub fn flight_reference(p: &StickParams) -> FlightReference {
     let start = [xp, zp, vxp, vzp, y0[TH]];
     let times: Vec<f64> = at.iter().map(|s| s.0).collect();
     FlightReference {
-        integrated: flight_integrated(p, start, model.rate, &times),
+        length_m: p.length_m,
+        integrated: flight_integrated(p, start, model.rate, &times, FLIGHT_RTOL),
+        finer: flight_integrated(p, start, model.rate, &times, FLIGHT_RTOL / 10.0),
         at,
     }
 }
 
-/// Dormand-Prince at rtol 1e-12 on `(x_p, z_p, xdot_p, zdot_p, theta)` from `start` with
-/// C.3 and C.5, `theta' = -rate (theta - theta_0)`, `zddot_p = -g`: C's position and the
-/// angle `[x_c m, z_c m, θ rad]` at `times` (s); `None` if a step fails.
+/// Dormand-Prince at `rtol` (= atol) on `(x_p, z_p, xdot_p, zdot_p, theta)` from `start`
+/// with C.3 and C.5, `theta' = -rate (theta - theta_0)`, `zddot_p = -g`: C's position and
+/// the angle `[x_c m, z_c m, θ rad]` at `times` (s), and the accepted steps; `None` if a
+/// step fails.
 fn flight_integrated(
     p: &StickParams,
     start: [f64; 5],
     rate: f64,
     times: &[f64],
-) -> Option<Vec<[f64; 3]>> {
+    rtol: f64,
+) -> Option<(Vec<[f64; 3]>, u64)> {
     let (g, th0, l) = (p.g_mps2, p.theta0_rad, p.length_m);
     let sys = move |_t: f64, u: &[f64; 5]| [u[2], u[3], 0.0, -g, -rate * (u[4] - th0)];
-    let mut integ = Integrator::<5>::new(Method::Dopri5, StepControl::tol(1e-12, 1e-12));
+    let mut integ = Integrator::<5>::new(Method::Dopri5, StepControl::tol(rtol, rtol));
     let (mut t, mut u) = (0.0, start);
     let mut out = Vec::with_capacity(times.len());
     for &t1 in times {
@@ -274,25 +286,50 @@ fn flight_integrated(
         t = t1;
         out.push([u[0] - l * u[4].sin(), u[1] - l * u[4].cos(), u[4]]); // formula: C.1
     }
-    Some(out)
+    Some((out, integ.stats.accepted))
 }
 
 /// The largest difference between the closed-form flight and its Dormand-Prince
 /// integration, in C's position (m) or the angle (rad); infinite if the integration
 /// failed.
 pub fn flight_error(f: &FlightReference) -> f64 {
-    let Some(dp) = &f.integrated else {
+    let Some((dp, _)) = &f.integrated else {
         return f64::INFINITY;
     };
-    f.at.iter()
-        .zip(dp)
-        .map(|(&(_, r), u)| {
-            (u[0] - r[0])
-                .abs()
-                .max((u[1] - r[1]).abs())
-                .max((u[2] - r[2]).abs())
-        })
+    largest_difference(f.at.iter().map(|s| &s.1), dp)
+}
+
+/// The largest component-wise difference of two lists of `[x_c, z_c, θ]`.
+fn largest_difference<'a>(a: impl Iterator<Item = &'a [f64; 3]>, b: &[[f64; 3]]) -> f64 {
+    a.zip(b)
+        .flat_map(|(r, u)| (0..3).map(move |i| (u[i] - r[i]).abs()))
         .fold(0.0, f64::max)
+}
+
+/// The error budget of [`flight_error`] from the run itself (m or rad); infinite if an
+/// integration failed. Two parts:
+/// - the Dormand-Prince run's own error, estimated by the run at a tenth of its
+///   tolerance: e(τ) <= |y(τ) - y(τ/10)| + e(τ/10), and with e(τ/10) <= e(τ)/2 (the
+///   global error shrinks with the tolerance: about 10^(5/6) = 6.8 times for a fifth-order
+///   pair, the assumption this rests on) e(τ) <= 2 |y(τ) - y(τ/10)|, the largest over the
+///   samples (the error is a smooth function of t: a sample where the two runs cross
+///   must not set it);
+/// - rounding, which the difference of the two runs need not show: each accepted step
+///   rounds y once where it adds the increment and the increment once relative to it
+///   (γ_2 |y| per step, N steps), the closed form and C.1 a few (8) times more, on values
+///   no larger than `size` = |x_p| + |z_p| + L + |θ| at the sample: (N γ_2 + γ_8) size.
+pub fn flight_budget(f: &FlightReference) -> f64 {
+    let (Some((dp, n)), Some((fine, _))) = (&f.integrated, &f.finer) else {
+        return f64::INFINITY;
+    };
+    let estimate = 2.0 * largest_difference(dp.iter(), fine); // formula: e(τ) <= 2 |y(τ) - y(τ/10)|
+    let size = f
+        .at
+        .iter()
+        .map(|(_, r)| r[0].abs() + r[1].abs() + 2.0 * f.length_m + r[2].abs()) // |x_p| <= |x_c| + L
+        .fold(0.0, f64::max);
+    let rounding = (*n as f64 * gamma(2) + gamma(8)) * size; // formula: (N γ_2 + γ_8)(|x_p| + |z_p| + L + |θ|)
+    OWN * (estimate + rounding)
 }
 
 /// Markdown table of the evidence scenes.

@@ -112,9 +112,24 @@ pub fn conserved_rate_bound(torques_nm: f64) -> f64 {
     OWN * gamma(12) * torques_nm + UNDERFLOW // formula: γ_12 (|g + z_s''| m L |s| + |k(θ - θ₀)| + |γ θ'|)
 }
 
+/// Bound (N m) on C.8's residual q_t + F_x L cos - F_z L sin at a slide sample with F_z
+/// from C.9 / C.11, F_z = q_t/(L (s + c_μ μ c)) (c_μ = -σ = ∓1, exact), and F_x = σ μ F_z
+/// (q_t = k(θ - θ₀) + γ θ', the same double on both sides). At the computed F_z^ the
+/// exact residual is q_t - F_z^ D, D = L (s - σ μ c); the computed denominator D^ rounds
+/// μ c, the sum and the product with L: |D^ - D| <= γ_3 L (|s| + μ|c|), and
+/// F_z^ D^ = q_t (1 + δ): |q_t - F_z^ D| <= u |q_t| + γ_3 |F_z^| L (|s| + μ|c|). The
+/// residual's evaluation rounds q_t twice (the two sums), F_x L c five times (σ μ exact,
+/// the products with F_z, L and c, the two sums) and F_z L s four times: together
+/// γ_3 |q_t| + γ_8 |F_z| L (|s| + μ|c|), `lever` = |F_z| L (|s| + μ|c|) (N m).
+pub fn slide_balance_bound(qt_nm: f64, lever_nm: f64) -> f64 {
+    // formula: γ_3 |q_t| + γ_8 |F_z| L (|s| + μ|c|), its own sum rounded (1 + γ_2)
+    OWN * (1.0 + gamma(2)) * (gamma(3) * qt_nm.abs() + gamma(8) * lever_nm) + UNDERFLOW
+}
+
 /// Bound (m/s²) on C.4's residual z_c'' - z_s'' at a slide-left sample, z_c'' = z_p'' -
 /// L(-θ'² c - θ'' s) with θ'' = ((z_s'' - z_p'')/L + θ'² c)/s (the derived C.12): exactly
-/// 0 at the computed z_p'', s, c (no trigonometric identity used). θ'' is within
+/// 0 at the computed z_p'', s, c (no trigonometric identity used). C.14's angle row for
+/// the right slide is the same expression, so the bound holds at every slide sample. θ'' is within
 /// γ_4 (|z_s'' - z_p''|/L + θ'²|c|)/|s| (4 roundings), an error that passes through the
 /// residual's 4 later roundings (γ_4 (1 + γ_4) <= γ_8 after the product with L s); the
 /// evaluation rounds every expanded term at most 6 times: γ_6 (|z_p''| + |z_s''| +
@@ -135,6 +150,35 @@ pub fn left_c4_bound(zpdd_mps2: f64, zsdd_mps2: f64, lever_mps2: f64, thdd_lever
 pub fn relaxation_bound(omega_rad_s: f64, rate_per_s: f64, dev_rad: f64, theta_rad: f64) -> f64 {
     // formula: γ_6 (|θ'| + (k/γ)(|θ - θ₀| + |θ|)), its own sum rounded (1 + γ_2)
     OWN * (1.0 + gamma(2)) * gamma(6) * (omega_rad_s.abs() + rate_per_s.abs() * (dev_rad.abs() + theta_rad.abs()))
+        + UNDERFLOW
+}
+
+/// Bound (rad) on the error of a landing angle's deviation θ - θ₀ as the run holds it
+/// (`Landing::theta_rad` minus θ₀), against the exact closed-form angle at the exact
+/// landing time from the same take-off state: beyond it the landing angle differs from θ₀
+/// by more than rounding can explain. The flight's closed form (`flight.rs`) sets
+/// d = fl(d₀ fl(exp(fl(-r τ)))), d₀ = fl(θ_to - θ₀), τ = fl(t - t₀), r = fl(k/γ), and
+/// θ = fl(θ₀ + d):
+/// - d₀, exp (1 ulp: 2u) and the product: a relative γ_4 of |d|;
+/// - the exponent rounds 3 times (r, τ, the product): exp moves by a relative
+///   γ_3 r τ (to first order), and r τ = ln(|d₀|/|d|) < ln(π/|d|) (|θ| < π/2 on both
+///   sides);
+/// - the event time is located within t_tol = 4 ε max(|t|, 1) (`numerics::events`),
+///   where θ moves at |θ'| = r |d|: r t_tol |d|;
+/// - the addition θ₀ + d rounds by u |θ|, and the claim's θ - θ₀ by u |θ - θ₀|.
+///
+/// Together u (|θ| + |θ - θ₀|) + |d| (γ_4 + γ_3 ln(π/|d|) + r t_tol), `rate` = k/γ (1/s).
+/// Every term but u |θ| is proportional to |d|, so the bound exceeds |d| only when |d| is
+/// within a few ulps of θ: a landing "differs from θ₀" once |θ - θ₀| > u|θ| (1 + 1e-12)
+/// roughly. Rests on the take-off angle's own integration error being below |d₀| (it
+/// relaxes by the same factor).
+pub fn landing_angle_bound(theta_rad: f64, dev_rad: f64, rate_per_s: f64, t_s: f64) -> f64 {
+    let u = crate::numerics::rounding::U;
+    let d = dev_rad.abs();
+    let t_tol = 4.0 * f64::EPSILON * t_s.abs().max(1.0); // formula: t_tol = 4 ε max(|t|, 1)
+    let log = (std::f64::consts::PI / d.max(f64::MIN_POSITIVE)).ln().max(0.0); // formula: r τ < ln(π/|d|)
+    // formula: u (|θ| + |θ - θ₀|) + |d| (γ_4 + γ_3 ln(π/|d|) + r t_tol)
+    OWN * (1.0 + gamma(2)) * (u * (theta_rad.abs() + d) + d * (gamma(4) + gamma(3) * log + rate_per_s * t_tol))
         + UNDERFLOW
 }
 
@@ -248,6 +292,53 @@ mod tests {
             assert!((wf + rate * (tf - th0)).abs() <= br);
             assert!((wf * (1.0 + 1e-9) + rate * (tf - th0)).abs() > br);
         }
+    }
+
+    #[test]
+    fn the_slide_balance_bound_holds_and_a_1e9_relative_error_exceeds_it() {
+        let (l, k, gam, th0, mu) = (0.15f64, 10.0f64, 0.01f64, 0.3f64, 0.4f64);
+        for (th, w) in [(0.3f64, 2.0f64), (-1.1, -9.0), (0.05, 0.1), (0.9, 40.0), (0.31, -0.02)] {
+            let (s, co) = th.sin_cos();
+            let q_t = k * (th - th0) + gam * w;
+            for sigma in [1.0f64, -1.0] {
+                let fz = q_t / (l * (s + -sigma * mu * co)); // C.9 / C.11
+                let fx = sigma * mu * fz;
+                let res = q_t + fx * l * co - fz * l * s;
+                let b = slide_balance_bound(q_t, fz.abs() * l * (s.abs() + mu * co.abs()));
+                assert!(res.abs() <= b, "{th} {sigma}: {res:e} vs {b:e}");
+                // a 1e-9 relative error in F_z (or in F_x) fails
+                let off = q_t + fx * l * co - fz * (1.0 + 1e-9) * l * s;
+                let off_x = q_t + fx * (1.0 + 1e-9) * l * co - fz * l * s;
+                assert!(off.abs() > b && off_x.abs() > b, "{th} {sigma}: bound {b:e}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_landing_angle_bound_holds_and_a_1e9_relative_deviation_exceeds_it() {
+        let (th0, rate) = (0.3f64, 1000.0f64);
+        for d0 in [0.05f64, -0.2, 1e-3] {
+            for (t0, tau) in [(0.0f64, 0.004f64), (3.7, 0.021), (811.0, 0.035)] {
+                let t1: f64 = t0 + tau;
+                let tau_c = t1 - t0; // the rounded flight time
+                let d = d0 * (-rate * tau_c).exp(); // flight.rs
+                let th = th0 + d;
+                // reference: the same deviation by a different rounding path (half steps)
+                let half = (-rate * tau_c / 2.0).exp();
+                let d_ref = d0 * half * half;
+                let b = landing_angle_bound(th, th - th0, rate, t1);
+                assert!(((th - th0) - d_ref).abs() <= b, "{d0} {tau}: {:e} vs {b:e}", (th - th0) - d_ref);
+                // the event time off by its tolerance moves θ within the bound
+                let t_tol = 4.0 * f64::EPSILON * t1.max(1.0);
+                let d_late = d0 * (-rate * (tau_c + t_tol)).exp();
+                assert!(((th - th0) - d_late).abs() <= b);
+                // a deviation of 1e-9 of θ₀ is far beyond the bound
+                assert!(b < 1e-9 * th0 || d.abs() > 1e-9 * th0);
+                assert!(1e-9 * th0 > landing_angle_bound(th0 + 1e-9 * th0, 1e-9 * th0, rate, t1));
+            }
+        }
+        // a landing at θ₀ exactly (fully relaxed) does not count as different
+        assert!(landing_angle_bound(th0, 0.0, rate, 5.0) > 0.0);
     }
 
     #[test]
