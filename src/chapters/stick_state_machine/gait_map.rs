@@ -21,7 +21,14 @@ const TRANSIENT: (usize, usize) = (250, 60);
 /// Largest period tried.
 const MAX_PERIOD: usize = 8;
 /// An orbit closes when its points repeat to this distance (units of the section's
-/// scales: 1 rad, omega, the plate's peak velocity).
+/// scales: 1 rad, omega, the plate's peak velocity). A classification threshold (a
+/// cell's gait), not a claim's tolerance: it must lie above the map's evaluation error at
+/// the map's rtol 1e-10 (the limit-cycle runs measure 2.0e-13 and 7.2e-15 at rtol 1e-12,
+/// so about 2e-11 at 1e-10: 5e4 times below it) and below the distance of distinct orbit
+/// points (6.7e-3 and more on the authors' unsettled orbit). A slowly settling cell can sit
+/// above it after the transient (the self-locking gait contracts by 0.89 per period: 1e-6
+/// after 100 periods) and is then classed not settled: the quick map's 60 periods say so
+/// in its caption's terms, the full map's 250 resolve it.
 const CLOSE_TOL: f64 = 1e-6;
 /// Step of the Newton and stability Jacobians (units of the scales): the runs' noise at
 /// the chapter's rtol 1e-10 over it is 1e-6, far below any |lambda| - 1 the map resolves.
