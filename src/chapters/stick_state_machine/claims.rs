@@ -114,7 +114,7 @@ struct SmallMotion {
 /// is twice |f''| A²/W0² plus N.
 fn small_motion(pa: &StickParams, traces: &[Vec<(f64, f64)>; 4], spring: f64) -> SmallMotion {
     let eps = PENDULUM_EPS;
-    let e = [1.0, 2.0, 4.0].map(|k| pendulum_error(pa, &traces[(k as f64).log2() as usize], k * eps, spring));
+    let e = [0usize, 1, 2].map(|i| pendulum_error(pa, &traces[i], f64::from(1u32 << i) * eps, spring)); // A, 2A, 4A
     let n = 2.0 * trace_difference(&traces[0], &traces[3]); // formula: N = 2 |y_DP5 - y_DOP853|
     let (ratio, ratio_4a) = (e[1] / e[0].max(1e-300), e[2] / e[1].max(1e-300));
     let d1 = ratio * (4.0 * n / e[1] + n / e[0]); // formula: ratio (N_b/e_b + N_a/e_a)
