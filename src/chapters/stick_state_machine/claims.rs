@@ -228,17 +228,36 @@ struct SlideResiduals {
     x_within: bool,
 }
 
+impl SlideResiduals {
+    /// Nothing seen yet: every maximum 0, every check holding, the smallest bound infinite.
+    fn new() -> Self {
+        SlideResiduals {
+            c8: 0.0,
+            c8_tol: 0.0,
+            c4: 0.0,
+            c4_tol: 0.0,
+            slide_within: true,
+            c4_left: 0.0,
+            c4_left_tol: 0.0,
+            c4_left_within: true,
+            n: 0,
+            nl: 0,
+            vx2: 0.0,
+            vz2: 0.0,
+            rows_x: 0.0,
+            row_xc: 0.0,
+            x_tol: f64::INFINITY,
+            x_within: true,
+        }
+    }
+}
+
 /// C.8 to C.14 evaluated as stated in `d` at the slide samples.
 fn slide_residuals(d: &Statements, c: &Ctx) -> SlideResiduals {
-    let (mut c8, mut c4, mut n) = (0.0f64, 0.0f64, 0usize);
-    let (mut c8_tol, mut c4_tol, mut slide_within) = (0.0f64, 0.0f64, true);
-    let (mut vx_rms, mut vz_rms, mut nl) = (0.0f64, 0.0f64, 0usize);
-    let (mut c4_left, mut c4_left_tol, mut c4_left_within) = (0.0f64, 0.0f64, true);
+    let mut r = SlideResiduals::new();
     // C.10/C.13 first rows against Newton's law for P (m x_p'' = F_x, F_x = sigma mu F_z
     // from Table 1), and C.14's x_c'' row against C.1 differentiated twice (x_c'' = x_p''
     // - L (theta'' cos - theta'^2 sin)), relative to mu F_z/m + L theta'^2 + L |theta''|
-    let (mut rows_x, mut row_xc) = (0.0f64, 0.0f64);
-    let (mut x_tol, mut x_within) = (f64::INFINITY, true);
     let slides = c
         .samples()
         .filter(|(x, _)| matches!(x.mode, Mode::SlideLeft | Mode::SlideRight));
@@ -265,59 +284,42 @@ fn slide_residuals(d: &Statements, c: &Ctx) -> SlideResiduals {
         let row = if sigma > 0.0 { d.c10_x } else { d.c13_x };
         let xpdd = row * mu * fz / mass; // C.10 / C.13 first row as stated
         let scale_x = mu * fz.abs() / mass + l * w * w + l * thdd.abs();
-        rows_x = rows_x.max((xpdd - fx / mass).abs() / scale_x); // formula: Newton, m x_p'' = F_x
+        r.rows_x = r.rows_x.max((xpdd - fx / mass).abs() / scale_x); // formula: Newton, m x_p'' = F_x
         let friction = mu * fz.abs() / mass;
         let bound_x = x_row_bound(friction); // formula: 2 γ_3 μ |F_z|/m
-        x_within &= (xpdd - fx / mass).abs() <= bound_x;
-        x_tol = x_tol.min(bound_x / scale_x);
+        r.x_within &= (xpdd - fx / mass).abs() <= bound_x;
+        r.x_tol = r.x_tol.min(bound_x / scale_x);
         if sigma < 0.0 {
             let xcdd_doc = -mu * fz / mass - l * (d.c14_xc_w2 * w * w * s + thdd * co); // C.14 third row as stated
             let xcdd_kin = fx / mass - l * (thdd * co - w * w * s); // formula: C.1 twice
-            row_xc = row_xc.max((xcdd_doc - xcdd_kin).abs() / scale_x);
+            r.row_xc = r.row_xc.max((xcdd_doc - xcdd_kin).abs() / scale_x);
             // formula: 2 (γ_3 μ |F_z|/m + γ_6 L (θ'² |sin| + |θ''| |cos|))
             let bound_c = xc_row_bound(friction, l * w * w * s.abs() + l * thdd.abs() * co.abs());
-            x_within &= (xcdd_doc - xcdd_kin).abs() <= bound_c;
-            x_tol = x_tol.min(bound_c / scale_x);
+            r.x_within &= (xcdd_doc - xcdd_kin).abs() <= bound_c;
+            r.x_tol = r.x_tol.min(bound_c / scale_x);
         }
         let zcdd = zpdd - l * (-w * w * co - thdd * s); // C.4
         // each sample against its own rounding bounds (rounding.rs)
         let b8 = slide_balance_bound(q_t, fz.abs() * l * (s.abs() + mu * co.abs())); // formula: γ_3 |q_t| + γ_8 |F_z| L (|s| + μ|c|)
         let (lever, thdd_lever) = (l * w * w * co.abs(), l * (thdd * s).abs());
         let b4 = left_c4_bound(zpdd, a_s, lever, thdd_lever); // C.14 is C.12's expression
-        slide_within &= res8.abs() <= b8 && (zcdd - a_s).abs() <= b4;
-        c8 = c8.max(res8.abs());
-        c8_tol = c8_tol.max(b8);
-        c4 = c4.max((zcdd - a_s).abs() / (g + a_s.abs()));
-        c4_tol = c4_tol.max(b4 / (g + a_s.abs()));
-        n += 1;
+        r.slide_within &= res8.abs() <= b8 && (zcdd - a_s).abs() <= b4;
+        r.c8 = r.c8.max(res8.abs());
+        r.c8_tol = r.c8_tol.max(b8);
+        r.c4 = r.c4.max((zcdd - a_s).abs() / (g + a_s.abs()));
+        r.c4_tol = r.c4_tol.max(b4 / (g + a_s.abs()));
+        r.n += 1;
         if x.mode == Mode::SlideLeft {
-            c4_left = c4_left.max((zcdd - a_s).abs() / (g + a_s.abs()));
-            c4_left_within &= (zcdd - a_s).abs() <= b4;
-            c4_left_tol = c4_left_tol.max(b4 / (g + a_s.abs()));
+            r.c4_left = r.c4_left.max((zcdd - a_s).abs() / (g + a_s.abs()));
+            r.c4_left_within &= (zcdd - a_s).abs() <= b4;
+            r.c4_left_tol = r.c4_left_tol.max(b4 / (g + a_s.abs()));
             let [_, _, vxp, vzp] = x.tip;
-            vx_rms += vxp * vxp;
-            vz_rms += vzp * vzp;
-            nl += 1;
+            r.vx2 += vxp * vxp;
+            r.vz2 += vzp * vzp;
+            r.nl += 1;
         }
     }
-    SlideResiduals {
-        c8,
-        c8_tol,
-        c4,
-        c4_tol,
-        slide_within,
-        c4_left,
-        c4_left_tol,
-        c4_left_within,
-        n,
-        nl,
-        vx2: vx_rms,
-        vz2: vz_rms,
-        rows_x,
-        row_xc,
-        x_tol,
-        x_within,
-    }
+    r
 }
 
 /// C.8 to C.14 and section 4.3's sentences.
