@@ -10,6 +10,12 @@
 //! along every exact flight, and the scheme's flights are exact) by Delta P / h within
 //! closed-form envelopes of the impact speed x = |v_k|/(g h); summed along an envelope
 //! of the impact speeds and energies, they bound t_rest - t_inf.
+//!
+//! The same invariant bounds the event-driven run's stop ([`event_driven_bound_s`]):
+//! there only the event times' rounding moves P.
+
+use super::budget::EVENT_ULPS;
+use crate::numerics::rounding::{gamma, OWN};
 
 /// The per-impact envelopes of Delta P / h for restitution `e`, in the scaled impact
 /// speed x = |v_k|/(g h) (dimensionless).
@@ -118,6 +124,59 @@ pub fn mj_rest_bound_s(e: f64, g_mps2: f64, h_s: f64, drop_m: f64) -> f64 {
     let dz = 4.0 * n_steps * f64::EPSILON * drop_m; // formula: delta z = 4 N eps z_0
     let rounding = env.c * (2.0 * g * dz).sqrt() / g; // formula: delta P <= c sqrt(2 g delta z)/g
     h_s * (-best_lo).max(best_hi) + rest_tiny + rounding
+}
+
+/// What the event-driven ball run reports at its Zeno stop, for [`event_driven_bound_s`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ZenoStop {
+    /// Time of the stop (s).
+    pub t_s: f64,
+    /// Landings over the run.
+    pub landings: u64,
+    /// Events inside the guard's window at the stop.
+    pub in_window: usize,
+    /// The guard: events allowed in a window, and the window (s).
+    pub guard: (usize, f64),
+}
+
+/// The bound (s) on |t_stop - t_inf| of the event-driven ball (restitution `e` in
+/// (0, 1), dropped from `drop_m` under `g_mps2`) that stopped as `stop` says. Derivation:
+/// chapter 7's text, "How far the event-driven stop lies from t_inf".
+///
+/// The invariant P = t + v/g + c U/g of [`mj_rest_bound_s`] equals t_inf along exact
+/// flights and impacts; only the event times move it. A landing of speed V located
+/// late by δ (the locator returns the end of its bracket past the crossing) leaves the
+/// ball V δ + g δ²/2 below the floor with w = e (V + g δ): then U'² = e² V² - (1 - e²)(2 g V δ + g² δ²),
+/// 0 <= U' <= e V, and e V - U' <= min(e V, q/(e V)), q = (1 - e²)(2 g V δ + g² δ²), so
+/// |ΔP| <= (1 + e) δ + (c/g) max over V <= V_1 of min(e V, q/(e V)) = (1 + e) δ + (c/g) e min(V_1, V*),
+/// V* = g δ (1 - e² + sqrt(1 - e²))/e² where e V = q/(e V) (V_1 = sqrt(2 g z_0), the
+/// fastest landing). δ = [`EVENT_ULPS`] ulps of t (assumed, as in every budget of the
+/// chapter); the rounding of w = e V adds (1 + c) V_1 γ_2/g per landing. The stop itself:
+/// when the guard fired (`in_window` = its count m within the window W), the flights
+/// shrink by e, so the last is below W (1 - e) e^(m-2)/(1 - e^(m-1)) and the flights
+/// after it sum to (1 + c) e/2 of it; when time stopped advancing (fewer events), the
+/// flight in progress is shorter than the driver's smallest step, 16 ε t (assumed), and
+/// the rest sum to (1 + c)/2 of it. Plus t_inf's own rounding, γ_8 t_inf.
+pub fn event_driven_bound_s(e: f64, g_mps2: f64, drop_m: f64, t_inf_s: f64, stop: &ZenoStop) -> f64 {
+    let g = g_mps2;
+    let c = (1.0 + e) / (1.0 - e); // formula: c = (1 + e)/(1 - e)
+    let v1 = (2.0 * g * drop_m).sqrt(); // formula: V_1 = sqrt(2 g z_0)
+    let t = stop.t_s.abs().max(t_inf_s);
+    let delta = EVENT_ULPS * f64::EPSILON * t; // formula: δ = 256 ε t
+    let s = (1.0 - e * e).sqrt();
+    let e_v_star = g * delta * (1.0 - e * e + s) / e; // formula: e V* = g δ (1 - e² + sqrt(1 - e²))/e
+    let per_landing = (1.0 + e) * delta
+        + c / g * (e * v1).min(e_v_star)
+        + (1.0 + c) * v1 * gamma(2) / g; // formula: |ΔP| <= (1 + e) δ + (c/g) e min(V_1, V*) + (1 + c) V_1 γ_2/g
+    let (max_events, window_s) = stop.guard;
+    let tail = if stop.in_window >= max_events {
+        let m = max_events as f64;
+        let last = window_s * (1.0 - e) * e.powf(m - 2.0) / (1.0 - e.powf(m - 1.0)); // formula: f_last <= W (1 - e) e^(m-2)/(1 - e^(m-1))
+        (1.0 + c) * e / 2.0 * last // formula: remaining = (1 + c) e f_last/2
+    } else {
+        (1.0 + c) / 2.0 * 16.0 * f64::EPSILON * t // formula: remaining <= (1 + c)/2 16 ε t
+    };
+    (stop.landings as f64 * per_landing + tail + gamma(8) * t_inf_s) * OWN
 }
 
 #[cfg(test)]
