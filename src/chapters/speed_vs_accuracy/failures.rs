@@ -218,32 +218,7 @@ pub fn zeno(
     ball.bias_mps2 = 0.0;
     ball.restitution = e;
     ball.rest_velocity_mps = 0.0;
-    let opts = BlockOptions {
-        hybrid: Options {
-            record_events: false,
-            ..Options::default()
-        },
-        record_events: false,
-        start: (0.0, [0.0, 0.0, 1.0, 0.0]),
-        ..BlockOptions::default()
-    };
-    let run = simulate_block(&ball, &floor, t_run, &opts);
-    let (ball_zeno_at_s, ball_zeno_bound_s) = match run.outcome {
-        Outcome::Zeno {
-            t_s,
-            events,
-            window_s,
-        } => {
-            let stop = ZenoStop {
-                t_s,
-                landings: run.total_counts.landings as u64,
-                in_window: events,
-                guard: (opts.hybrid.zeno.max_events, window_s),
-            };
-            (Some(t_s), event_driven_bound_s(e, g, 1.0, ball_t_inf_s, &stop))
-        }
-        _ => (None, f64::NAN),
-    };
+    let (ball_zeno_at_s, ball_zeno_bound_s) = event_driven_ball(ball, &floor, ball_t_inf_s);
     let rest = mj_ball_rest_s(ball, &floor, t_run);
     let s = scene.with_restitution(e, 0.0);
     let chattering = drift_block_model(&s, &Options::default(), true, 64, transient, cycles);
@@ -269,6 +244,40 @@ pub fn zeno(
         drift_mj_mps: value(&mj),
         drift_mj_half_quarter_mps: (value(&mj_half), value(&mj_quarter)),
         drift_sticking_tenth_mps: value(&sticking_tenth),
+    }
+}
+
+/// The event-driven `ball` (its params: no bias, restitution e, no rest threshold)
+/// dropped from 1 m on the `floor`, run to `t_inf_s` + 1 s: the time of its Zeno stop
+/// (None if it did not stop so) and the bound on |t_stop - t_inf| of that run
+/// ([`event_driven_bound_s`]; NaN without a stop).
+pub(super) fn event_driven_ball(ball: BlockParams, floor: &Harmonic, t_inf_s: f64) -> (Option<f64>, f64) {
+    let opts = BlockOptions {
+        hybrid: Options {
+            record_events: false,
+            ..Options::default()
+        },
+        record_events: false,
+        start: (0.0, [0.0, 0.0, 1.0, 0.0]),
+        ..BlockOptions::default()
+    };
+    let run = simulate_block(&ball, floor, t_inf_s + 1.0, &opts);
+    match run.outcome {
+        Outcome::Zeno {
+            t_s,
+            events,
+            window_s,
+        } => {
+            let stop = ZenoStop {
+                t_s,
+                landings: run.total_counts.landings as u64,
+                in_window: events,
+                guard: (opts.hybrid.zeno.max_events, window_s),
+            };
+            let bound = event_driven_bound_s(ball.restitution, ball.g_mps2, 1.0, t_inf_s, &stop);
+            (Some(t_s), bound)
+        }
+        _ => (None, f64::NAN),
     }
 }
 

@@ -200,7 +200,13 @@ mod tests {
                     lo = lo.min(dp);
                     hi = hi.max(dp);
                 }
-                let tol = 1e-9 * (1.0 + x);
+                // Counted rounding of both sides. The sqrt arguments x^2 + 2 zeta and
+                // e^2 x^2 + 2 zeta - (1 - e) x cancel: each is off by at most
+                // γ_4 (x^2 + 2x) absolutely, which moves its sqrt by at most the sqrt of
+                // that; every other operation adds a relative γ_8 of the terms' sizes
+                // 1, (1 + e) x and c (u + u1 + 2(x + 1)) (the envelopes' sqrt included).
+                let cancel = 2.0 * (gamma(4) * (x * x + 2.0 * x)).sqrt(); // formula: 2 sqrt(γ_4 (x^2 + 2x))
+                let tol = env.c * cancel + gamma(8) * (2.0 + 2.0 * (1.0 + e) * x + env.c * (2.0 * x + 2.0) * 2.0); // formula: c 2 sqrt(γ_4 (x^2 + 2x)) + γ_8 (2 + 2(1+e)x + 4c(x + 1))
                 assert!(lo >= env.low_min(x, x) - tol, "e {e} x {x}: {lo} < {}", env.low_min(x, x));
                 assert!(hi <= env.high_max(x, x) + tol, "e {e} x {x}: {hi} > {}", env.high_max(x, x));
             }
