@@ -69,8 +69,7 @@ impl Regime {
 /// where the two flights of a P2 orbit part as sqrt(Gamma - Gamma_pd): there the
 /// threshold moves the label by (1e-7)^2 in Gamma, under the bisection's bracket
 /// (7.6e-7), and the chapter locates the doublings by the multiplier instead
-/// (`period_doubling_gamma`). A threshold 10 times smaller or larger classifies the
-/// sweep the same (it lies between the two scales).
+/// (`period_doubling_gamma`).
 const TOL: f64 = 1e-7;
 
 /// Classifies a run: the smallest p <= 16 such that the last flights repeat with
