@@ -248,10 +248,9 @@ fn stiff_blowup(doc: &Statements, ev: &Evidence) -> Claim {
 
 /// The driver stops when 100 events fall within 1 us or time stops advancing; the stop
 /// lies within the bound the run derives for itself (`zeno_bound.rs`,
-/// `event_driven_bound_s`): every landing's time, located to 256 ulps of t, moves the
-/// accumulation time the ball's state predicts by at most (1 + e) δ + (c/g) e min(V_1,
-/// V*), and the flights after the stop sum to a closed form of the guard's window.
-/// Default scene: 1.06e-13 s measured against a bound of 1.03e-10 s (120 landings).
+/// `event_driven_bound_s`): every landing's time, located to 256 ulps of t (δ), moves
+/// the accumulation time the ball's state predicts by exactly c δ (c = (1 + e)/(1 - e)),
+/// and the flights after the stop sum to a closed form of the guard's window.
 fn zeno_ball(doc: &Statements, ev: &Evidence) -> Claim {
     let z = &ev.zeno.outcome;
     let tol = z.ball_zeno_bound_s; // formula: |t_stop - t_inf| <= N_landings |ΔP|_max + tail + γ_8 t_inf
@@ -259,7 +258,7 @@ fn zeno_ball(doc: &Statements, ev: &Evidence) -> Claim {
         Check::ClosedForm,
         "zeno-ball-stops-at-accumulation",
         "numerics",
-        "The event-driven driver stops a ball bouncing with 0 < e < 1 (dropped from 1 m) with a Zeno outcome at the accumulation time t_inf = t1 (1 + e)/(1 - e), within the bound of the run itself: per landing (1 + e) δ + (c/g) e min(V_1, V*) (δ = 256 ulps of t, the event time's rounding; c = (1 + e)/(1 - e)), plus the flights after the stop (s)",
+        "The event-driven driver stops a ball bouncing with 0 < e < 1 (dropped from 1 m) with a Zeno outcome at the accumulation time t_inf = t1 (1 + e)/(1 - e), within the bound of the run itself: c δ per landing (δ = 256 ulps of t, the event time's rounding; c = (1 + e)/(1 - e)), plus the flights after the stop (s)",
     )
     .close(doc.zeno_factor * z.ball_t_inf_s, z.ball_zeno_at_s.unwrap_or(f64::NAN), tol)
 }

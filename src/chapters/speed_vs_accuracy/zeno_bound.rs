@@ -144,30 +144,26 @@ pub struct ZenoStop {
 /// chapter 7's text, "How far the event-driven stop lies from t_inf".
 ///
 /// The invariant P = t + v/g + c U/g of [`mj_rest_bound_s`] equals t_inf along exact
-/// flights and impacts; only the event times move it. A landing of speed V located
-/// late by δ (the locator returns the end of its bracket past the crossing) leaves the
-/// ball V δ + g δ²/2 below the floor with w = e (V + g δ): then U'² = e² V² - (1 - e²)(2 g V δ + g² δ²),
-/// 0 <= U' <= e V, and e V - U' <= min(e V, q/(e V)), q = (1 - e²)(2 g V δ + g² δ²), so
-/// |ΔP| <= (1 + e) δ + (c/g) max over V <= V_1 of min(e V, q/(e V)) = (1 + e) δ + (c/g) e min(V_1, V*),
-/// V* = g δ (1 - e² + sqrt(1 - e²))/e² where e V = q/(e V) (V_1 = sqrt(2 g z_0), the
-/// fastest landing). δ = [`EVENT_ULPS`] ulps of t (assumed, as in every budget of the
-/// chapter); the rounding of w = e V adds (1 + c) V_1 γ_2/g per landing. The stop itself:
-/// when the guard fired (`in_window` = its count m within the window W), the flights
-/// shrink by e, so the last is below W (1 - e) e^(m-2)/(1 - e^(m-1)) and the flights
-/// after it sum to (1 + c) e/2 of it; when time stopped advancing (fewer events), the
-/// flight in progress is shorter than the driver's smallest step, 16 ε t (assumed), and
-/// the rest sum to (1 + c)/2 of it. Plus t_inf's own rounding, γ_8 t_inf.
+/// flights and impacts; only the event times move it. The impact map
+/// (`physics::block`, `impact`) puts the ball back on the floor (gap 0) with rebound
+/// w = e |v⁻| taken at the located time: a landing of speed V located δ off (either
+/// side) leaves w = e (V + g δ) at t + δ, so P moves by exactly
+/// δ + (1 + c) e δ = c δ (c = (1 + e)/(1 - e)). δ = [`EVENT_ULPS`] ulps of t
+/// (assumed, as in every budget of the chapter); the rounding of w = e |v⁻| adds
+/// (1 + c) V_1 γ_2/g per landing (V_1 = sqrt(2 g z_0), the fastest landing). The stop
+/// itself: when the guard fired (`in_window` = its count m within the window W), the
+/// flights shrink by e, so the last is below W (1 - e) e^(m-2)/(1 - e^(m-1)) and the
+/// flights after it sum to (1 + c) e/2 of it; when time stopped advancing (fewer
+/// events), the flight in progress is shorter than the driver's smallest step,
+/// 16 ε t (assumed), and the rest sum to (1 + c)/2 of it. Plus t_inf's own rounding,
+/// γ_8 t_inf.
 pub fn event_driven_bound_s(e: f64, g_mps2: f64, drop_m: f64, t_inf_s: f64, stop: &ZenoStop) -> f64 {
     let g = g_mps2;
     let c = (1.0 + e) / (1.0 - e); // formula: c = (1 + e)/(1 - e)
     let v1 = (2.0 * g * drop_m).sqrt(); // formula: V_1 = sqrt(2 g z_0)
     let t = stop.t_s.abs().max(t_inf_s);
     let delta = EVENT_ULPS * f64::EPSILON * t; // formula: δ = 256 ε t
-    let s = (1.0 - e * e).sqrt();
-    let e_v_star = g * delta * (1.0 - e * e + s) / e; // formula: e V* = g δ (1 - e² + sqrt(1 - e²))/e
-    let per_landing = (1.0 + e) * delta
-        + c / g * (e * v1).min(e_v_star)
-        + (1.0 + c) * v1 * gamma(2) / g; // formula: |ΔP| <= (1 + e) δ + (c/g) e min(V_1, V*) + (1 + c) V_1 γ_2/g
+    let per_landing = c * delta + (1.0 + c) * v1 * gamma(2) / g; // formula: |ΔP| <= c δ + (1 + c) V_1 γ_2/g
     let (max_events, window_s) = stop.guard;
     let tail = if stop.in_window >= max_events {
         let m = max_events as f64;
