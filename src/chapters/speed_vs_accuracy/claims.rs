@@ -2,14 +2,16 @@
 //! falsification mutations (`mutations.rs`) judge edited statements on the same
 //! evidence.
 
-use super::budget::{adaptive_error_bound, first_order_error, DECADE_CONTRACTION};
+use super::budget::{adaptive_error_bound, first_order_error, rounding_mps, DECADE_CONTRACTION};
 use super::evidence::Evidence;
 use super::setup::envelope;
 use super::statements::Statements;
 use super::stick_methods::{fitted_order, gap_over_estimate, SceneMethods};
 use super::stick_methods_soft::asymptotic_range;
+use super::economy::HORIZONTAL_LIMIT;
 use super::stick_part::AUTHORS_G_MPS2;
-use super::work_precision::{dopri5_errors_at, observed_order, WpPoint};
+use super::measure::Measured;
+use super::work_precision::{dopri5_errors_at, Solver, WpPoint};
 use crate::numerics::ode::Method;
 use crate::report::{Check, Claim};
 use serde_json::json;
@@ -130,28 +132,98 @@ fn first_order_envelopes(doc: &Statements, ev: &Evidence) -> Vec<Claim> {
 }
 
 /// Does the unlocated run stall at the tightest tolerance (over 100 times the located
-/// error, or broken down)?
-fn stalls(points: &[WpPoint], tight: f64) -> bool {
+/// error, or broken down)? "100 times" is the statement's own margin (two decades; the
+/// measured ratio is 10^7 on the block, 10^9 on the stick). A located error below the
+/// noise of its measurement, `noise_rel` (the runs' rounding budgets and the
+/// reference's error bound, relative), is no error to compare with: it counts as that
+/// noise, so that a lucky cancellation cannot make a small unlocated error look large.
+fn stalls(points: &[WpPoint], tight: f64, noise_rel: f64) -> bool {
     let (loc, unloc) = dopri5_errors_at(points, tight);
-    unloc.is_nan() || unloc > 100.0 * loc.max(1e-15)
+    unloc.is_nan() || unloc > 100.0 * loc.max(noise_rel) // formula: stall iff e_unloc > 100 max(e_loc, noise)
+}
+
+/// The noise of a located error on the block drift (relative): the largest rounding
+/// budget of the integrated Dormand-Prince runs plus the reference's (`budget.rs`),
+/// over the drift.
+fn block_noise_rel(ev: &Evidence) -> f64 {
+    let b = &ev.block;
+    let r_run = b.dopri5_rounding_mps.iter().fold(0.0f64, |m, &r| m.max(r));
+    (r_run + b.reference_rounding_mps) / b.reference.value.abs() // formula: n = (max R + R_ref)/|d|
+}
+
+/// The stick reference's error bound (m/s): its truncation, at most c^2 that of the run
+/// at 1e-11 (`stick_reference`), plus its rounding budget R(1e-13).
+fn stick_reference_error_mps(ev: &Evidence) -> f64 {
+    let st = &ev.stick;
+    let (d11, d12) = st.dopri5_11_12;
+    let [r11, r12, r13] = st.rounding_11_12_13_mps;
+    let (_, truncation) = adaptive_error_bound((d11, r11), (d12, r12));
+    DECADE_CONTRACTION * DECADE_CONTRACTION * truncation + r13 // formula: |e_ref| <= c^2 |T(1e-11)| + R(1e-13)
+}
+
+/// The noise of the measured error of the stick ladder's point `p` (relative): its own
+/// rounding budget (`budget.rs`, its right-hand sides and the reference's events) plus
+/// the reference's error bound, over the reference.
+fn stick_noise_rel(ev: &Evidence, p: &WpPoint) -> f64 {
+    let st = &ev.stick;
+    let run = Measured {
+        value: p.value,
+        rhs_evals: p.cost.rhs_evals,
+        steps: p.cost.steps,
+        events: st.reference_events,
+        completed: p.completed,
+        note: "ladder point",
+    };
+    (rounding_mps(&run, &st.scales) + stick_reference_error_mps(ev)) / st.reference_mps.abs() // formula: n = (R_run + |e_ref|)/|v_ref|
+}
+
+/// The stick ladder's RK4 and Euler points (located) for the results: step (s), error
+/// and noise (relative), and whether the error enters the order fit.
+pub fn stick_order_noise_json(ev: &Evidence) -> serde_json::Value {
+    let rows: Vec<serde_json::Value> = ev
+        .stick
+        .points
+        .iter()
+        .filter(|p| matches!(p.setting.label().as_str(), "rk4-located" | "euler-located"))
+        .map(|p| {
+            let noise = stick_noise_rel(ev, p);
+            json!({"method": p.setting.label(), "h_s": p.setting.knob(), "error": p.error, "noise": noise, "above_30_noise": p.error >= ORDER_NOISE_FACTOR * noise})
+        })
+        .collect();
+    json!(rows)
+}
+
+/// The largest noise of the stick's located runs at the tightest tolerance (relative).
+fn stick_tight_noise_rel(ev: &Evidence, tight: f64) -> f64 {
+    ev.stick
+        .points
+        .iter()
+        .filter(|p| p.setting.knob() == tight && p.setting.label().starts_with("dopri5"))
+        .map(|p| stick_noise_rel(ev, p))
+        .fold(0.0f64, f64::max)
 }
 
 /// Without event location DP5's error on the block drift stalls.
 fn unlocated_stall(doc: &Statements, ev: &Evidence) -> Claim {
     let (loc, unloc) = dopri5_errors_at(&ev.block.points, ev.block.tightest_tol);
+    let noise = block_noise_rel(ev);
     Claim::draft(
         Check::Simulation,
         "unlocated-events-stall",
         "numerics",
-        "Without event location Dormand-Prince's error stalls: at the tightest tolerance it is over 100 times the located error (events are taken at step ends)",
+        "Without event location Dormand-Prince's error stalls: at the tightest tolerance it is over 100 times the located error (events are taken at step ends); a located error below the noise of its measurement (the runs' rounding budgets over the drift) counts as that noise",
     )
-    .exact(true, (unloc > 100.0 * loc.max(1e-15)) == doc.unlocated_stalls)
+    .exact(true, (unloc > 100.0 * loc.max(noise)) == doc.unlocated_stalls)
 }
 
 /// Each fixed-step method blows up where h/tau exceeds its stability limit on the
 /// linear decay (Euler: |1 - z| < 1 -> z < 2; RK4: z < 2.785), and the limits are sharp:
 /// 5 % beyond each it blows up, 5 % inside it does not (a limit stated 10 % off puts one
 /// of the two on the wrong side): the measured threshold lies within 5 % of the limit.
+/// DP5's error is judged against its own budget (`failures.rs`,
+/// `Relaxation::error_and_budget`): each accepted step's error scale, damped by the
+/// exact contraction e^(-(t_end - t_k)/tau) of the linear flow, plus rounding. Default
+/// (quick, 0.3 s, 914 steps): error 2.9e-9 rad against a budget of about 4e-8 rad.
 fn stiff_blowup(doc: &Statements, ev: &Evidence) -> Claim {
     let st = &ev.stiff;
     let limit = |m: Method| match m {
@@ -169,22 +241,26 @@ fn stiff_blowup(doc: &Statements, ev: &Evidence) -> Claim {
         Check::ClosedForm,
         "stiff-relaxation-explicit-blowup",
         "4 (C.3)",
-        "On the flight relaxation θ' = -(k/γ)(θ - θ₀) (k/γ = 1000/s), fixed steps of T/10 blow up for Euler and RK4 (h/τ beyond 2 and 2.785) while adaptive Dormand-Prince stays within 1e-6 rad of the closed form; the limits are sharp: at 1.05 times each limit the fixed step blows up within 400 steps, at 0.95 times it does not",
+        "On the flight relaxation θ' = -(k/γ)(θ - θ₀) (k/γ = 1000/s), fixed steps of T/10 blow up for Euler and RK4 (h/τ beyond 2 and 2.785) while adaptive Dormand-Prince (rtol = atol = 1e-8) stays within its own error budget of the closed form, Σ_k (atol + rtol |θ_k|) e^(-(t_end - t_k)/τ) over its accepted steps plus rounding; the limits are sharp: at 1.05 times each limit the fixed step blows up within 400 steps, at 0.95 times it does not",
     )
-    .exact(true, blew_at_tenth && sharp && st.outcome.dopri5_error < 1e-6)
+    .exact(true, blew_at_tenth && sharp && st.outcome.dopri5_error <= st.outcome.dopri5_budget) // formula: |θ_DP5 - θ_exact| <= Σ_k sc_k e^(-(t_end - t_k)/τ)
 }
 
-/// The driver stops when 100 events fall within 1 us or time stops advancing: the
-/// flights still to come then sum to less than the window, 1e-6 s.
+/// The driver stops when 100 events fall within 1 us or time stops advancing; the stop
+/// lies within the bound the run derives for itself (`zeno_bound.rs`,
+/// `event_driven_bound_s`): every landing's time, located to 256 ulps of t (δ), moves
+/// the accumulation time the ball's state predicts by exactly c δ (c = (1 + e)/(1 - e)),
+/// and the flights after the stop sum to a closed form of the guard's window.
 fn zeno_ball(doc: &Statements, ev: &Evidence) -> Claim {
     let z = &ev.zeno.outcome;
+    let tol = z.ball_zeno_bound_s; // formula: |t_stop - t_inf| <= N_landings |ΔP|_max + tail + γ_8 t_inf
     Claim::draft(
         Check::ClosedForm,
         "zeno-ball-stops-at-accumulation",
         "numerics",
-        "The event-driven driver stops a ball bouncing with 0 < e < 1 (dropped from 1 m) with a Zeno outcome at the accumulation time t_inf = t1 (1 + e)/(1 - e) (s)",
+        "The event-driven driver stops a ball bouncing with 0 < e < 1 (dropped from 1 m) with a Zeno outcome at the accumulation time t_inf = t1 (1 + e)/(1 - e), within the bound of the run itself: c δ per landing (δ = 256 ulps of t, the event time's rounding; c = (1 + e)/(1 - e)), plus the flights after the stop (s)",
     )
-    .close(doc.zeno_factor * z.ball_t_inf_s, z.ball_zeno_at_s.unwrap_or(f64::NAN), 1e-6)
+    .close(doc.zeno_factor * z.ball_t_inf_s, z.ball_zeno_at_s.unwrap_or(f64::NAN), tol)
 }
 
 /// Moreau-Jean at h = 1 ms against the closed-form t_inf, within the bound derived for
@@ -210,7 +286,7 @@ fn zeno_ball_mj(doc: &Statements, ev: &Evidence) -> Claim {
 /// within the sum of their error estimates, each from runs of its own (`budget.rs`):
 /// Moreau-Jean's |D_0| + 2 |D_1| from h, h/2, h/4 and the threshold's (10/9) |d(v_r) -
 /// d(v_r/10)|, the sum doubled (an asymptotic estimate is trusted to a factor 2, as the
-/// block's first-order envelopes and the stick's gap/estimate within 1 ± 0.5).
+/// block's first-order envelopes; the stick's gap/estimate has Richardson's range).
 /// Relative to the event-driven drift. Measured on the default quick scene: 1.35e-3
 /// against 3.6e-3 (Moreau-Jean's estimate 1.8e-3 relative, doubled; its gap 1.35e-3).
 fn zeno_plate(doc: &Statements, ev: &Evidence) -> Claim {
@@ -254,36 +330,48 @@ fn stick_reference(doc: &Statements, ev: &Evidence) -> Claim {
     .close(0.0, rel(d11).max(rel(d12)), tol_mps / reference.abs())
 }
 
-/// RK4's order over every step whose error is above 1e-10 (100 x the round-off floor of
-/// ~1e-12; already asymptotic at T/32: the error falls 16-fold per halving).
+/// A point's error enters an order fit when it is at least this many times its noise
+/// (`stick_noise_rel`): then ln(error) lies within ln(1/(1 - 1/30)) = 0.034 of the
+/// ln of the truncation error, and the least-squares slope, a weighted mean of the
+/// consecutive slopes, moves by at most 2 x 0.034/ln 2 = 0.098 for rungs at least a
+/// factor 2 apart: under a quarter of RK4's band 0.4 and a third of Euler's 0.3.
+pub const ORDER_NOISE_FACTOR: f64 = 30.0;
+
+/// The order of `label` on the stick's ladder over the points with step at most `h_max`
+/// whose error is at least [`ORDER_NOISE_FACTOR`] times its noise.
+fn stick_observed(ev: &Evidence, label: &str, h_max: f64) -> f64 {
+    crate::ladder::observed_order(&ev.stick.points, Solver::knob, |p| {
+        p.setting.label() == label
+            && p.completed
+            && p.setting.knob() <= h_max
+            && p.error >= ORDER_NOISE_FACTOR * stick_noise_rel(ev, p) // formula: e >= 30 n
+    })
+}
+
+/// RK4's order over every step whose error is at least 30 times its noise (already
+/// asymptotic at T/32: the error falls 16-fold per halving).
 pub fn stick_rk4_observed(ev: &Evidence) -> f64 {
-    observed_order(&ev.stick.points, "rk4-located", 1e-10)
+    stick_observed(ev, "rk4-located", f64::INFINITY)
 }
 
 /// Euler's order over h <= T/128 (at T/32 and T/64 the error has not yet begun to
-/// halve: 8.6e-4 and 9.0e-4 in the full ladder).
+/// halve: 8.6e-4 and 9.0e-4 in the full ladder), errors at least 30 times their noise.
 pub fn stick_euler_observed(ev: &Evidence) -> f64 {
     let h_asym = ev.stick.period_s / 128.0 * (1.0 + 1e-9);
-    let asym: Vec<WpPoint> = ev
-        .stick
-        .points
-        .iter()
-        .filter(|p| p.setting.knob() <= h_asym)
-        .cloned()
-        .collect();
-    observed_order(&asym, "euler-located", 1e-10)
+    stick_observed(ev, "euler-located", h_asym)
 }
 
 /// RK4's order with located events, |p - 4| <= 0.4 (the neighbouring orders fail).
 fn stick_rk4_order(doc: &Statements, ev: &Evidence) -> Claim {
-    let range = "every step with error above 1e-10";
+    let range = "every step whose error is at least 30 times its noise, the run's rounding budget plus the reference's error bound";
     order_claim("stick-rk4-located-order", "RK4", doc.rk4_order, stick_rk4_observed(ev), 0.4, range)
 }
 
 /// Euler's order with located events, |p - 1| <= 0.3.
 fn stick_euler_order(doc: &Statements, ev: &Evidence) -> Claim {
     let observed = stick_euler_observed(ev);
-    order_claim("stick-euler-located-order", "Explicit Euler", doc.euler_order, observed, 0.3, "h <= T/128")
+    let range = "h <= T/128, errors at least 30 times their noise";
+    order_claim("stick-euler-located-order", "Explicit Euler", doc.euler_order, observed, 0.3, range)
 }
 
 /// An order claim: the fitted slope `observed` within `band` of the order `order`.
@@ -304,9 +392,12 @@ fn stick_unlocated_stall(doc: &Statements, ev: &Evidence) -> Claim {
         Check::Simulation,
         "stick-unlocated-events-stall",
         "4, 5",
-        "Without event location Dormand-Prince's error on the stick's mean speed stalls: at the tightest tolerance it is over 100 times the located error, or the run breaks down",
+        "Without event location Dormand-Prince's error on the stick's mean speed stalls: at the tightest tolerance it is over 100 times the located error (or its noise: the run's rounding budget plus the reference's error bound, if larger), or the run breaks down",
     )
-    .exact(true, stalls(&ev.stick.points, tight) == doc.unlocated_stalls)
+    .exact(
+        true,
+        stalls(&ev.stick.points, tight, stick_tight_noise_rel(ev, tight)) == doc.unlocated_stalls,
+    )
 }
 
 /// The stick chapter's choice of DOP853: at rtol 1e-10 both pairs must land within 1e-9
@@ -347,36 +438,49 @@ fn missed_event(doc: &Statements, ev: &Evidence) -> Claim {
 
 /// Checked inside the limit it names, whatever the flags: Gamma = 2.5 (a period-one
 /// sticking orbit) and b = 1/80. The flight map neglects the slip before takeoff, whose
-/// share of the drift scales with b = F/(mu m g) (measured 0.4 % at b = 1/20): at
-/// b = 1/80 it is well under 1 %.
+/// share of the drift it predicts in closed form (`economy.rs`,
+/// `flight_map_predicted_rel`): -b/(omega t_f sqrt(Gamma^2 - 1)), -1.013e-3 here (and
+/// -0.35 %, -0.89 %, -0.27 % at b = 0.05 and Gamma = 2.7, 1.7, 3.2, as the sweep
+/// measures). The prediction neglects terms O(b) and O(b/sqrt(Gamma^2 - 1)) of itself
+/// (1.25 % and 0.55 % here); the claim grants half of it (factor 0.5, stated): the map
+/// is explained when its error lies within |pred|/2 of pred. Measured: -1.0113e-3,
+/// 1.5e-6 from the prediction against 5.1e-4. A law off by 10 % errs by 0.1.
 fn flight_map(doc: &Statements, ev: &Evidence) -> Claim {
     let (exact, map) = ev.economy.limit;
-    let err = map.map_or(f64::NAN, |m| {
-        ((doc.flight_map_factor * m - exact) / exact).abs()
-    });
+    let err = map.map_or(f64::NAN, |m| (doc.flight_map_factor * m - exact) / exact);
+    let pred = ev.economy.limit_predicted_rel;
+    let tol = 0.5 * pred.abs(); // formula: |err - pred| <= |pred|/2
     Claim::draft(
         Check::SecondMethod,
         "flight-map-economy",
         "3.1.2",
-        "Approximation: the flight-map law v_ave = b μ g t_f²/(2 n T) (sticking landings, no slip before takeoff) reproduces the exact drift within 1 % in the limit b << 1 of period-n sticking orbits; at Γ = 2.5, b = 1/80 (relative error)",
+        "Approximation: the flight-map law v_ave = b μ g t_f²/(2 n T) (sticking landings, no slip before takeoff) reproduces the exact drift in the limit b << 1 of period-n sticking orbits, up to the slip before takeoff it neglects, whose share of the drift is -b/(ω t_f sqrt(Γ² - 1)) (derived in chapter 7's text); at Γ = 2.5, b = 1/80 the signed relative error lies within half that prediction of it",
     )
-    .values(0.0, err, 0.01).approximation_if(err < 0.01)
+    .values(pred, err, tol).approximation_if((err - pred).abs() <= tol)
 }
 
 /// Checked inside the limit it names, whatever the flags: K = 100 and b = 0.05. The
-/// viscous law neglects the block's velocity fluctuation (relative size ~ 1/K^2) and
-/// linearises arcsin (relative size ~ b^2 pi^2/24 = 1e-3 at b = 0.05): both are well
-/// under 1 % there.
+/// viscous law is the arcsin law V sin(x), x = pi b/2, linearised: exactly x/sin(x)
+/// times it, a relative error x/sin(x) - 1 (~ b^2 pi^2/24 = 1.029e-3 at b = 0.05); the
+/// arcsin law itself neglects the block's velocity fluctuation, relative size a/K^2
+/// with a measured 1.24 at K = 100 (and 1.2 to 1.4 over K = 12 .. 60 in the sweep). So
+/// err = (x/sin x)(1 + a/K^2) - 1: the claim expects x/sin(x) - 1 and grants the
+/// fluctuation up to 2/K^2 (a <= 2, stated), times x/sin(x). Measured: 1.153e-3
+/// against 1.029e-3 +- 2.0e-4. A coefficient off by 10 % errs by 0.09.
 fn viscous_law(doc: &Statements, ev: &Evidence) -> Claim {
     let (exact, viscous) = ev.horizontal.limit;
-    let err = ((viscous / doc.viscous_factor - exact) / exact).abs(); // formula: v = F/c, c scaled by the statement's factor
+    let err = (viscous / doc.viscous_factor - exact) / exact; // formula: v = F/c, c scaled by the statement's factor
+    let (k, b) = HORIZONTAL_LIMIT;
+    let x = std::f64::consts::PI * b / 2.0; // formula: x = pi b/2
+    let lin = x / x.sin(); // formula: viscous/arcsin = x/sin(x)
+    let tol = lin * 2.0 / (k * k); // formula: |err - (x/sin x - 1)| <= (x/sin x) 2/K^2
     Claim::draft(
         Check::SecondMethod,
         "viscous-law-economy",
         "3.1.1",
-        "Approximation: under horizontal dither the effective viscous law F = c v, c = 2 μ m g/(π V), reproduces the exact drift within 1 % in the limit Γₓ = δₓ ω²/(μ g) >> 1 and small bias; at Γₓ = 100, b = 0.05 (relative error)",
+        "Approximation: under horizontal dither the effective viscous law F = c v, c = 2 μ m g/(π V), reproduces the exact drift in the limit Γₓ = δₓ ω²/(μ g) >> 1 and small bias up to its linearisation of the arcsin law, a relative error x/sin(x) - 1 with x = π b/2, and the block's velocity fluctuation it neglects, granted up to 2/Γₓ² (times x/sin x); at Γₓ = 100, b = 0.05 (signed relative error)",
     )
-    .values(0.0, err, 0.01).approximation_if(err < 0.01)
+    .values(lin - 1.0, err, tol).approximation_if((err - (lin - 1.0)).abs() <= tol)
 }
 
 /// The claims on the stick by three methods (the self-locking scene), with the order
@@ -393,19 +497,49 @@ pub fn stick_methods(s: &SceneMethods, mj_order: f64) -> Vec<Claim> {
             "4, 5",
             "Moreau-Jean time-stepping of the stick (the massless rod's balance implicit over each step) converges to the event-driven mean speed at order 1 in the step h (least-squares slope over the ladder)",
         )
-        .close(mj_order, fitted_order(mj), 0.3),
-        // The finest rung's gap from the reference against its own Richardson estimate:
-        // ratio 1 in the asymptotic range; +-0.5 for the O(h) change of the error
-        // constant between the last two rungs (a wrong order p changes the ratio by the
-        // factor 2^p - 1, 3 for p = 2).
-        Claim::draft(
-            Check::Convergence,
+        .close(mj_order, fitted_order(mj), MJ_ORDER_BAND),
+        // The finest rung's gap from the reference against its own Richardson estimate,
+        // with the order claim's band 0.3 as the range of the true local order.
+        richardson_claim(
             "stick-methods-moreau-jean-gap-within-estimate",
-            "4, 5",
-            "Moreau-Jean's gap from the event-driven speed at its finest step equals its own Richardson error estimate |v_h - v_2h| / (2^p - 1), p = 1 (ratio)",
-        )
-        .close(1.0, gap_over_estimate(mj, s.reference_mps, mj_order), 0.5),
+            "Moreau-Jean's gap from the event-driven speed at its finest step equals its own Richardson error estimate |v_h - v_2h| / (2^p - 1), p = 1",
+            gap_over_estimate(mj, s.reference_mps, mj_order),
+            mj_order,
+            MJ_ORDER_BAND,
+        ),
     ]
+}
+
+/// The band of Moreau-Jean's fitted order (see `stick_methods`).
+const MJ_ORDER_BAND: f64 = 0.3;
+
+/// The band of soft contact's fitted order (see `soft_contact`).
+const SOFT_ORDER_BAND: f64 = 0.25;
+
+/// The range of the gap over its Richardson estimate for an estimate of order `p` when
+/// the error's true local order over the last two rungs (a factor 2 apart) is p' in
+/// [p - band, p + band]: with e = C h^p', |v_h - v_2h| = (2^p' - 1) |e(h)|, so the
+/// ratio is (2^p - 1)/(2^p' - 1), between (2^p - 1)/(2^(p+band) - 1) and
+/// (2^p - 1)/(2^(p-band) - 1) (Richardson's own theory). For p = 1: [0.684, 1.601] at
+/// band 0.3, [0.726, 1.466] at 0.25. An estimate of the wrong order (2: the ratio times
+/// 3) leaves its own range [0.76, 1.33].
+pub fn richardson_range(p: f64, band: f64) -> (f64, f64) {
+    let q = 2f64.powf(p) - 1.0;
+    (q / (2f64.powf(p + band) - 1.0), q / (2f64.powf(p - band) - 1.0)) // formula: ratio in [(2^p - 1)/(2^(p+B) - 1), (2^p - 1)/(2^(p-B) - 1)]
+}
+
+/// A claim that the finest gap equals its Richardson estimate of order `p`: the ratio
+/// `ratio` within [`richardson_range`] of the order band `band`.
+fn richardson_claim(id: &str, statement: &str, ratio: f64, p: f64, band: f64) -> Claim {
+    let (lo, hi) = richardson_range(p, band);
+    Claim::draft(
+        Check::Convergence,
+        id,
+        "4, 5",
+        &format!("{statement} (ratio; range (2^p - 1)/(2^p' - 1) for a true local order p' within the order claim's band ±{band} of p)"),
+    )
+    .values(1.0, ratio, format!("[{lo:.3}, {hi:.3}]"))
+    .confirmed_if((lo..=hi).contains(&ratio))
 }
 
 /// The soft-contact claims on scene `s`, asserting the order `order` (1; a mutation
@@ -431,16 +565,16 @@ pub fn soft_contact(s: &SceneMethods, order: f64) -> Vec<Claim> {
             "4, 5",
             "Soft contact (normal spring k_n = m/(ε τ₀²) and damper c_n = m/(ε τ₀), friction μ F_z tanh(ẋ_C/v_ε) with v_ε = v₀ ε²) converges to the event-driven mean speed at order 1 in ε (least-squares slope over the asymptotic range: the finest rungs whose local orders agree within 0.15)",
         )
-        .close(order, fitted, 0.25),
-        // Ratio 1 in the asymptotic range; a true local order p' between 0.58 and 1.32
-        // gives (2^p' - 1)/(2^1 - 1) in [0.5, 1.5]: ±0.5, as for Moreau-Jean (an assumed
-        // order 2 divides the estimate by 3).
-        Claim::draft(
-            Check::Convergence,
+        .close(order, fitted, SOFT_ORDER_BAND),
+        // Ratio 1 in the asymptotic range; a true local order within the order band
+        // gives the range of `richardson_range` (an assumed order 2 divides the
+        // estimate by 3).
+        richardson_claim(
             "soft-contact-richardson-gap",
-            "4, 5",
-            "Soft contact's gap from the event-driven speed at its finest ε equals its own Richardson error estimate |v_ε - v_2ε| / (2^p - 1), p = 1 (ratio)",
-        )
-        .close(1.0, gap_over_estimate(&range, s.reference_mps, order), 0.5),
+            "Soft contact's gap from the event-driven speed at its finest ε equals its own Richardson error estimate |v_ε - v_2ε| / (2^p - 1), p = 1",
+            gap_over_estimate(&range, s.reference_mps, order),
+            order,
+            SOFT_ORDER_BAND,
+        ),
     ]
 }

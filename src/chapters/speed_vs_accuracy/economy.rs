@@ -28,6 +28,29 @@ pub fn law_drift(scene: &BlockScene) -> f64 {
 /// landing within 20 periods, or the landing falls where the plate pulls away
 /// faster than g (then the motion is not a sticking period-n orbit).
 pub fn flight_map_drift(scene: &BlockScene) -> Option<f64> {
+    let (t_f, n) = flight_map_flight(scene)?;
+    let f_over_m = scene.params.bias_mps2; // F/m = b mu g (BlockScene::new)
+    Some(f_over_m * t_f * t_f / (2.0 * n * scene.period_s())) // formula: v_ave = (F/m) t_f^2 / (2 n T)
+}
+
+/// The flight map's relative error predicted from the slip before take-off it
+/// neglects, `-b/(omega t_f sqrt(Gamma^2 - 1))` (chapter 7's text, section 5), or
+/// `None` without a sticking orbit. The block slips from Gamma sin(phi) = 1 - b to the
+/// take-off at Gamma sin(phi) = 1, a phase span b/sqrt(Gamma^2 - 1) to first order, over
+/// which the friction deficit mu g (Gamma sin(phi) - (1 - b)) grows linearly: it leaves
+/// with u = mu g b^2/(2 omega sqrt(Gamma^2 - 1)), carried through the flight (u t_f)
+/// and removed at the sticking landing, against the map's b mu g t_f^2/2 per orbit.
+pub fn flight_map_predicted_rel(scene: &BlockScene) -> Option<f64> {
+    let (t_f, _) = flight_map_flight(scene)?;
+    let p = &scene.plate;
+    let gamma = p.peak_acceleration_mps2() / scene.g();
+    let b = scene.bias; // b = F/(mu m g)
+    Some(-b / (p.omega_rad_s * t_f * (gamma * gamma - 1.0).sqrt())) // formula: -b/(omega t_f sqrt(Gamma^2 - 1))
+}
+
+/// The flight map's flight: (t_f (s), n periods per orbit), or `None` as for
+/// [`flight_map_drift`].
+fn flight_map_flight(scene: &BlockScene) -> Option<(f64, f64)> {
     let p = &scene.plate;
     let (w, g) = (p.omega_rad_s, scene.g());
     let gamma = p.peak_acceleration_mps2() / g;
@@ -61,8 +84,7 @@ pub fn flight_map_drift(scene: &BlockScene) -> Option<f64> {
         return None; // landing in the takeoff window: not a sticking orbit
     }
     let n = (t_f / period).ceil(); // next takeoff: the first takeoff phase after landing
-    let f_over_m = scene.params.bias_mps2; // F/m = b mu g (BlockScene::new)
-    Some(f_over_m * t_f * t_f / (2.0 * n * period)) // formula: v_ave = (F/m) t_f^2 / (2 n T)
+    Some((t_f, n))
 }
 
 /// Horizontal dither (section 3.1.1): a block on a plate `x_p = delta sin(omega t)`
@@ -118,6 +140,10 @@ pub struct Horizontal {
     pub limit: (f64, f64),
 }
 
+/// The limit the viscous law is checked in, whatever the flags: (K = delta omega^2/(mu
+/// g), b).
+pub const HORIZONTAL_LIMIT: (f64, f64) = (100.0, 0.05);
+
 /// Sweeps K (4 values in `quick` mode, else 25, from 1.5 to 100) and runs the limit the
 /// viscous law names: K = 100 and b = 0.05, whatever the flags.
 pub fn gather_horizontal(
@@ -135,7 +161,8 @@ pub fn gather_horizontal(
             (k, e, a, v)
         })
         .collect();
-    let (e_lim, _, v_lim) = horizontal_drifts(frequency_hz, 100.0, mu, 0.05, g, 20);
+    let (k_lim, b_lim) = HORIZONTAL_LIMIT;
+    let (e_lim, _, v_lim) = horizontal_drifts(frequency_hz, k_lim, mu, b_lim, g, 20);
     Horizontal {
         rows,
         limit: (e_lim, v_lim),

@@ -5,7 +5,7 @@
 
 use super::block_part::{self, BlockEvidence, StiffEvidence, ZenoEvidence};
 use super::block_scene::BlockScene;
-use super::economy::{flight_map_drift, gather_horizontal, law_drift, Horizontal, SweepRow};
+use super::economy::{flight_map_drift, flight_map_predicted_rel, gather_horizontal, law_drift, Horizontal, SweepRow};
 use super::measure::{drift_block_model, window};
 use super::missed_event::{self, MissedEvent};
 use super::setup::{Plan, Setup};
@@ -59,6 +59,9 @@ pub struct Economy {
     /// In the limit the flight map names (Gamma = 2.5, b = 1/80): the exact drift and
     /// the flight map's (m/s).
     pub limit: (f64, Option<f64>),
+    /// There: the flight map's relative error predicted from the slip before take-off
+    /// it neglects, `-b/(omega t_f sqrt(Gamma^2 - 1))` (NaN without a sticking orbit).
+    pub limit_predicted_rel: f64,
 }
 
 /// Runs the chapter on the flags `args`, g of the block scene `g` and of the stick
@@ -135,5 +138,6 @@ fn economy(s: &Setup<'_>) -> Economy {
         wall_s: (wall_exact, wall_map),
         sweep,
         limit: (exact(&lim).value, flight_map_drift(&lim)),
+        limit_predicted_rel: flight_map_predicted_rel(&lim).unwrap_or(f64::NAN),
     }
 }

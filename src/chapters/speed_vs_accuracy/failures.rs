@@ -8,7 +8,8 @@ use crate::numerics::timestepping::{self as mj, ContactStatus, MjOptions};
 use crate::physics::block::contact_form::BlockContact;
 use crate::physics::block::{simulate_block, BlockOptions, BlockParams};
 use crate::physics::plate::{Axis, Harmonic};
-use super::zeno_bound::mj_rest_bound_s;
+use super::zeno_bound::{event_driven_bound_s, mj_rest_bound_s, ZenoStop};
+use crate::numerics::rounding::{gamma, OWN};
 use serde_json::{json, Value};
 
 /// One observed failure: `{method, scene, symptom}`.
@@ -56,17 +57,50 @@ impl Relaxation {
 
     /// The error at `t_end` of `method` with `control`, or the integrator's error.
     pub fn error(&self, method: Method, control: StepControl, t_end: f64) -> Result<f64, OdeError> {
+        self.error_and_budget(method, control, t_end).map(|(e, _)| e)
+    }
+
+    /// The error at `t_end` of `method` with `control` and its error budget (rad), or
+    /// the integrator's error. The budget, for an adaptive `control` (rtol, atol): every
+    /// accepted step k, ending at t_k, leaves a local error below its error scale
+    /// `sc_k = atol + rtol max(|θ_k-1|, |θ_k|)` (its error norm is at most 1;
+    /// *assumed*: the embedded estimate bounds the local error of the propagated
+    /// solution, as local extrapolation makes it smaller), plus its rounding, γ_16 times
+    /// the step's magnitudes |θ_k| + |θ_k - θ_k-1|; the flow is linear with rate -1/τ,
+    /// so a deviation at t_k reaches t_end multiplied by exactly e^(-(t_end - t_k)/τ);
+    /// the closed form's own rounding adds γ_16 2a. For a fixed step the budget is NaN.
+    pub fn error_and_budget(
+        &self,
+        method: Method,
+        control: StepControl,
+        t_end: f64,
+    ) -> Result<(f64, f64), OdeError> {
         let mut integ = Integrator::new(method, control);
+        let (rtol, atol) = match control {
+            StepControl::Adaptive { rtol, atol, .. } => (rtol, atol),
+            _ => (f64::NAN, f64::NAN),
+        };
+        let mut steps: Vec<(f64, f64)> = Vec::new();
         let y = integ.integrate(
             &|t: f64, y: &[f64; 1]| self.rhs(t, y),
             0.0,
             [0.0],
             t_end,
-            |_| {},
+            |s| {
+                let (a, b) = (s.y0[0], s.y1[0]);
+                let sc = atol + rtol * a.abs().max(b.abs()); // formula: sc_k = atol + rtol max(|θ_k-1|, |θ_k|)
+                let round = gamma(16) * (b.abs() + (b - a).abs()); // formula: γ_16 (|θ_k| + |θ_k - θ_k-1|)
+                steps.push((s.t1, sc + round));
+            },
         )?;
+        let damped: f64 = steps
+            .iter()
+            .map(|&(t1, local)| local * (-(t_end - t1) / self.tau_s).exp()) // formula: sum_k (sc_k + rounding_k) e^(-(t_end - t_k)/τ)
+            .sum();
+        let budget = (damped + gamma(16) * 2.0 * Self::A) * OWN; // formula: + γ_16 2a (closed form)
         let e = (y[0] - self.exact(t_end)).abs();
         if e.is_finite() {
-            Ok(e)
+            Ok((e, budget))
         } else {
             Err(OdeError::NonFinite { t_s: t_end })
         }
@@ -78,8 +112,10 @@ impl Relaxation {
 pub struct StiffOutcome {
     /// Per fixed-step method: the error at the end, or `None` if the state overflowed.
     pub fixed: Vec<(Method, Option<f64>)>,
-    /// Adaptive DP5's error at the end.
+    /// Adaptive DP5's error at the end (rad).
     pub dopri5_error: f64,
+    /// Adaptive DP5's error budget at the end (rad), [`Relaxation::error_and_budget`].
+    pub dopri5_budget: f64,
     /// The fixed step over tau.
     pub h_over_tau: f64,
 }
@@ -101,12 +137,13 @@ pub fn stiff(tau_s: f64, frequency_hz: f64, duration_s: f64) -> StiffOutcome {
             )
         })
         .collect();
-    let dopri5_error = r
-        .error(Method::Dopri5, StepControl::tol(1e-8, 1e-8), duration_s)
-        .unwrap_or(f64::NAN);
+    let (dopri5_error, dopri5_budget) = r
+        .error_and_budget(Method::Dopri5, StepControl::tol(1e-8, 1e-8), duration_s)
+        .unwrap_or((f64::NAN, f64::NAN));
     StiffOutcome {
         fixed,
         dopri5_error,
+        dopri5_budget,
         h_over_tau: h / tau_s,
     }
 }
@@ -133,6 +170,9 @@ pub fn blows_up(method: Method, tau_s: f64, frequency_hz: f64, h_over_tau: f64) 
 pub struct ZenoOutcome {
     /// Ball on a fixed floor: time the event-driven run stopped with `Outcome::Zeno` (s).
     pub ball_zeno_at_s: Option<f64>,
+    /// Ball: the bound (s) on |t_stop - t_inf| of that run (`zeno_bound.rs`,
+    /// [`event_driven_bound_s`]): the event times' rounding and the stop criterion.
+    pub ball_zeno_bound_s: f64,
     /// Ball: the accumulation time `t1 (1 + e)/(1 - e)` (s), closed form.
     pub ball_t_inf_s: f64,
     /// Ball: time from which Moreau-Jean (h = 1 ms) keeps it at rest (s), NaN if never.
@@ -178,20 +218,7 @@ pub fn zeno(
     ball.bias_mps2 = 0.0;
     ball.restitution = e;
     ball.rest_velocity_mps = 0.0;
-    let opts = BlockOptions {
-        hybrid: Options {
-            record_events: false,
-            ..Options::default()
-        },
-        record_events: false,
-        start: (0.0, [0.0, 0.0, 1.0, 0.0]),
-        ..BlockOptions::default()
-    };
-    let run = simulate_block(&ball, &floor, t_run, &opts);
-    let ball_zeno_at_s = match run.outcome {
-        Outcome::Zeno { t_s, .. } => Some(t_s),
-        _ => None,
-    };
+    let (ball_zeno_at_s, ball_zeno_bound_s) = event_driven_ball(ball, &floor, ball_t_inf_s);
     let rest = mj_ball_rest_s(ball, &floor, t_run);
     let s = scene.with_restitution(e, 0.0);
     let chattering = drift_block_model(&s, &Options::default(), true, 64, transient, cycles);
@@ -207,6 +234,7 @@ pub fn zeno(
     let value = |m: &Measured| if m.completed { m.value } else { f64::NAN };
     ZenoOutcome {
         ball_zeno_at_s,
+        ball_zeno_bound_s,
         ball_t_inf_s,
         ball_mj_rest_s: rest,
         ball_mj_rest_bound_s: mj_rest_bound_s(e, g, MJ_BALL_STEP_S, 1.0),
@@ -216,6 +244,40 @@ pub fn zeno(
         drift_mj_mps: value(&mj),
         drift_mj_half_quarter_mps: (value(&mj_half), value(&mj_quarter)),
         drift_sticking_tenth_mps: value(&sticking_tenth),
+    }
+}
+
+/// The event-driven `ball` (its params: no bias, restitution e, no rest threshold)
+/// dropped from 1 m on the `floor`, run to `t_inf_s` + 1 s: the time of its Zeno stop
+/// (None if it did not stop so) and the bound on |t_stop - t_inf| of that run
+/// ([`event_driven_bound_s`]; NaN without a stop).
+pub(super) fn event_driven_ball(ball: BlockParams, floor: &Harmonic, t_inf_s: f64) -> (Option<f64>, f64) {
+    let opts = BlockOptions {
+        hybrid: Options {
+            record_events: false,
+            ..Options::default()
+        },
+        record_events: false,
+        start: (0.0, [0.0, 0.0, 1.0, 0.0]),
+        ..BlockOptions::default()
+    };
+    let run = simulate_block(&ball, floor, t_inf_s + 1.0, &opts);
+    match run.outcome {
+        Outcome::Zeno {
+            t_s,
+            events,
+            window_s,
+        } => {
+            let stop = ZenoStop {
+                t_s,
+                landings: run.total_counts.landings as u64,
+                in_window: events,
+                guard: (opts.hybrid.zeno.max_events, window_s),
+            };
+            let bound = event_driven_bound_s(ball.restitution, ball.g_mps2, 1.0, t_inf_s, &stop);
+            (Some(t_s), bound)
+        }
+        _ => (None, f64::NAN),
     }
 }
 

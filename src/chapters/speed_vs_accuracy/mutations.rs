@@ -23,8 +23,8 @@
 //!   orders (off by one) are the mutations, and the bands are derived so that they fail;
 //! - a ratio whose tolerance is the estimate's own uncertainty
 //!   (`stick-methods-moreau-jean-gap-within-estimate`, `soft-contact-richardson-gap`,
-//!   ratio 1 within 0.5): the mutation is the estimate with the wrong order (a factor
-//!   3 off);
+//!   ratio 1 within Richardson's range for the order band): the mutation is the
+//!   estimate with the wrong order (a factor 3 off);
 //! - the reference checks (`reference-converged`, `stick-reference-converged`): the
 //!   workbook's self-checks of its references, judged against the runs' own error
 //!   budget (`budget.rs`), so no tolerance of theirs is a printed number; the mutation is
@@ -68,7 +68,7 @@ const DERIVED: &str = "the document prints no number here: the number checked (a
 /// Why an order of convergence has no 10 % mutation.
 const ORDER: &str = "an integer order of convergence: an order off by 10 % is no order; the neighbouring order (off by one) is the mutation, and the band is derived so that it fails";
 /// Why an estimate's ratio has none.
-const RATIO: &str = "a ratio whose tolerance is the estimate's own uncertainty (1 within 0.5): the mutation is the estimate with the wrong order, a factor 3 off";
+const RATIO: &str = "a ratio whose tolerance is the estimate's own uncertainty ((2^p - 1)/(2^p' - 1) for a true local order p' within the order band): the mutation is the estimate with the wrong order, a factor 3 off";
 /// Why a tolerance printed as a setting has none.
 const SETTING: &str = "a tolerance or step range printed as a setting, not a statement about the model: the mutation reverses the inequality";
 /// Why a reference check has none.

@@ -70,6 +70,10 @@ fn block_results(ev: &Evidence, r: &mut ChapterReport) {
             "stick_difference_1e-11_1e-12": (ev.stick.dopri5_11_12.0 - ev.stick.dopri5_11_12.1).abs(),
             "zeno_plate_mj_error_estimate": first_order_error((z.drift_mj_mps, z.drift_mj_half_quarter_mps.0, z.drift_mj_half_quarter_mps.1)),
             "zeno_plate_threshold_difference": (z.drift_sticking_mps - z.drift_sticking_tenth_mps).abs(),
+            "zeno_ball_stop_bound_s": z.ball_zeno_bound_s,
+            "stiff_dopri5_error_rad": ev.stiff.outcome.dopri5_error,
+            "stiff_dopri5_budget_rad": ev.stiff.outcome.dopri5_budget,
+            "stick_order_fit_noise_rel": claims::stick_order_noise_json(ev),
         }),
     );
     // Observed slopes on the block drift, reported (results) but not claimed as orders:

@@ -22,6 +22,10 @@ pub struct StickEvidence {
     pub dopri5_11_12: (f64, f64),
     /// The rounding budgets R (m/s, `budget.rs`) of the runs at 1e-11, 1e-12 and 1e-13.
     pub rounding_11_12_13_mps: [f64; 3],
+    /// The scales of the rounding budget of a run of the ladder (`budget.rs`).
+    pub scales: Scales,
+    /// Events of the reference run (every located run of the ladder handles as many).
+    pub reference_events: u64,
     /// The ladder.
     pub points: Vec<WpPoint>,
     /// Why each run of the ladder that did not complete broke down: (index, reason).
@@ -104,6 +108,8 @@ pub fn gather(g_mps2: f64, quick: bool) -> StickEvidence {
         reference_mps,
         dopri5_11_12,
         rounding_11_12_13_mps,
+        scales,
+        reference_events: runs[2].events,
         points,
         broken,
         steps,

@@ -6,11 +6,11 @@
 //! mutations and bad input per flag: `tests/speed_vs_accuracy.rs`.
 
 use super::economy::flight_map_drift;
-use super::failures::{blows_up, mj_ball_rest_s};
+use super::failures::{blows_up, event_driven_ball, mj_ball_rest_s, Relaxation};
 use super::zeno_bound::mj_rest_bound_s;
 use super::Document;
 use crate::numerics::hybrid::Options;
-use crate::numerics::ode::Method;
+use crate::numerics::ode::{Method, StepControl};
 use crate::physics::plate::{Axis, Harmonic};
 use crate::report::falsify::quick_evidence;
 use crate::scenes::block::BlockScene;
@@ -96,5 +96,49 @@ fn moreau_jean_rests_within_the_derived_bound_over_the_flag_box() {
         }
         assert!(bound_max < 20.0 * worst_err, "e {e}: bound {bound_max} vs error {worst_err}");
         eprintln!("e {e}: max error {worst_err:.3e} s, max bound {bound_max:.3e} s, max error/bound {worst_ratio:.3}");
+    }
+}
+
+#[test]
+fn the_event_driven_zeno_stop_lies_within_its_bound_over_the_flag_box() {
+    // The real event-driven ball over the flags the chapter accepts (0 < e <= 0.8,
+    // 1 <= g <= 25 m/s^2): |t_stop - t_inf| within the run's own bound everywhere, and
+    // a time 1e-6 relative off t_inf outside it (the bound is not the old 1e-6 s window).
+    let floor = Harmonic::sine(Axis::Z, 0.0, 1.0);
+    let mut least = f64::INFINITY;
+    for g in [1.0, 1.62, 4.0, 9.81, 16.0, 25.0] {
+        for e in [1e-300, 1e-12, 1e-6, 0.01, 0.1, 0.3, 0.5, 0.7, 0.8] {
+            let mut ball = BlockScene::new(30.0, 2.5, 0.4, 0.05, g).params;
+            ball.bias_mps2 = 0.0;
+            ball.restitution = e;
+            ball.rest_velocity_mps = 0.0;
+            let t_inf = (2.0 / g).sqrt() * (1.0 + e) / (1.0 - e); // formula: t_inf = t1 (1 + e)/(1 - e)
+            let (stop, bound) = event_driven_ball(ball, &floor, t_inf);
+            let err = (stop.expect("a Zeno stop") - t_inf).abs();
+            assert!(err <= bound, "e {e} g {g}: |t_stop - t_inf| = {err} > {bound}");
+            assert!(bound < 1e-6 * t_inf, "e {e} g {g}: bound {bound}");
+            least = least.min(bound / err.max(f64::MIN_POSITIVE));
+        }
+    }
+    eprintln!("event-driven Zeno stop: bound/error at least {least:.1}");
+}
+
+#[test]
+fn dormand_prince_stays_within_its_budget_on_the_relaxation() {
+    // The budget of `Relaxation::error_and_budget` holds at the chapter's two durations
+    // and at tighter and looser tolerances, and it is not the undamped sum N tol.
+    let r = Relaxation {
+        tau_s: 1e-3,
+        omega_rad_s: std::f64::consts::TAU * 30.0,
+    };
+    for tol in [1e-5, 1e-8, 1e-11] {
+        for t_end in [0.3, 1.0] {
+            let (err, budget) = r
+                .error_and_budget(Method::Dopri5, StepControl::tol(tol, tol), t_end)
+                .expect("DP5 runs");
+            assert!(err <= budget, "tol {tol} t {t_end}: {err} > {budget}");
+            assert!(budget < 100.0 * tol, "tol {tol} t {t_end}: budget {budget}");
+            eprintln!("tol {tol:e} t {t_end}: error {err:.2e} budget {budget:.2e}");
+        }
     }
 }

@@ -10,6 +10,12 @@
 //! along every exact flight, and the scheme's flights are exact) by Delta P / h within
 //! closed-form envelopes of the impact speed x = |v_k|/(g h); summed along an envelope
 //! of the impact speeds and energies, they bound t_rest - t_inf.
+//!
+//! The same invariant bounds the event-driven run's stop ([`event_driven_bound_s`]):
+//! there only the event times' rounding moves P.
+
+use super::budget::EVENT_ULPS;
+use crate::numerics::rounding::{gamma, OWN};
 
 /// The per-impact envelopes of Delta P / h for restitution `e`, in the scaled impact
 /// speed x = |v_k|/(g h) (dimensionless).
@@ -120,6 +126,55 @@ pub fn mj_rest_bound_s(e: f64, g_mps2: f64, h_s: f64, drop_m: f64) -> f64 {
     h_s * (-best_lo).max(best_hi) + rest_tiny + rounding
 }
 
+/// What the event-driven ball run reports at its Zeno stop, for [`event_driven_bound_s`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ZenoStop {
+    /// Time of the stop (s).
+    pub t_s: f64,
+    /// Landings over the run.
+    pub landings: u64,
+    /// Events inside the guard's window at the stop.
+    pub in_window: usize,
+    /// The guard: events allowed in a window, and the window (s).
+    pub guard: (usize, f64),
+}
+
+/// The bound (s) on |t_stop - t_inf| of the event-driven ball (restitution `e` in
+/// (0, 1), dropped from `drop_m` under `g_mps2`) that stopped as `stop` says. Derivation:
+/// chapter 7's text, "How far the event-driven stop lies from t_inf".
+///
+/// The invariant P = t + v/g + c U/g of [`mj_rest_bound_s`] equals t_inf along exact
+/// flights and impacts; only the event times move it. The impact map
+/// (`physics::block`, `impact`) puts the ball back on the floor (gap 0) with rebound
+/// w = e |v⁻| taken at the located time: a landing of speed V located δ off (either
+/// side) leaves w = e (V + g δ) at t + δ, so P moves by exactly
+/// δ + (1 + c) e δ = c δ (c = (1 + e)/(1 - e)). δ = [`EVENT_ULPS`] ulps of t
+/// (assumed, as in every budget of the chapter); the rounding of w = e |v⁻| adds
+/// (1 + c) V_1 γ_2/g per landing (V_1 = sqrt(2 g z_0), the fastest landing). The stop
+/// itself: when the guard fired (`in_window` = its count m within the window W), the
+/// flights shrink by e, so the last is below W (1 - e) e^(m-2)/(1 - e^(m-1)) and the
+/// flights after it sum to (1 + c) e/2 of it; when time stopped advancing (fewer
+/// events), the flight in progress is shorter than the driver's smallest step,
+/// 16 ε t (assumed), and the rest sum to (1 + c)/2 of it. Plus t_inf's own rounding,
+/// γ_8 t_inf.
+pub fn event_driven_bound_s(e: f64, g_mps2: f64, drop_m: f64, t_inf_s: f64, stop: &ZenoStop) -> f64 {
+    let g = g_mps2;
+    let c = (1.0 + e) / (1.0 - e); // formula: c = (1 + e)/(1 - e)
+    let v1 = (2.0 * g * drop_m).sqrt(); // formula: V_1 = sqrt(2 g z_0)
+    let t = stop.t_s.abs().max(t_inf_s);
+    let delta = EVENT_ULPS * f64::EPSILON * t; // formula: δ = 256 ε t
+    let per_landing = c * delta + (1.0 + c) * v1 * gamma(2) / g; // formula: |ΔP| <= c δ + (1 + c) V_1 γ_2/g
+    let (max_events, window_s) = stop.guard;
+    let tail = if stop.in_window >= max_events {
+        let m = max_events as f64;
+        let last = window_s * (1.0 - e) * e.powf(m - 2.0) / (1.0 - e.powf(m - 1.0)); // formula: f_last <= W (1 - e) e^(m-2)/(1 - e^(m-1))
+        (1.0 + c) * e / 2.0 * last // formula: remaining = (1 + c) e f_last/2
+    } else {
+        (1.0 + c) / 2.0 * 16.0 * f64::EPSILON * t // formula: remaining <= (1 + c)/2 16 ε t
+    };
+    (stop.landings as f64 * per_landing + tail + gamma(8) * t_inf_s) * OWN
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -141,7 +196,13 @@ mod tests {
                     lo = lo.min(dp);
                     hi = hi.max(dp);
                 }
-                let tol = 1e-9 * (1.0 + x);
+                // Counted rounding of both sides. The sqrt arguments x^2 + 2 zeta and
+                // e^2 x^2 + 2 zeta - (1 - e) x cancel: each is off by at most
+                // γ_4 (x^2 + 2x) absolutely, which moves its sqrt by at most the sqrt of
+                // that; every other operation adds a relative γ_8 of the terms' sizes
+                // 1, (1 + e) x and c (u + u1 + 2(x + 1)) (the envelopes' sqrt included).
+                let cancel = 2.0 * (gamma(4) * (x * x + 2.0 * x)).sqrt(); // formula: 2 sqrt(γ_4 (x^2 + 2x))
+                let tol = env.c * cancel + gamma(8) * (2.0 + 2.0 * (1.0 + e) * x + env.c * (2.0 * x + 2.0) * 2.0); // formula: c 2 sqrt(γ_4 (x^2 + 2x)) + γ_8 (2 + 2(1+e)x + 4c(x + 1))
                 assert!(lo >= env.low_min(x, x) - tol, "e {e} x {x}: {lo} < {}", env.low_min(x, x));
                 assert!(hi <= env.high_max(x, x) + tol, "e {e} x {x}: {hi} > {}", env.high_max(x, x));
             }

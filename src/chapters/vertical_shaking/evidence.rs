@@ -18,8 +18,6 @@ use std::f64::consts::PI;
 pub struct Evidence {
     /// The scene.
     pub scene: Scene,
-    /// Quick mode (shorter runs, looser brackets).
-    pub quick: bool,
     /// The scene after its transient.
     pub stats: Stats,
     /// The first take-off from rest (rad of the plate's phase).
@@ -263,7 +261,6 @@ pub fn gather(scene: &Scene, quick: bool) -> Evidence {
     );
     Evidence {
         scene: *scene,
-        quick,
         takeoff_phase_rad,
         sweep,
         bounds,

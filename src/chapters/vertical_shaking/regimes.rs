@@ -57,8 +57,19 @@ impl Regime {
     }
 }
 
-/// Flight durations are compared to 1e-7 of a period: the closed-form flights are
-/// exact to ~1e-13, and a converged cycle repeats to round-off.
+/// Flight durations (in periods) are compared to 1e-7 of a period, a classification
+/// threshold between two scales of the run. Below: the rounding of a flight. Its two
+/// event times are located to 256 ulps of t (the event budget of chapter 7's
+/// `budget.rs`), so a flight in periods is good to 2 x 256 ε t/T; the longest runs
+/// classified are the boundaries' check with a 4x transient, 4 x 100 + 120 = 520
+/// periods (full; quick 4 x 60 + 60 = 300): 5.9e-11 (3.4e-11), three decades under
+/// 1e-7, and a converged cycle repeats to that. Above: the difference between the
+/// distinct flights of a cycle, which a period-p label must see. It is of order one
+/// (a rest against a flight, n against n + 1 periods) except next to a period doubling,
+/// where the two flights of a P2 orbit part as sqrt(Gamma - Gamma_pd): there the
+/// threshold moves the label by (1e-7)^2 in Gamma, under the bisection's bracket
+/// (7.6e-7), and the chapter locates the doublings by the multiplier instead
+/// (`period_doubling_gamma`).
 const TOL: f64 = 1e-7;
 
 /// Classifies a run: the smallest p <= 16 such that the last flights repeat with
