@@ -62,20 +62,59 @@ pub fn painleve_at(m_r: f64, m: f64, theta: f64, mu: f64) -> bool {
     r.painleve.first().is_some_and(|e| e.t_s == 0.0)
 }
 
+/// A bracket `[lo, hi]` of the boundary, `painleve_at` false at `lo` and true at `hi`:
+/// from `guess` (a nearby boundary) outwards by steps growing 8-fold from 1e-10 of it, or
+/// without one by doubling from `[0, 1]` (`hi` infinite beyond 1e6).
+fn bracket(m_r: f64, m: f64, theta: f64, guess: Option<f64>) -> (f64, f64) {
+    let at = |mu: f64| painleve_at(m_r, m, theta, mu);
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    match guess {
+        Some(g) if g.is_finite() && g > 0.0 => {
+            let mut d = 1e-10 * g;
+            if at(g) {
+                hi = g;
+                lo = g - d;
+                while lo > 0.0 && at(lo) {
+                    (hi, d) = (lo, 8.0 * d);
+                    lo = (g - d).max(0.0);
+                }
+            } else {
+                lo = g;
+                hi = g + d;
+                while !at(hi) {
+                    (lo, d) = (hi, 8.0 * d);
+                    hi = g + d;
+                    if hi > 1e6 {
+                        return (lo, f64::INFINITY);
+                    }
+                }
+            }
+        }
+        _ => {
+            while !at(hi) {
+                lo = hi;
+                hi *= 2.0;
+                if hi > 1e6 {
+                    return (lo, f64::INFINITY);
+                }
+            }
+        }
+    }
+    (lo, hi)
+}
+
 /// The Painleve boundary located by bisection in mu on the sliding rod, down to
 /// adjacent doubles: the least double `mu` the simulator calls a Painleve case, the
 /// double below it (a slide), and the simulator's threshold, terms and slope of `D` at
 /// `mu` (for [`rounding::switch_error`]).
 pub fn painleve_boundary(m_r: f64, m: f64, theta: f64) -> Boundary {
-    let (mut lo, mut hi) = (0.0f64, 1.0f64);
-    while !painleve_at(m_r, m, theta, hi) {
-        lo = hi;
-        hi *= 2.0;
-        if hi > 1e6 {
-            hi = f64::INFINITY;
-            break;
-        }
-    }
+    painleve_boundary_near(m_r, m, theta, None)
+}
+
+/// [`painleve_boundary`], its bracket started from `guess` (see [`bracket`]): the result
+/// is the same verified pair of adjacent doubles, found in fewer runs.
+pub fn painleve_boundary_near(m_r: f64, m: f64, theta: f64, guess: Option<f64>) -> Boundary {
+    let (mut lo, mut hi) = bracket(m_r, m, theta, guess);
     for _ in 0..200 {
         let mid = lo + 0.5 * (hi - lo);
         if mid <= lo || mid >= hi || !hi.is_finite() {
@@ -114,15 +153,20 @@ pub const GOLDEN_BRACKET_RAD: (f64, f64) = (0.1, 1.2);
 /// apart by more than their error bounds): the convex boundary's minimum lies between
 /// ([`rounding::min_excess`]).
 pub fn painleve_min(m_r: f64, m: f64) -> LeastBoundary {
-    let f = |th: f64| painleve_boundary(m_r, m, th).mu;
+    let last = std::cell::Cell::new(None);
+    let f = |th: f64| {
+        let mu = painleve_boundary_near(m_r, m, th, last.get()).mu;
+        last.set(Some(mu));
+        mu
+    };
     let (a, b) = GOLDEN_BRACKET_RAD;
     let th = crate::numerics::search::golden_min(f, a, b, GOLDEN_TOL_RAD);
-    let centre = painleve_boundary(m_r, m, th);
+    let centre = painleve_boundary_near(m_r, m, th, last.get());
     let top = centre.mu + rounding::switch_error(&centre);
     let side = |sign: f64| {
         let mut h = GOLDEN_TOL_RAD;
         loop {
-            let p = painleve_boundary(m_r, m, th + sign * h);
+            let p = painleve_boundary_near(m_r, m, th + sign * h, Some(centre.mu));
             if p.mu - rounding::switch_error(&p) > top || h > 0.1 {
                 return p;
             }
