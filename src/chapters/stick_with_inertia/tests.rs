@@ -216,4 +216,3 @@ fn statements_off_by_what_the_bounds_resolve_fail() {
         assert_eq!(verdict(&doc, id), Some(Verdict::Failed), "{id}");
     }
 }
-
