@@ -10,6 +10,8 @@ use crate::physics::stick_inertia::{
     InertiaModel, InertiaParams, PainleveRule, NSTATE, TH, VXC, ZC,
 };
 
+use super::rounding::{self, Boundary, LeastBoundary};
+
 /// Driver options of every run: DOP853 at `rtol`.
 pub fn options(rtol: f64) -> Options {
     Options {
@@ -34,15 +36,17 @@ pub fn rig(m_r: f64, m: f64, theta: f64, mu: f64, e: f64) -> InertiaModel {
 
 /// The simulated drop: the rod falls from 1 cm at angle `theta` without rotating, the
 /// driver locates the landing, the impact rule acts. Returns `J_t/J_n` of the first
-/// impact and `alpha`.
-pub fn drop_ratio(m_r: f64, m: f64, theta: f64) -> (f64, f64) {
+/// impact, `alpha` and the angle at the landing (rad).
+pub fn drop_ratio(m_r: f64, m: f64, theta: f64) -> (f64, f64, f64) {
     let md = rig(m_r, m, theta, 10.0, 0.0);
     let mut y = [0.0; NSTATE];
     y[TH] = theta;
     y[ZC] = 0.01;
     let r = simulate_inertia(&md, 0.0, y, 0.05, &options(1e-10), 0.0);
-    let ratio = r.impacts.first().map_or(f64::NAN, |i| i.j_t_ns / i.j_n_ns);
-    (ratio, md.geo.alpha())
+    let first = r.impacts.first();
+    let ratio = first.map_or(f64::NAN, |i| i.j_t_ns / i.j_n_ns);
+    let landing = first.map_or(f64::NAN, |i| i.theta_rad);
+    (ratio, md.geo.alpha(), landing)
 }
 
 /// Does a rod sliding left at 0.1 m/s at `theta` (still plate, no couple) meet a
@@ -58,42 +62,133 @@ pub fn painleve_at(m_r: f64, m: f64, theta: f64, mu: f64) -> bool {
     r.painleve.first().is_some_and(|e| e.t_s == 0.0)
 }
 
-/// The Painleve boundary located by bisection in mu on the sliding rod (1).
-pub fn painleve_boundary(m_r: f64, m: f64, theta: f64) -> f64 {
-    let (mut lo, mut hi) = (0.0, 1.0);
-    while !painleve_at(m_r, m, theta, hi) {
-        lo = hi;
-        hi *= 2.0;
-        if hi > 1e6 {
-            return f64::INFINITY;
+/// A bracket `[lo, hi]` of the boundary, `painleve_at` false at `lo` and true at `hi`:
+/// from `guess` (a nearby boundary) outwards by steps growing 8-fold from 1e-10 of it, or
+/// without one by doubling from `[0, 1]` (`hi` infinite beyond 1e6).
+fn bracket(m_r: f64, m: f64, theta: f64, guess: Option<f64>) -> (f64, f64) {
+    let at = |mu: f64| painleve_at(m_r, m, theta, mu);
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    match guess {
+        Some(g) if g.is_finite() && g > 0.0 => {
+            let mut d = 1e-10 * g;
+            if at(g) {
+                hi = g;
+                lo = g - d;
+                while lo > 0.0 && at(lo) {
+                    (hi, d) = (lo, 8.0 * d);
+                    lo = (g - d).max(0.0);
+                }
+            } else {
+                lo = g;
+                hi = g + d;
+                while !at(hi) {
+                    (lo, d) = (hi, 8.0 * d);
+                    hi = g + d;
+                    if hi > 1e6 {
+                        return (lo, f64::INFINITY);
+                    }
+                }
+            }
+        }
+        _ => {
+            while !at(hi) {
+                lo = hi;
+                hi *= 2.0;
+                if hi > 1e6 {
+                    return (lo, f64::INFINITY);
+                }
+            }
         }
     }
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
+    (lo, hi)
+}
+
+/// The Painleve boundary located by bisection in mu on the sliding rod, down to
+/// adjacent doubles: the least double `mu` the simulator calls a Painleve case, the
+/// double below it (a slide), and the simulator's threshold, terms and slope of `D` at
+/// `mu` (for [`rounding::switch_error`]).
+pub fn painleve_boundary(m_r: f64, m: f64, theta: f64) -> Boundary {
+    painleve_boundary_near(m_r, m, theta, None)
+}
+
+/// [`painleve_boundary`], its bracket started from `guess` (see [`bracket`]): the result
+/// is the same verified pair of adjacent doubles, found in fewer runs.
+pub fn painleve_boundary_near(m_r: f64, m: f64, theta: f64, guess: Option<f64>) -> Boundary {
+    let (mut lo, mut hi) = bracket(m_r, m, theta, guess);
+    for _ in 0..200 {
+        let mid = lo + 0.5 * (hi - lo);
+        if mid <= lo || mid >= hi || !hi.is_finite() {
+            break; // adjacent doubles
+        }
         if painleve_at(m_r, m, theta, mid) {
             hi = mid;
         } else {
             lo = mid;
         }
-        if hi - lo < 1e-12 * hi {
-            break;
-        }
     }
-    0.5 * (lo + hi)
+    let md = rig(m_r, m, theta, hi, 0.0);
+    let (s, c) = theta.sin_cos();
+    let (mm, l, ig) = (md.geo.total_kg, md.geo.l_g_m, md.geo.i_g);
+    let slope = mm * l * l * (s * c).abs(); // formula: K = |dD/dmu| = M l^2 |sin cos|
+    Boundary {
+        theta_rad: theta,
+        alpha: md.geo.alpha(),
+        mu: hi,
+        lo,
+        threshold_kgm2: md.coefficient_rounding(theta),
+        terms_kgm2: ig + mm * l * l * s * s + hi * slope, // formula: I_G + M l^2 s^2 + mu K
+        slope_kgm2: slope,
+    }
 }
 
-/// The least boundary over the angle, by golden-section search (angle rad, mu).
-pub fn painleve_min(m_r: f64, m: f64) -> (f64, f64) {
-    let f = |th: f64| painleve_boundary(m_r, m, th);
-    let th = crate::numerics::search::golden_min(f, 0.1, 1.2, 1e-7);
-    (th, f(th))
+/// Golden-section search's tolerance on the angle (rad), its start bracket (rad) and the
+/// first step of the search for the points beside its result (rad).
+pub const GOLDEN_TOL_RAD: f64 = 1e-7;
+/// See [`GOLDEN_TOL_RAD`].
+pub const GOLDEN_BRACKET_RAD: (f64, f64) = (0.1, 1.2);
+
+/// The least boundary over the angle: golden-section search on the located boundary,
+/// then on each side the nearest point (steps `GOLDEN_TOL_RAD` doubling) at which the
+/// boundary is certainly higher than at the search's result (the two located values
+/// apart by more than their error bounds): the convex boundary's minimum lies between
+/// ([`rounding::min_excess`]).
+pub fn painleve_min(m_r: f64, m: f64) -> LeastBoundary {
+    let last = std::cell::Cell::new(None);
+    let f = |th: f64| {
+        let mu = painleve_boundary_near(m_r, m, th, last.get()).mu;
+        last.set(Some(mu));
+        mu
+    };
+    let (a, b) = GOLDEN_BRACKET_RAD;
+    let th = crate::numerics::search::golden_min(f, a, b, GOLDEN_TOL_RAD);
+    let centre = painleve_boundary_near(m_r, m, th, last.get());
+    let top = centre.mu + rounding::switch_error(&centre);
+    let side = |sign: f64| {
+        let mut h = GOLDEN_TOL_RAD;
+        loop {
+            let p = painleve_boundary_near(m_r, m, th + sign * h, Some(centre.mu));
+            if p.mu - rounding::switch_error(&p) > top || h > 0.1 {
+                return p;
+            }
+            h *= 2.0;
+        }
+    };
+    LeastBoundary {
+        centre,
+        left: side(-1.0),
+        right: side(1.0),
+    }
 }
 
 /// Simulated landings with restitution `e`: the rod dropped from 1 cm at several angles,
-/// slips and frictions; the largest energy any impact created (J, from the states) and
-/// the largest loss (J, the scale).
+/// slips and frictions, on a still plate. Returns, for the impact whose energy gain
+/// (J, from the states) exceeds its rounding bound the most, that gain and that bound
+/// (J, [`rounding::energy_gain_bound`] with the run's `E = T_0 + M g (z_G0 + l_G)`,
+/// which bounds the kinetic energy at every impact: the spring starts at rest, the
+/// damper and friction dissipate, the still plate does no work, `z_G >= -l_G`, and the
+/// margin `M g l_G` absorbs earlier impacts' gains up to their bounds), and the count.
 pub fn impact_energy(e: f64) -> (f64, f64, usize) {
-    let (mut gain, mut scale, mut n) = (f64::NEG_INFINITY, 0.0f64, 0);
+    let (mut worst, mut n) = ((f64::NEG_INFINITY, 0.0), 0);
     for (m_r, m) in [(0.1, 0.0), (0.01, 1.0)] {
         for theta in [-0.6, 0.3, 0.9] {
             for mu in [0.2, 1.0] {
@@ -104,17 +199,21 @@ pub fn impact_energy(e: f64) -> (f64, f64, usize) {
                     y[ZC] = 0.01;
                     y[VXC] = vx;
                     y[crate::physics::stick_inertia::OM] = 2.0;
+                    let weight = md.geo.total_kg * md.p.base.g_mps2;
+                    let energy = md.kinetic_energy(&y) + weight * (md.centre(&y)[1] + md.geo.l_g_m); // formula: E = T_0 + M g (z_G0 + l_G)
+                    let bound = rounding::energy_gain_bound(energy, md.geo.alpha());
                     let r = simulate_inertia(&md, 0.0, y, 0.06, &options(1e-10), 0.0);
                     for i in &r.impacts {
-                        gain = gain.max(i.energy_change_j);
-                        scale = scale.max(i.loss_j.abs());
+                        if i.energy_change_j - bound > worst.0 - worst.1 {
+                            worst = (i.energy_change_j, bound);
+                        }
                         n += 1;
                     }
                 }
             }
         }
     }
-    (gain, scale, n)
+    (worst.0, worst.1, n)
 }
 
 /// Chapter 6's mean speed on the same scene (m/s), from its static angle.
@@ -135,17 +234,17 @@ pub fn scene_run(p: &InertiaParams, duration_s: f64, rtol: f64, trace_dt_s: f64)
 /// The evidence of the claims (independent of the statements).
 #[derive(Debug, Clone)]
 pub struct Evidence {
-    /// Drops: (q, measured ratio, alpha) of the uniform rod, the near-massless rod
-    /// (`m_r = 1e-9 m`) and two rods in between.
-    pub uniform: Vec<(f64, f64, f64)>,
+    /// Drops of the uniform rod, the near-massless rod (`m_r = 1e-10 m`) and two rods
+    /// in between.
+    pub uniform: Vec<Drop>,
     /// See `uniform`.
-    pub massless: Vec<(f64, f64, f64)>,
+    pub massless: Vec<Drop>,
     /// See `uniform`.
-    pub between: Vec<(f64, f64, f64)>,
-    /// Painleve boundaries: (theta, alpha, bisection mu).
-    pub boundaries: Vec<(f64, f64, f64)>,
-    /// The uniform rod's least boundary: (theta, mu).
-    pub uniform_min: (f64, f64),
+    pub between: Vec<Drop>,
+    /// Painleve boundaries, located.
+    pub boundaries: Vec<Boundary>,
+    /// The uniform rod's least boundary.
+    pub uniform_min: LeastBoundary,
     /// The compliant limit of an impact without collision (uniform rod, theta = 0.6,
     /// mu = 1.6, slip 0.1 m/s left): the rigid rule's normal impulse and normal
     /// velocity at the slip stop, and the compliant runs' `(K, P_n, u_n)`.
@@ -155,6 +254,21 @@ pub struct Evidence {
     pub moreau_jean: (f64, Vec<(f64, f64)>),
     /// The massless-limit ladders on chapter 6's self-locking and authors' scenes.
     pub ladders: [Vec<Rung>; 2],
+}
+
+/// One simulated drop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Drop {
+    /// `q = tan(theta)` of the statement (1).
+    pub q: f64,
+    /// The rod's angle as dropped, `fl(atan q)` (rad).
+    pub theta_rad: f64,
+    /// Its angle at the landing (rad).
+    pub landing_rad: f64,
+    /// The measured `J_t/J_n` (1).
+    pub ratio: f64,
+    /// `alpha` as computed (1).
+    pub alpha: f64,
 }
 
 /// Angles of the drops, as `q = tan(theta)`.
@@ -169,12 +283,19 @@ pub const LADDER_S: f64 = 10.0;
 
 /// Computes the evidence.
 pub fn gather() -> Evidence {
-    let drops = |m_r: f64, m: f64| -> Vec<(f64, f64, f64)> {
+    let drops = |m_r: f64, m: f64| -> Vec<Drop> {
         DROP_Q
             .iter()
             .map(|&q| {
-                let (r, a) = drop_ratio(m_r, m, q.atan());
-                (q, r, a)
+                let theta_rad = q.atan();
+                let (ratio, alpha, landing_rad) = drop_ratio(m_r, m, theta_rad);
+                Drop {
+                    q,
+                    theta_rad,
+                    landing_rad,
+                    ratio,
+                    alpha,
+                }
             })
             .collect()
     };
@@ -183,8 +304,7 @@ pub fn gather() -> Evidence {
     let mut boundaries = Vec::new();
     for (m_r, m) in RODS {
         for th in BOUNDARY_THETAS {
-            let a = rig(m_r, m, th, 0.0, 0.0).geo.alpha();
-            boundaries.push((th, a, painleve_boundary(m_r, m, th)));
+            boundaries.push(painleve_boundary(m_r, m, th));
         }
     }
     Evidence {

@@ -15,7 +15,7 @@ pub fn painleve_boundary(ev: &Evidence, dir: &Path) -> Result<Vec<String>> {
     )
     .y_range(0.0, 4.0)
     .legend(Legend::UpperRight);
-    let mut alphas: Vec<f64> = ev.boundaries.iter().map(|b| b.1).collect();
+    let mut alphas: Vec<f64> = ev.boundaries.iter().map(|b| b.alpha).collect();
     alphas.dedup();
     for a in alphas {
         let curve = (1..150)
@@ -33,7 +33,7 @@ pub fn painleve_boundary(ev: &Evidence, dir: &Path) -> Result<Vec<String>> {
         .filter(|p| p.1 < 4.0)
         .collect();
     chart = chart.dashed("tan(theta): alpha -> infinity (chapter 6's edge)", tan);
-    let pts = ev.boundaries.iter().map(|b| (b.0, b.2)).collect();
+    let pts = ev.boundaries.iter().map(|b| (b.theta_rad, b.mu)).collect();
     chart = chart.points("bisection on the simulated slide", pts);
     save_chart(&chart, dir, "painleve-boundary")
 }

@@ -14,6 +14,9 @@ mod evidence;
 mod figures;
 mod gif;
 mod mutations;
+mod rounding;
+#[cfg(test)]
+mod tests;
 pub use mutations::Document;
 mod statements;
 
