@@ -24,7 +24,9 @@ pub struct BlockEvidence {
     pub reference_rounding_mps: f64,
     /// The plate's peak speed v_p = Gamma g / omega (m/s).
     pub v_p_mps: f64,
-    /// The rounding floor of the drift, relative (256 ulps of t per event).
+    /// The rounding floor of the drift, relative (256 ulps of t per event), reported: the
+    /// reference's rounding budget contains it, and the convergence study's floor is the
+    /// runs' whole budget (`claims::study_floor_rel`).
     pub rounding_floor_rel: f64,
     /// `|d(1e-12) - d(1e-13)| / |d|`: the change one more decade makes.
     pub next_decade_rel: f64,

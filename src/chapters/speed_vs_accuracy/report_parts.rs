@@ -56,7 +56,7 @@ fn block_results(ev: &Evidence, r: &mut ChapterReport) {
     r.result("block_drift_rounding_floor_rel", b.rounding_floor_rel);
     r.result(
         "block_drift_reference_floor_rel",
-        json!({"rounding": b.rounding_floor_rel, "next_decade": b.next_decade_rel, "dopri5_1e-13": rel(3)}),
+        json!({"rounding": b.rounding_floor_rel, "next_decade": b.next_decade_rel, "dopri5_1e-13": rel(3), "study_floor": super::claims::study_floor_rel(ev)}),
     );
     let z = &ev.zeno.outcome;
     r.result(

@@ -142,3 +142,34 @@ fn dormand_prince_stays_within_its_budget_on_the_relaxation() {
         }
     }
 }
+
+#[test]
+fn the_convergence_study_fails_a_dormand_prince_that_ignores_the_tolerance() {
+    // `reference-convergence-study` on the quick evidence, then on the same evidence
+    // with every Dormand-Prince run replaced by the run at 1e-10 (an integrator whose
+    // error does not shrink with the tolerance: D = 0, err(1e-12) = err(1e-10), which
+    // on the default scene is 7.2e-8 against the rounding floor G = 1.6e-9), and with
+    // the runs' rounding budgets kept: it must fail. So must a DP5 whose runs converge
+    // to a point 1e-6 of the drift off the reference.
+    use super::claims::all;
+    use super::statements::Statements;
+    use crate::report::Verdict;
+    let verdict = |ev: &super::evidence::Evidence| {
+        all(&Statements::PRINTED, ev)
+            .into_iter()
+            .find(|c| c.id == "reference-convergence-study")
+            .expect("the claim")
+            .verdict
+    };
+    let ev = quick_evidence::<Document>();
+    assert_eq!(verdict(ev), Verdict::Confirmed);
+    let mut stuck = ev.clone();
+    let d10 = stuck.block.dopri5[0].1;
+    stuck.block.dopri5.iter_mut().for_each(|(_, d)| *d = d10);
+    stuck.block.next_decade_rel = 0.0;
+    assert_eq!(verdict(&stuck), Verdict::Failed);
+    let mut off = ev.clone();
+    let shift = 1e-6 * off.block.reference.value;
+    off.block.dopri5.iter_mut().for_each(|(_, d)| *d += shift);
+    assert_eq!(verdict(&off), Verdict::Failed);
+}
