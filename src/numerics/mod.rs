@@ -7,8 +7,11 @@
 //! - [`hybrid`]: the event-driven hybrid-automaton driver: modes, flows (integrated or
 //!   in closed form), guards, resets, scheduled breakpoints and a Zeno guard.
 //! - [`rounding`]: the unit roundoff and γ_k of the chapters' rounding bounds.
+//! - `double_double` (tests only): about 32 digits, to check those bounds.
 //! - [`trig`]: sine and cosine together by a table and angle addition (inner loops).
 
+#[cfg(test)]
+pub(crate) mod double_double;
 pub mod events;
 pub mod fit;
 pub mod hybrid;

@@ -8,6 +8,7 @@ use super::evidence::{golden_max, ratios_at, rod_lock_angles_closed_form, rod_ra
 use super::statements::PRINTED;
 use super::{claims, run, Args, Document, MASS_KG};
 use crate::chapters::{default_args, Context};
+use crate::numerics::double_double::Dd;
 use crate::report::{fmt_num, Falsifiable, Verdict};
 use serde_json::Value;
 
@@ -135,55 +136,6 @@ fn the_bounds_rest_on_the_computations_as_they_ran() {
     }
 }
 
-/// Double-double arithmetic (about 32 digits), for reference values at the double θ.
-#[derive(Debug, Clone, Copy)]
-struct Dd(f64, f64);
-
-impl Dd {
-    fn new(x: f64) -> Dd {
-        Dd(x, 0.0)
-    }
-    fn add(self, y: Dd) -> Dd {
-        let s = self.0 + y.0;
-        let bb = s - self.0;
-        let e = (self.0 - (s - bb)) + (y.0 - bb) + self.1 + y.1; // formula: TwoSum
-        let t = s + e;
-        Dd(t, e - (t - s))
-    }
-    fn neg(self) -> Dd {
-        Dd(-self.0, -self.1)
-    }
-    fn mul(self, y: Dd) -> Dd {
-        let p = self.0 * y.0;
-        let e = self.0.mul_add(y.0, -p) + (self.0 * y.1 + self.1 * y.0); // formula: TwoProduct
-        let t = p + e;
-        Dd(t, e - (t - p))
-    }
-    fn div(self, y: Dd) -> Dd {
-        let q1 = self.0 / y.0;
-        let r = self.add(y.mul(Dd::new(q1)).neg());
-        let q2 = r.0 / y.0;
-        let r = r.add(y.mul(Dd::new(q2)).neg());
-        Dd::new(q1).add(Dd::new(q2)).add(Dd::new(r.0 / y.0))
-    }
-    fn f(self) -> f64 {
-        self.0 + self.1
-    }
-    /// sin and cos of a double |x| <= π/2 by their Taylor series (40 terms).
-    fn sin_cos(x: f64) -> (Dd, Dd) {
-        let (mut s, mut c, mut term) = (Dd::new(0.0), Dd::new(0.0), Dd::new(1.0));
-        for n in 0..40 {
-            match n % 4 {
-                0 => c = c.add(term),
-                1 => s = s.add(term),
-                2 => c = c.add(term.neg()),
-                _ => s = s.add(term.neg()),
-            }
-            term = term.mul(Dd::new(x)).div(Dd::new((n + 1) as f64));
-        }
-        (s, c)
-    }
-}
 
 /// |computed - exact| against the bound of each computed quantity and of each law's
 /// evaluation, at θ (rad): (name, actual error, bound) rows.

@@ -6,70 +6,18 @@
 use super::evidence::{self, painleve_boundary, painleve_min, rig, BOUNDARY_THETAS, RODS};
 use super::rounding::{self, gamma};
 use super::statements::PRINTED;
+use crate::numerics::double_double::Dd;
 use crate::report::Verdict;
 
-/// Double-double arithmetic (about 32 digits), for reference values.
-#[derive(Debug, Clone, Copy)]
-struct Dd(f64, f64);
-
-impl Dd {
-    fn new(x: f64) -> Dd {
-        Dd(x, 0.0)
+/// atan(1/2) by its Taylor series (60 terms: 0.25^60 is 1e-36).
+fn atan_half() -> Dd {
+    let (mut sum, mut pow) = (Dd::new(0.0), Dd::new(0.5));
+    for k in 0..60 {
+        let t = pow.div(Dd::new((2 * k + 1) as f64));
+        sum = if k % 2 == 0 { sum.add(t) } else { sum.sub(t) };
+        pow = pow.mul(Dd::new(0.25));
     }
-    fn add(self, y: Dd) -> Dd {
-        let s = self.0 + y.0;
-        let bb = s - self.0;
-        let e = (self.0 - (s - bb)) + (y.0 - bb) + self.1 + y.1; // formula: TwoSum
-        let t = s + e;
-        Dd(t, e - (t - s))
-    }
-    fn neg(self) -> Dd {
-        Dd(-self.0, -self.1)
-    }
-    fn sub(self, y: Dd) -> Dd {
-        self.add(y.neg())
-    }
-    fn mul(self, y: Dd) -> Dd {
-        let p = self.0 * y.0;
-        let e = self.0.mul_add(y.0, -p) + (self.0 * y.1 + self.1 * y.0); // formula: TwoProduct
-        let t = p + e;
-        Dd(t, e - (t - p))
-    }
-    fn div(self, y: Dd) -> Dd {
-        let q1 = self.0 / y.0;
-        let r = self.sub(y.mul(Dd::new(q1)));
-        let q2 = r.0 / y.0;
-        let r = r.sub(y.mul(Dd::new(q2)));
-        Dd::new(q1).add(Dd::new(q2)).add(Dd::new(r.0 / y.0))
-    }
-    /// |self - x| as a double.
-    fn dist(self, x: f64) -> f64 {
-        (self.0 - x + self.1).abs()
-    }
-    /// sin and cos of a double |x| <= π/2 by their Taylor series (40 terms).
-    fn sin_cos(x: f64) -> (Dd, Dd) {
-        let (mut s, mut c, mut term) = (Dd::new(0.0), Dd::new(0.0), Dd::new(1.0));
-        for n in 0..40 {
-            match n % 4 {
-                0 => c = c.add(term),
-                1 => s = s.add(term),
-                2 => c = c.sub(term),
-                _ => s = s.sub(term),
-            }
-            term = term.mul(Dd::new(x)).div(Dd::new((n + 1) as f64));
-        }
-        (s, c)
-    }
-    /// atan(1/2) by its Taylor series (60 terms: 0.25^60 is 1e-36).
-    fn atan_half() -> Dd {
-        let (mut sum, mut pow) = (Dd::new(0.0), Dd::new(0.5));
-        for k in 0..60 {
-            let t = pow.div(Dd::new((2 * k + 1) as f64));
-            sum = if k % 2 == 0 { sum.add(t) } else { sum.sub(t) };
-            pow = pow.mul(Dd::new(0.25));
-        }
-        sum
-    }
+    sum
 }
 
 /// The exact `D = 0` of the stored rod `(m_r, m)` at the double `theta`:
@@ -103,7 +51,7 @@ fn boundary_bounds_cover_the_exact_switch() {
 fn least_boundary_bounds_cover_four_thirds_at_atan_one_half() {
     let lb = painleve_min(0.1, 0.0);
     let c = &lb.centre;
-    let (value, angle) = ((c.mu - 4.0 / 3.0).abs(), Dd::atan_half().dist(c.theta_rad));
+    let (value, angle) = ((c.mu - 4.0 / 3.0).abs(), atan_half().dist(c.theta_rad));
     let (tv, ta) = (rounding::min_tol(&lb), rounding::min_angle_tol(&lb));
     eprintln!("least boundary: error {value:.2e} (bound {tv:.2e}), angle {angle:.2e} rad (bound {ta:.2e})");
     assert!(value <= tv && angle <= ta, "{lb:?}");
