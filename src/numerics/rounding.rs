@@ -18,6 +18,10 @@ pub const OWN: f64 = 1.0 + 1e-12;
 /// magnifies by more than 1e4: 1e6 η.
 pub const UNDERFLOW: f64 = 5e-318; // formula: >= 1e6 η, η = 2^-1074 = 4.94e-324
 
+/// A libm sin, cos, tan or atan within 1 ulp: a relative error below 2u, counted as
+/// two roundings.
+pub const TRIG: u32 = 2;
+
 /// `γ_k = k u / (1 - k u)`.
 pub fn gamma(k: u32) -> f64 {
     let ku = k as f64 * U;

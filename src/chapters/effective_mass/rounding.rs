@@ -11,11 +11,8 @@
 //! the exact mathematics at the double θ the run holds and at the double constants
 //! (L = fl(0.15), m = 1 kg), with I_G = m L²/12 exact.
 
-pub use crate::numerics::rounding::{gamma, OWN, U, UNDERFLOW};
+pub use crate::numerics::rounding::{gamma, OWN, TRIG, U, UNDERFLOW};
 use nalgebra::{Matrix2, Matrix5, Vector5};
-
-/// A libm sin, cos or tan within 1 ulp: a relative error below 2u, two roundings.
-pub const TRIG: u32 = 2;
 
 // UNDERFLOW (numerics::rounding) is reached only at |θ| below ~1e-300 rad, the flag's
 // corner 1e-308 degrees; the 5x5 system's ||A^-1|| is below 1e3 there.

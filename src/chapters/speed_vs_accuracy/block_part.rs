@@ -3,7 +3,7 @@
 //! [`BlockEvidence`]; the claims on them are in `claims.rs`.
 
 use super::block_scene::BlockScene;
-use super::budget::{rounding_mps, Scales};
+use super::budget::{rounding_mps, Scales, EVENT_ULPS};
 use super::failures::{blows_up, stiff, zeno, StiffOutcome, ZenoOutcome};
 use super::measure::{drift_block_model, drift_mj, window, Measured};
 use super::setup::Setup;
@@ -95,7 +95,7 @@ pub(super) fn gather(s: &Setup<'_>) -> BlockEvidence {
     // of the relative velocity, |v_block - v_plate| <= 2 v_p with v_p = Gamma g / omega,
     // times dt. Summed over the events and divided by the window, it bounds how far two
     // runs agreeing to within the rounding can differ in drift.
-    let floor_abs = 256.0 * f64::EPSILON * t_b * 2.0 * args.gamma * g / omega
+    let floor_abs = EVENT_ULPS * f64::EPSILON * t_b * 2.0 * args.gamma * g / omega
         * reference.events.max(1) as f64
         / (t_b - t_a); // formula: F = 256 eps t_end 2 v_p N_events / T_window
     let rounding_floor_rel = floor_abs / reference.value.abs().max(f64::MIN_POSITIVE);

@@ -14,10 +14,7 @@
 //! common to the simulator and the closed form, except where a statement names a
 //! number such as α = 3, which is then a separate term).
 
-pub use crate::numerics::rounding::{gamma, OWN, U};
-
-/// A libm sin, cos, tan or atan within 1 ulp: a relative error below 2u, two roundings.
-pub const TRIG: u32 = 2;
+pub use crate::numerics::rounding::{gamma, OWN, TRIG, U};
 
 /// One bisected Painleve boundary as it ran (see `evidence::painleve_boundary`).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -96,11 +93,16 @@ pub fn min_excess(lb: &LeastBoundary) -> f64 {
     OWN * ((g_m - g0) * h_p / h_m).max((g_p - g0) * h_m / h_p)
 }
 
+/// `|α* - 3|` at most (1): `α^` is within γ_3 of the stored rod's `α*`.
+fn alpha_from_three(alpha: f64) -> f64 {
+    (alpha - 3.0).abs() + gamma(3) * alpha // formula: |α* - 3| <= |α^ - 3| + γ_3 α^
+}
+
 /// Uncertainty of the stored rod's `α*` against the statement's 3 (1): `|α^ - 3| + γ_3
 /// α^` (α^ is within γ_3 of α*); infinite when α^ is not within 1e-6 of 3 (the
 /// sensitivities below hold near 3 only).
 fn alpha_offset(alpha: f64) -> f64 {
-    let d = (alpha - 3.0).abs() + gamma(3) * alpha; // formula: |α* - 3| <= |α^ - 3| + γ_3 α^
+    let d = alpha_from_three(alpha);
     if d <= 1e-6 {
         d
     } else {
@@ -150,7 +152,7 @@ pub fn ratio_error(q: f64, theta_in: f64, theta_landing: f64) -> f64 {
 /// the law's α = 3 against the run's α^ (`|d ln r / d ln α| = (1 + q^2)/(1 + α + q^2)
 /// <= 1`).
 pub fn uniform_ratio_tol(q: f64, theta_in: f64, theta_landing: f64, alpha: f64) -> f64 {
-    let d_alpha = ((alpha - 3.0).abs() + gamma(3) * alpha) / 3.0; // formula: |α* - 3|/3
+    let d_alpha = alpha_from_three(alpha) / 3.0; // formula: |α* - 3|/3
     OWN * (ratio_error(q, theta_in, theta_landing) + d_alpha)
 }
 
